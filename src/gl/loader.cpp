@@ -1,0 +1,7 @@
+#include "gl/loader.h"
+
+namespace sl {
+
+bool loadGl(GlProcLoader loader) { return gladLoadGL(reinterpret_cast<GLADloadfunc>(loader)) != 0; }
+
+}  // namespace sl

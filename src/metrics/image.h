@@ -1,0 +1,33 @@
+// An 8-bit RGBA image in memory, row 0 at the top (as PNG stores it).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;  // width * height * 4, row 0 = top
+
+    Image() = default;
+    Image(int w, int h) : width(w), height(h), rgba(std::size_t(w) * h * 4, 0) {}
+    std::uint8_t* at(int i, int j) { return &rgba[(std::size_t(j) * width + i) * 4]; }
+    const std::uint8_t* at(int i, int j) const { return &rgba[(std::size_t(j) * width + i) * 4]; }
+    // Rec. 601 luma of pixel (i, j) in [0, 255].
+    float luma(int i, int j) const;
+};
+
+// Writes a PNG atomically: into a temporary file beside `path`, renamed over it only when
+// complete, so a failure never leaves a partial file. Returns an empty string or the error.
+std::string writePng(const std::string& path, const Image& image);
+
+// Reads a PNG as RGBA8. Returns an empty string or the error.
+std::string readPng(const std::string& path, Image& image);
+
+// Writes text atomically, as writePng does.
+std::string writeTextFile(const std::string& path, const std::string& text);
+
+}  // namespace sl
