@@ -1,5 +1,7 @@
 #include "gl/loader.h"
 
+#include "gl/gl.h"
+
 namespace sl {
 
 bool loadGl(GlProcLoader loader) { return gladLoadGL(reinterpret_cast<GLADloadfunc>(loader)) != 0; }

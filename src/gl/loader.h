@@ -1,7 +1,6 @@
 // Loads GL entry points through the platform's GetProcAddress (OSMesa, freeglut, EGL).
+// Deliberately free of GL headers, so platform files can include their own.
 #pragma once
-
-#include "gl/gl.h"
 
 namespace sl {
 

@@ -1,0 +1,8 @@
+#version 330 core
+// HUD text: pixel coordinates in, clip space out.
+in vec3 position;
+uniform mat4 projection;
+void main()
+{
+    gl_Position = projection * vec4(position.xy, 0.0, 1.0);
+}

@@ -1,0 +1,53 @@
+// `shadowlab render --stage ID --out FILE.png`: one headless frame.
+#include <chrono>
+#include <iostream>
+
+#include "app/commands.h"
+
+namespace sl {
+
+namespace {
+
+struct RenderArgs {
+    CommonOptions common;
+    std::string out;
+    bool explain = false;
+};
+
+int renderOnce(const RenderArgs& a) {
+    RenderRequest request = toRequest(a.common);
+    validateRequest(request);
+    if (a.out.empty()) throw UsageError("--out: a PNG file name is required");
+    auto context = createHeadlessContext(toBackend(a.common.backend), request.tree, request.width,
+                                         request.height);
+    installGlDebugOutput();
+    auto renderer = makeRenderer(request);
+    renderer->timePasses = true;
+    auto start = std::chrono::steady_clock::now();
+    renderer->render(context->framebuffer(), request.width, request.height);
+    glFinish();
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (glErrorCount() > 0)
+        throw std::runtime_error("the render raised " + std::to_string(glErrorCount()) +
+                                 " GL error(s); last: " + lastGlError());
+    std::string err = writePng(a.out, context->read());
+    if (!err.empty()) throw UsageError("--out: " + err);
+    std::cout << "rendered " << request.stage << " (" << treeName(request.tree) << ", "
+              << context->backendName() << ") -> " << a.out << "  " << ms << " ms\n";
+    for (const auto& note : renderer->stats.notes) std::cout << "  " << note << "\n";
+    if (a.explain) std::cout << renderer->explain();
+    return kOk;
+}
+
+}  // namespace
+
+Command addRenderCommand(CLI::App& app) {
+    auto args = std::make_shared<RenderArgs>();
+    auto* cmd = app.add_subcommand("render", "render one stage headless into a PNG");
+    addCommonOptions(cmd, args->common);
+    cmd->add_option("--out", args->out, "output PNG file");
+    cmd->add_flag("--explain", args->explain, "print the matrices and choices used");
+    return {cmd, [args] { return guarded([&] { return renderOnce(*args); }); }};
+}
+
+}  // namespace sl

@@ -1,0 +1,64 @@
+// `shadowlab stages [--json]`: every stage with its declared parameters.
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "app/commands.h"
+
+namespace sl {
+
+namespace {
+
+nlohmann::json paramJson(const ParamSpec& p) {
+    nlohmann::json j{{"name", p.name}, {"help", p.help}};
+    if (p.kind == ParamKind::Choice) {
+        j["type"] = "choice";
+        j["default"] = p.choices.front();
+        j["choices"] = p.choices;
+    } else {
+        j["type"] = p.kind == ParamKind::Integer ? "integer" : "number";
+        j["default"] = p.defaultValue;
+        j["min"] = p.min;
+        j["max"] = p.max;
+    }
+    return j;
+}
+
+int listStages(bool json) {
+    if (json) {
+        nlohmann::json out = nlohmann::json::array();
+        int key = 0;
+        for (const auto& s : stageRegistry()) {
+            nlohmann::json j{{"id", s.id},           {"key", key++},
+                             {"title", s.title},     {"lecture", s.lecture},
+                             {"expectation", s.expectation},
+                             {"trees", s.legacyOnly ? nlohmann::json{"legacy"} : nlohmann::json{"core", "legacy"}}};
+            j["parameters"] = nlohmann::json::array();
+            for (const auto& p : s.params) j["parameters"].push_back(paramJson(p));
+            j["views"] = nlohmann::json::array();
+            for (ViewMode v : s.views) j["views"].push_back(viewName(v));
+            out.push_back(j);
+        }
+        std::cout << out.dump(2) << "\n";
+        return kOk;
+    }
+    int key = 0;
+    for (const auto& s : stageRegistry()) {
+        std::cout << key++ << "  " << s.id << "  " << s.title << (s.legacyOnly ? "  [legacy only]" : "")
+                  << "\n     " << s.lecture << "\n     expected: " << s.expectation << "\n";
+        for (const auto& p : s.params)
+            std::cout << "     --set " << p.name << "=" << p.defaultText() << "   (" << p.rangeText()
+                      << ") " << p.help << "\n";
+    }
+    return kOk;
+}
+
+}  // namespace
+
+Command addStagesCommand(CLI::App& app) {
+    auto* cmd = app.add_subcommand("stages", "list stages with their parameters and defaults");
+    auto json = std::make_shared<bool>(false);
+    cmd->add_flag("--json", *json, "machine-readable output");
+    return {cmd, [json] { return listStages(*json); }};
+}
+
+}  // namespace sl

@@ -1,0 +1,28 @@
+// The command line's common options (GUIDE section 3), parsed from text with one-line errors.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "platform/headless.h"
+#include "render/request.h"
+
+namespace sl {
+
+struct CommonOptions {
+    std::string stage = "phong", glsl = "core", scene = "slides", shaders, size = "640x480";
+    std::string eye, at, fovy, light, view = "final", backend = "auto";
+    std::vector<std::string> sets;
+};
+
+// Adds the common options to a subcommand; `withStage` = false for commands that pick stages
+// themselves (check --all, bench).
+void addCommonOptions(CLI::App* app, CommonOptions& o, bool withStage = true);
+
+// Turns the text into a request; throws UsageError naming the option and what is allowed.
+RenderRequest toRequest(const CommonOptions& o);
+Backend toBackend(const std::string& text);
+
+// Exit codes of the command-line contract.
+enum ExitCode { kOk = 0, kCheckFailed = 1, kBadInput = 2, kGlFailure = 3 };
+
+}  // namespace sl

@@ -1,0 +1,40 @@
+// GL error reporting: a KHR_debug callback that names the pass in progress, a counter the
+// headless path turns into exit code 3, and framebuffer status by name.
+#pragma once
+
+#include <string>
+
+#include "gl/gl.h"
+
+namespace sl {
+
+// Installs the debug-output callback (when the context offers KHR_debug) and resets the count.
+void installGlDebugOutput();
+
+// The pass in progress, named in every error message. Scoped: restores the previous name.
+class PassScope {
+public:
+    explicit PassScope(const char* name);
+    ~PassScope();
+    PassScope(const PassScope&) = delete;
+    PassScope& operator=(const PassScope&) = delete;
+
+private:
+    const char* previous_;
+};
+const char* currentPass();
+
+// Errors seen since the last reset, from the callback and from glGetError polls.
+int glErrorCount();
+void resetGlErrorCount();
+std::string lastGlError();
+
+// Polls glGetError, reports each error with file, line and pass. Returns false on error.
+bool checkGlErrors(const char* file, int line);
+#define SL_CHECK_GL() ::sl::checkGlErrors(__FILE__, __LINE__)
+
+const char* framebufferStatusName(GLenum status);
+// Checks the bound draw framebuffer; on failure reports "<what>: <STATUS NAME>" and returns it.
+std::string checkFramebufferComplete(const char* what);
+
+}  // namespace sl

@@ -1,0 +1,61 @@
+// Shader programs loaded from files: shaders_<tree>/<stage>/<pass>.vert|.frag, with a student's
+// overlay folder whose files replace ours of the same relative name. `#include "x.glsl"` is
+// resolved here (paths relative to the tree root, overlay first) and driver messages are mapped
+// back to the file and line they came from. A reload that fails keeps the last good program.
+#pragma once
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "gl/program.h"
+
+namespace sl {
+
+enum class GlslTree { Core, Legacy };
+const char* treeName(GlslTree t);  // "core" | "legacy"
+
+// Compile, link or missing-file errors; what() is the full, file-and-line message.
+class ShaderError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Vertex attribute locations shared by every program and by the meshes.
+enum AttributeLocation : GLuint { kPositionAttribute = 0, kNormalAttribute = 1 };
+
+class ShaderLibrary {
+public:
+    // `treeRoot`: the folder of our shaders for this tree; `overlay`: a student's folder or "".
+    ShaderLibrary(GlslTree tree, std::string treeRoot, std::string overlay);
+
+    GlslTree tree() const { return tree_; }
+    const std::string& overlay() const { return overlay_; }
+
+    // The program for stage/pass, built on first use. Throws ShaderError when it cannot be
+    // built and no earlier good version exists.
+    Program& program(const std::string& stage, const std::string& pass);
+
+    // Rebuilds programs whose files changed on disk (all of them when `force`). A failed
+    // rebuild keeps the previous program; its message is returned (empty vector: all good).
+    std::vector<std::string> reload(bool force);
+
+    // Where a relative shader path is found: the overlay's file if it has one, else ours.
+    std::string resolve(const std::string& relative) const;
+
+private:
+    struct Entry {
+        Program program;
+        std::vector<std::string> files;  // every file read, for change detection
+        std::vector<long long> stamps;
+    };
+    Entry build(const std::string& stage, const std::string& pass) const;
+
+    GlslTree tree_;
+    std::string root_;
+    std::string overlay_;
+    std::map<std::string, Entry> programs_;
+};
+
+}  // namespace sl

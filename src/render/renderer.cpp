@@ -1,0 +1,53 @@
+#include "render/renderer.h"
+
+#include <stdexcept>
+
+namespace sl {
+
+Renderer::Renderer(Scene scene, ShaderLibrary shaders, int imageHeight)
+    : camera(scene.camera),
+      lightPosition(scene.light.position),
+      scene_(std::move(scene)),
+      shaders_(std::move(shaders)),
+      gpu_(scene_, camera, imageHeight) {
+    for (const auto& s : stageRegistry()) params_.emplace(s.id, ParamSet(s.params));
+    selectStage(stageRegistry().front().id);
+}
+
+void Renderer::selectStage(const std::string& id) {
+    const StageInfo* info = findStage(id);
+    if (!info) {
+        std::string ids;
+        for (const auto& s : stageIds()) ids += (ids.empty() ? "" : ", ") + s;
+        std::string hint = closestMatch(id, stageIds());
+        throw std::invalid_argument("unknown stage '" + id + "'" +
+                                    (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
+                                    "; stages: " + ids);
+    }
+    if (info == info_) return;
+    info_ = info;
+    stage_ = info->create();
+}
+
+std::size_t Renderer::stageIndex() const {
+    const auto& all = stageRegistry();
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (&all[i] == info_) return i;
+    return 0;
+}
+
+void Renderer::render(GLuint target, int width, int height) {
+    if (lightPosition != lastLight_) {  // a moved light makes every cached shadow map stale
+        lastLight_ = lightPosition;
+        ++sceneGeneration_;
+    }
+    stats.notes.clear();
+    FrameContext f{scene_, gpu_, shaders_, params(), camera, lightPosition, width, height, target,
+                   view, allLit, timePasses, sceneGeneration_, stats};
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, width, height);
+    glEnable(GL_DEPTH_TEST);
+    stage_->render(f);
+}
+
+}  // namespace sl

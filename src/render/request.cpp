@@ -1,0 +1,74 @@
+#include "render/request.h"
+
+#include <sys/stat.h>
+
+#include "scene/scene_json.h"
+
+namespace sl {
+
+std::string shaderTreeRoot(GlslTree tree) {
+    return dataDir() + (tree == GlslTree::Core ? "/shaders_core" : "/shaders_legacy");
+}
+
+void validateRequest(const RenderRequest& r) {
+    const StageInfo* info = findStage(r.stage);
+    if (!info) {
+        std::string ids;
+        for (const auto& s : stageIds()) ids += (ids.empty() ? "" : ", ") + s;
+        std::string hint = closestMatch(r.stage, stageIds());
+        throw UsageError("--stage: unknown stage '" + r.stage + "'" +
+                         (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; stages: " + ids);
+    }
+    if (info->legacyOnly && r.tree == GlslTree::Core)
+        throw UsageError("--glsl core: stage '" + r.stage +
+                         "' is the fixed-function method and needs the compatibility profile; "
+                         "use --glsl legacy");
+    bool viewOk = false;
+    std::string views;
+    for (ViewMode v : info->views) {
+        viewOk = viewOk || v == r.view;
+        views += (views.empty() ? "" : ", ") + std::string(viewName(v));
+    }
+    if (!viewOk)
+        throw UsageError("--view " + std::string(viewName(r.view)) + ": stage '" + r.stage +
+                         "' offers: " + views);
+    ParamSet probe(info->params);
+    for (const auto& [name, value] : r.sets) {
+        std::string err = probe.set(name, value);
+        if (!err.empty()) throw UsageError("--set " + name + "=" + value + ": " + err);
+    }
+    if (!r.overlay.empty()) {
+        struct stat st;
+        if (::stat(r.overlay.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+            throw UsageError("--shaders: '" + r.overlay + "' is not a folder");
+    }
+}
+
+void applyRequest(Renderer& renderer, const RenderRequest& r) {
+    validateRequest(r);
+    renderer.selectStage(r.stage);
+    if (r.eye) renderer.camera.eye = *r.eye;
+    if (r.at) renderer.camera.at = *r.at;
+    if (r.fovy) renderer.camera.fovyDegrees = *r.fovy;
+    if (r.light) renderer.lightPosition = *r.light;
+    if (glm::length(renderer.camera.at - renderer.camera.eye) < 1e-6f)
+        throw UsageError("--eye/--at: the camera needs distinct eye and at points");
+    renderer.view = r.view;
+    for (const auto& [name, value] : r.sets) renderer.params().set(name, value);
+}
+
+std::unique_ptr<Renderer> makeRenderer(const RenderRequest& r) {
+    validateRequest(r);
+    Scene scene = loadScene(r.scene);
+    Camera camera = scene.camera;
+    if (r.eye) camera.eye = *r.eye;
+    if (r.at) camera.at = *r.at;
+    if (r.fovy) camera.fovyDegrees = *r.fovy;
+    scene.camera = camera;  // tessellation sees the camera actually used
+    auto renderer = std::make_unique<Renderer>(
+        std::move(scene), ShaderLibrary(r.tree, shaderTreeRoot(r.tree), r.overlay), r.height);
+    applyRequest(*renderer, r);
+    return renderer;
+}
+
+}  // namespace sl

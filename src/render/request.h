@@ -1,0 +1,43 @@
+// One render, as the command line, the tests and the grader describe it, and the code that
+// turns it into a configured Renderer. Bad values throw UsageError (exit code 2).
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+#include "render/renderer.h"
+
+namespace sl {
+
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct RenderRequest {
+    std::string stage = "phong";
+    GlslTree tree = GlslTree::Core;
+    std::string scene = "slides";
+    std::string overlay;  // student shader folder, "" for none
+    int width = 640, height = 480;
+    std::optional<glm::vec3> eye, at, light;
+    std::optional<float> fovy;
+    std::vector<std::pair<std::string, std::string>> sets;  // --set NAME=VALUE
+    ViewMode view = ViewMode::Final;
+};
+
+// The folder of our shaders for a tree.
+std::string shaderTreeRoot(GlslTree tree);
+
+// Checks the request against the stage (exists, tree allowed, view offered, parameters) before
+// any GL work; throws UsageError with a one-line message.
+void validateRequest(const RenderRequest& request);
+
+// Builds the renderer for a request (a GL context must be current). Throws UsageError,
+// SceneError or ShaderError.
+std::unique_ptr<Renderer> makeRenderer(const RenderRequest& request);
+// Applies stage, camera, light, view and parameters to an existing renderer.
+void applyRequest(Renderer& renderer, const RenderRequest& request);
+
+}  // namespace sl

@@ -1,0 +1,32 @@
+// Drawing the scene's objects with a program: the uniforms every pass shares, set once here.
+#pragma once
+
+#include <functional>
+
+#include "stages/stage.h"
+
+namespace sl {
+
+// Where the scene is seen from in a pass: the camera, or the light for the light's-view picture.
+struct Viewer {
+    glm::mat4 view{1}, projection{1};
+    glm::vec3 eye{0};
+};
+Viewer cameraViewer(const FrameContext& f);
+
+using PerObject = std::function<void(Program&, std::size_t index, const glm::mat4& model)>;
+
+// Lit pass: lighting uniforms (lightPosition, eyePosition, material, debugView), then every
+// object with model, normalMatrix and objectColor; `perObject` adds a stage's own uniforms.
+void drawSceneLit(Program& program, const FrameContext& f, const Viewer& viewer, int debugView,
+                  const PerObject& perObject = {});
+
+// Depth-only style pass (shadow map): `lightViewProjection` as `lightViewProjection`, each
+// object's `model`; only shadow casters when `castersOnly`.
+void drawSceneFromLight(Program& program, const FrameContext& f, const glm::mat4& lightViewProjection,
+                        bool castersOnly, const PerObject& perObject = {});
+
+// Clears the bound framebuffer to the scene's background.
+void clearToBackground(const FrameContext& f);
+
+}  // namespace sl

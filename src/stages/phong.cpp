@@ -1,0 +1,31 @@
+// Stage 0, the baseline: Phong lighting with no shadows at all.
+#include "render/scene_pass.h"
+
+namespace sl {
+
+namespace {
+
+class PhongStage : public Stage {
+public:
+    void render(FrameContext& f) override {
+        PassScope pass("lit");
+        clearToBackground(f);
+        int debugView = f.view == ViewMode::LightDepth ? 2 : f.view == ViewMode::Visibility ? 1 : 0;
+        drawSceneLit(f.shaders.program("phong", "lit"), f, cameraViewer(f), debugView);
+    }
+};
+
+}  // namespace
+
+StageInfo phongStage() {
+    StageInfo s;
+    s.id = "phong";
+    s.title = "Phong lighting, no shadows";
+    s.lecture = "the starting point: the floor is bright where shadows belong";
+    s.expectation = "no shadows at all: every lit-facing pixel in a true shadow renders lit";
+    s.views = {ViewMode::Final, ViewMode::Visibility, ViewMode::LightDepth};
+    s.create = [] { return std::make_unique<PhongStage>(); };
+    return s;
+}
+
+}  // namespace sl

@@ -1,0 +1,70 @@
+// What a stage is: an id, a title, the lecture step it teaches, its declared parameters, the
+// expected outcome of its defaults, and a render hook. Stages are listed in stage_list.h.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/debug.h"
+#include "gl/shader_library.h"
+#include "render/gpu_scene.h"
+#include "stages/params.h"
+
+namespace sl {
+
+enum class ViewMode { Final, ShadowMap, Light, Visibility, LightDepth };
+const char* viewName(ViewMode v);
+bool parseView(const std::string& text, ViewMode& out);
+std::vector<std::string> allViewNames();
+
+// Per-frame figures a stage reports: timings per pass (when timing is on) and what it did.
+struct RenderStats {
+    unsigned shadowMapRenders = 0;  // cumulative: the map is re-rendered only when inputs change
+    double shadowMs = 0, litMs = 0, mirrorMs = 0;
+    std::vector<std::string> notes;  // shown in the HUD and by `render --explain`
+};
+
+// Everything a stage may use to draw one frame. The stage draws into `target`.
+struct FrameContext {
+    const Scene& scene;
+    GpuScene& gpu;
+    ShaderLibrary& shaders;
+    const ParamSet& params;
+    Camera camera;
+    glm::vec3 lightPosition;
+    int width = 0, height = 0;
+    GLuint target = 0;
+    ViewMode view = ViewMode::Final;
+    bool allLit = false;      // the shadow map forced to "everything lit" (for `check`)
+    bool timePasses = false;  // glFinish around passes to time them
+    unsigned sceneGeneration = 0;  // bumps when the light or objects move
+    RenderStats& stats;
+};
+
+class Stage {
+public:
+    virtual ~Stage() = default;
+    virtual void render(FrameContext& frame) = 0;
+    // A readable account of the matrices and choices of the last frame (`render --explain`).
+    virtual std::string explain() const { return {}; }
+};
+
+struct StageInfo {
+    std::string id;
+    std::string title;
+    std::string lecture;      // which lecture step, in a few words
+    std::vector<ParamSpec> params;
+    std::string expectation;  // the expected outcome of the defaults, one line
+    bool legacyOnly = false;  // needs the compatibility profile (the fixed-function stage)
+    std::vector<ViewMode> views;
+    std::function<std::unique_ptr<Stage>()> create;
+};
+
+// Every stage, in lecture order (the order of stage_list.h).
+const std::vector<StageInfo>& stageRegistry();
+const StageInfo* findStage(const std::string& id);
+std::vector<std::string> stageIds();
+
+}  // namespace sl

@@ -1,0 +1,3 @@
+// The stages in lecture order. Adding a stage: a file src/stages/<id>.cpp defining
+// `StageInfo <id>Stage()`, its shaders in both trees, and one line here.
+SL_STAGE(phong)
