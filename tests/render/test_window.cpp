@@ -1,0 +1,51 @@
+// A real freeglut window under Xvfb renders the same picture as the headless path.
+#include <gtest/gtest.h>
+
+#include "render_fixture.h"
+
+using namespace sl;
+using namespace sl::test;
+
+namespace {
+
+void compareWindowWithHeadless(const std::string& stage, GlslTree tree) {
+    std::string dir = tempDir("window");
+    std::string png = dir + "/window.png";
+    std::string output;
+    int code = runShadowlab("window --stage " + stage + " --glsl " + treeName(tree) +
+                                " --size 320x240 --frames 3 --screenshot " + png,
+                            &output);
+    // The runner puts the command behind xvfb-run; see tests/CMakeLists.txt.
+    ASSERT_EQ(code, 0) << output;
+    Image window;
+    ASSERT_EQ(readPng(png, window), "");
+    RenderRequest r;
+    r.stage = stage;
+    r.tree = tree;
+    r.width = 320;
+    r.height = 240;
+    Image headless = renderHeadless(r).image;
+    ASSERT_EQ(window.width, headless.width);
+    ASSERT_EQ(window.height, headless.height);
+    // Tolerance: mean channel difference under 1 level and no more than 0.5% of the pixels off
+    // by more than 8 (GLX and OSMesa run the same llvmpipe; rasterisation may differ on edges).
+    long off = 0;
+    double sum = 0;
+    for (int j = 0; j < r.height; ++j)
+        for (int i = 0; i < r.width; ++i) {
+            int worst = 0;
+            for (int k = 0; k < 3; ++k) {
+                int d = std::abs(window.at(i, j)[k] - headless.at(i, j)[k]);
+                worst = std::max(worst, d);
+                sum += d;
+            }
+            off += worst > 8;
+        }
+    EXPECT_LT(sum / (3.0 * r.width * r.height), 1.0);
+    EXPECT_LT(off, r.width * r.height / 200);
+}
+
+}  // namespace
+
+TEST(Window, CoreWindowMatchesHeadless) { compareWindowWithHeadless("phong", GlslTree::Core); }
+TEST(Window, LegacyWindowMatchesHeadless) { compareWindowWithHeadless("phong", GlslTree::Legacy); }
