@@ -1,0 +1,279 @@
+#include "reference/raytracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+
+namespace sl {
+
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// Slab method: the ray is inside the box where it is inside all three pairs of parallel planes.
+// The hit is where it enters (or, when it starts inside, where it leaves); the normal is that of
+// the face crossed there, pointing out of the box.
+bool intersectBox(const Object& box, const Ray& ray, float tMin, float tMax, float& tHit,
+                  glm::vec3& normal) {
+    glm::vec3 low = box.center - 0.5f * box.size;
+    glm::vec3 high = box.center + 0.5f * box.size;
+    float tEnter = -kInfinity, tExit = kInfinity;
+    int enterAxis = -1, exitAxis = -1;
+    for (int axis = 0; axis < 3; ++axis) {
+        float o = ray.origin[axis], d = ray.direction[axis];
+        if (std::abs(d) < 1e-12f) {
+            // Parallel to this pair of planes: inside the slab for every t, or never.
+            if (o < low[axis] || o > high[axis]) return false;
+            continue;
+        }
+        float t0 = (low[axis] - o) / d;
+        float t1 = (high[axis] - o) / d;
+        if (t0 > t1) std::swap(t0, t1);
+        if (t0 > tEnter) {
+            tEnter = t0;
+            enterAxis = axis;
+        }
+        if (t1 < tExit) {
+            tExit = t1;
+            exitAxis = axis;
+        }
+    }
+    if (tEnter > tExit || exitAxis < 0) return false;
+    normal = glm::vec3(0.0f);
+    if (enterAxis >= 0 && tEnter > tMin && tEnter < tMax) {
+        tHit = tEnter;
+        // The face we enter through faces against the ray.
+        normal[enterAxis] = ray.direction[enterAxis] < 0.0f ? 1.0f : -1.0f;
+        return true;
+    }
+    if (tEnter <= tMin && tExit > tMin && tExit < tMax) {
+        tHit = tExit;
+        normal[exitAxis] = ray.direction[exitAxis] > 0.0f ? 1.0f : -1.0f;
+        return true;
+    }
+    return false;
+}
+
+// |origin + t d - center|^2 = r^2 with a unit d: t^2 + 2 b t + c = 0.
+bool intersectSphere(const Object& sphere, const Ray& ray, float tMin, float tMax, float& tHit,
+                     glm::vec3& normal) {
+    glm::vec3 oc = ray.origin - sphere.center;
+    float b = glm::dot(oc, ray.direction);
+    float c = glm::dot(oc, oc) - sphere.radius * sphere.radius;
+    float discriminant = b * b - c;
+    if (discriminant < 0.0f) return false;
+    float root = std::sqrt(discriminant);
+    float t = -b - root;  // the near root first
+    if (!(t > tMin && t < tMax)) {
+        t = -b + root;  // the ray starts inside: it leaves through the far side
+        if (!(t > tMin && t < tMax)) return false;
+    }
+    tHit = t;
+    normal = glm::normalize(ray.origin + t * ray.direction - sphere.center);
+    return true;
+}
+
+// A rectangle in the plane through `center` with normal `n`, spanning width along
+// right = cross(up, n) and height along up (as mirrorCorners builds it). `front` tells whether
+// the ray arrives on the side `n` points to.
+bool intersectRectangle(const glm::vec3& center, const glm::vec3& n, const glm::vec3& up,
+                        float width, float height, const Ray& ray, float tMin, float tMax,
+                        float& tHit, bool& front) {
+    float denominator = glm::dot(ray.direction, n);
+    if (std::abs(denominator) < 1e-12f) return false;  // parallel to the plane
+    float t = glm::dot(center - ray.origin, n) / denominator;
+    if (!(t > tMin && t < tMax)) return false;
+    glm::vec3 right = glm::normalize(glm::cross(up, n));
+    glm::vec3 upInPlane = glm::cross(n, right);  // = normalized up when up is perpendicular to n
+    glm::vec3 local = ray.origin + t * ray.direction - center;
+    if (std::abs(glm::dot(local, right)) > 0.5f * width) return false;
+    if (std::abs(glm::dot(local, upInPlane)) > 0.5f * height) return false;
+    tHit = t;
+    front = denominator < 0.0f;
+    return true;
+}
+
+bool intersectObject(const Object& object, const Ray& ray, float tMin, float tMax, float& tHit,
+                     glm::vec3& normal) {
+    switch (object.kind) {
+        case PrimitiveKind::Box:
+            return intersectBox(object, ray, tMin, tMax, tHit, normal);
+        case PrimitiveKind::Sphere:
+            return intersectSphere(object, ray, tMin, tMax, tHit, normal);
+        case PrimitiveKind::Quad: {
+            glm::vec3 n = glm::normalize(object.normal);
+            bool front = false;
+            if (!intersectRectangle(object.center, n, object.up, object.width, object.height, ray,
+                                    tMin, tMax, tHit, front))
+                return false;
+            normal = n;  // as declared, from either side: lighting treats quads as one-sided
+            return true;
+        }
+    }
+    return false;
+}
+
+ReferencePixel tracePixel(const Scene& scene, const Ray& ray, const glm::vec3& light) {
+    ReferencePixel pixel;
+    RayHit hit;
+    if (!intersectScene(scene, ray, kInfinity, true, hit)) return pixel;
+
+    pixel.position = ray.origin + hit.t * ray.direction;
+    pixel.normal = hit.normal;
+    pixel.objectId = hit.mirror ? mirrorId(scene) : objectId(std::size_t(hit.objectIndex));
+    pixel.facesLight = glm::dot(pixel.normal, light - pixel.position) > 0.0f;
+    pixel.blocked = shadowRayBlocked(scene, pixel.position, pixel.normal, light);
+    if (!hit.mirror || !hit.mirrorFront) return pixel;
+
+    // One bounce off the mirror. The mirror is left out: a plane cannot see itself.
+    Ray bounce{pixel.position, glm::reflect(ray.direction, pixel.normal)};
+    RayHit seen;
+    if (!intersectScene(scene, bounce, kInfinity, false, seen)) {
+        pixel.bounceObjectId = 0;
+        return pixel;
+    }
+    pixel.bounceObjectId = objectId(std::size_t(seen.objectIndex));
+    pixel.bouncePosition = bounce.origin + seen.t * bounce.direction;
+    pixel.bounceNormal = seen.normal;
+    pixel.bounceFacesLight = glm::dot(seen.normal, light - pixel.bouncePosition) > 0.0f;
+    pixel.bounceBlocked = shadowRayBlocked(scene, pixel.bouncePosition, seen.normal, light);
+    return pixel;
+}
+
+// Phong with white light: ambient always; diffuse and specular only for a lit, facing point.
+glm::vec3 phong(const Material& m, const glm::vec3& color, const glm::vec3& position,
+                const glm::vec3& normal, bool lit, const glm::vec3& eye, const glm::vec3& light) {
+    glm::vec3 result = m.ambient * color;
+    if (!lit) return result;
+    glm::vec3 L = glm::normalize(light - position);
+    glm::vec3 V = glm::normalize(eye - position);
+    glm::vec3 R = glm::reflect(-L, normal);
+    result += m.diffuse * std::max(glm::dot(normal, L), 0.0f) * color;
+    result += glm::vec3(m.specular * std::pow(std::max(glm::dot(R, V), 0.0f), m.shininess));
+    return result;
+}
+
+void storeColor(Image& image, int i, int j, const glm::vec3& c) {
+    std::uint8_t* p = image.at(i, j);
+    for (int k = 0; k < 3; ++k)
+        p[k] = static_cast<std::uint8_t>(std::clamp(c[k], 0.0f, 1.0f) * 255.0f + 0.5f);
+    p[3] = 255;
+}
+
+const glm::vec3& objectColor(const Scene& scene, int id) {
+    if (id < 1 || id > int(scene.objects.size()))
+        throw std::invalid_argument("shadeReference: the reference does not match the scene");
+    return scene.objects[std::size_t(id) - 1].color;
+}
+
+// The mirror has no colour of its own; its back is drawn as a dull grey surface.
+const glm::vec3 kMirrorBackColor(0.3f);
+// A real mirror reflects a little less than all light.
+constexpr float kMirrorReflectance = 0.9f;
+
+}  // namespace
+
+bool intersectScene(const Scene& scene, const Ray& ray, float tMax, bool includeMirror,
+                    RayHit& hit) {
+    bool found = false;
+    float nearest = tMax;
+    for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+        float t;
+        glm::vec3 n;
+        if (intersectObject(scene.objects[k], ray, kRayEpsilon, nearest, t, n)) {
+            found = true;
+            nearest = t;
+            hit = RayHit{t, int(k), false, false, n};
+        }
+    }
+    if (includeMirror && scene.mirror) {
+        const Mirror& m = *scene.mirror;
+        glm::vec3 n = glm::normalize(m.normal);
+        float t;
+        bool front = false;
+        if (intersectRectangle(m.center, n, m.up, m.width, m.height, ray, kRayEpsilon, nearest, t,
+                               front)) {
+            found = true;
+            // From behind, the mirror is an opaque back whose outward normal is -normal.
+            hit = RayHit{t, -1, true, front, front ? n : -n};
+        }
+    }
+    return found;
+}
+
+bool shadowRayBlocked(const Scene& scene, const glm::vec3& position, const glm::vec3& normal,
+                      const glm::vec3& lightPosition) {
+    glm::vec3 origin = position + normal * kShadowOffset;
+    glm::vec3 toLight = lightPosition - origin;
+    float distance = glm::length(toLight);
+    if (distance <= kRayEpsilon) return false;
+    Ray ray{origin, toLight / distance};
+    for (const Object& object : scene.objects) {
+        if (!object.castsShadow) continue;
+        float t;
+        glm::vec3 n;
+        if (intersectObject(object, ray, kRayEpsilon, distance, t, n)) return true;
+    }
+    return false;
+}
+
+ReferenceImage traceReference(const Scene& scene, const Camera& camera,
+                              const glm::vec3& lightPosition, int width, int height, int threads) {
+    if (width <= 0 || height <= 0) throw std::invalid_argument("traceReference: empty image");
+    ReferenceImage image;
+    image.width = width;
+    image.height = height;
+    image.mirrorObjectId = mirrorId(scene);
+    image.pixels.resize(std::size_t(width) * height);
+
+    if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    threads = std::min(threads, height);
+
+    // Every pixel is computed on its own, so which thread does a row cannot change the result.
+    // Rows are dealt out round-robin so each thread gets a share of the busy and the empty rows.
+    auto traceRows = [&](int first) {
+        for (int j = first; j < height; j += threads)
+            for (int i = 0; i < width; ++i)
+                image.pixels[std::size_t(j) * width + i] =
+                    tracePixel(scene, pixelRay(camera, i, j, width, height), lightPosition);
+    };
+    std::vector<std::thread> workers;
+    for (int k = 1; k < threads; ++k) workers.emplace_back(traceRows, k);
+    traceRows(0);
+    for (std::thread& w : workers) w.join();
+    return image;
+}
+
+Image shadeReference(const Scene& scene, const Camera& camera, const ReferenceImage& reference,
+                     const glm::vec3& lightPosition) {
+    if (reference.pixels.size() != std::size_t(reference.width) * reference.height)
+        throw std::invalid_argument("shadeReference: pixel count does not match the size");
+    Image image(reference.width, reference.height);
+    const int mirror = mirrorId(scene);
+    for (int j = 0; j < reference.height; ++j)
+        for (int i = 0; i < reference.width; ++i) {
+            const ReferencePixel& p = reference.at(i, j);
+            glm::vec3 color = scene.background;
+            if (p.objectId == mirror && p.bounceObjectId >= 0) {
+                // The reflected ray starts at the mirror point, so that is the "eye" of the bounce.
+                glm::vec3 seen = scene.background;
+                if (p.bounceObjectId > 0)
+                    seen = phong(scene.material, objectColor(scene, p.bounceObjectId),
+                                 p.bouncePosition, p.bounceNormal,
+                                 p.bounceFacesLight && !p.bounceBlocked, p.position, lightPosition);
+                color = kMirrorReflectance * seen;
+            } else if (p.objectId == mirror) {
+                color = phong(scene.material, kMirrorBackColor, p.position, p.normal,
+                              p.facesLight && !p.blocked, camera.eye, lightPosition);
+            } else if (p.objectId > 0) {
+                color = phong(scene.material, objectColor(scene, p.objectId), p.position, p.normal,
+                              p.facesLight && !p.blocked, camera.eye, lightPosition);
+            }
+            storeColor(image, i, j, color);
+        }
+    return image;
+}
+
+}  // namespace sl

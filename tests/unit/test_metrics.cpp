@@ -1,0 +1,288 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "metrics/mirror_metrics.h"
+#include "metrics/pareto.h"
+#include "metrics/shadow_metrics.h"
+
+using namespace sl;
+
+namespace {
+
+// A reference where every pixel is on object 1 and faces the light; tests then carve it up.
+ReferenceImage evaluatedEverywhere(int w, int h) {
+    ReferenceImage ref;
+    ref.width = w;
+    ref.height = h;
+    ref.pixels.resize(std::size_t(w) * h);
+    for (ReferencePixel& p : ref.pixels) {
+        p.objectId = 1;
+        p.facesLight = true;
+    }
+    return ref;
+}
+
+ReferencePixel& pixel(ReferenceImage& ref, int i, int j) {
+    return ref.pixels[std::size_t(j) * ref.width + i];
+}
+
+// Marks the rectangle [i0, i1) x [j0, j1): truth (blocked) in the reference, or a rendered mask.
+void blockRect(ReferenceImage& ref, int i0, int j0, int i1, int j1) {
+    for (int j = j0; j < j1; ++j)
+        for (int i = i0; i < i1; ++i) pixel(ref, i, j).blocked = true;
+}
+std::vector<std::uint8_t> maskRect(int w, int h, int i0, int j0, int i1, int j1) {
+    std::vector<std::uint8_t> mask(std::size_t(w) * h, 0);
+    for (int j = j0; j < j1; ++j)
+        for (int i = i0; i < i1; ++i) mask[std::size_t(j) * w + i] = 1;
+    return mask;
+}
+
+void setGrey(Image& image, int i, int j, int level) {
+    std::uint8_t* p = image.at(i, j);
+    p[0] = p[1] = p[2] = std::uint8_t(level);
+    p[3] = 255;
+}
+
+void expectColor(const Image& image, int i, int j, int r, int g, int b) {
+    const std::uint8_t* p = image.at(i, j);
+    EXPECT_EQ(p[0], r) << "at " << i << "," << j;
+    EXPECT_EQ(p[1], g) << "at " << i << "," << j;
+    EXPECT_EQ(p[2], b) << "at " << i << "," << j;
+    EXPECT_EQ(p[3], 255);
+}
+
+}  // namespace
+
+TEST(Metrics, SquareShadowShiftedTwoPixelsRight) {
+    // Truth: the 10 x 10 square [10, 20)^2. Rendered: the same square two columns to the right.
+    ReferenceImage ref = evaluatedEverywhere(40, 40);
+    blockRect(ref, 10, 10, 20, 20);
+    ShadowFigures f = shadowFigures(ref, maskRect(40, 40, 12, 10, 22, 20));
+    EXPECT_EQ(f.evaluated, 1600);
+    EXPECT_EQ(f.truthShadow, 100);
+    EXPECT_EQ(f.truthLit, 1500);
+    // Band: the square's 36 perimeter pixels and the 44 pixels of the ring around it.
+    // False shadow: columns 20, 21 (rows 10..19). Column 20 lies in the outer ring.
+    EXPECT_NEAR(f.falseShadowPct, 100.0 * 10 / (1500 - 44), 1e-9);
+    EXPECT_NEAR(f.falseShadowBandPct, 100.0 * 10 / 44, 1e-9);
+    // False lit: columns 10, 11. All of column 10 and rows 10, 19 of column 11 are perimeter;
+    // 8 pixels of column 11 are among the 64 interior ones.
+    EXPECT_NEAR(f.falseLitPct, 100.0 * 8 / 64, 1e-9);
+    EXPECT_NEAR(f.falseLitBandPct, 100.0 * 12 / 36, 1e-9);
+    // Boundaries: the shadow-side perimeters, 36 each. Distances from the rendered one:
+    // top and bottom rows 0 x 8, 1, 2; left column (x = 12, rows 11..18) 1, 2, 2, 2, 2, 2, 2, 1
+    // (the true top and bottom rows pass through x = 12); right column (x = 21) 2 x 8.
+    // Sum 3 + 3 + 14 + 16 = 36 over 36 pixels: mean 1. Sorted, the 35th of 36 is 2.
+    EXPECT_EQ(f.trueBoundary, 36);
+    EXPECT_EQ(f.renderedBoundary, 36);
+    EXPECT_TRUE(f.edgeDefined);
+    EXPECT_NEAR(f.edgeMeanPx, 1.0, 1e-9);
+    EXPECT_NEAR(f.edgeP95Px, 2.0, 1e-9);
+}
+
+TEST(Metrics, StraightEdgeShiftedTwoPixelsIsTwoPixelsOff) {
+    // Truth: everything left of x = 10 in shadow; rendered: left of x = 12.
+    ReferenceImage ref = evaluatedEverywhere(30, 20);
+    blockRect(ref, 0, 0, 10, 20);
+    ShadowFigures f = shadowFigures(ref, maskRect(30, 20, 0, 0, 12, 20));
+    EXPECT_EQ(f.trueBoundary, 20);      // column 9
+    EXPECT_EQ(f.renderedBoundary, 20);  // column 11
+    EXPECT_NEAR(f.edgeMeanPx, 2.0, 1e-9);
+    EXPECT_NEAR(f.edgeP95Px, 2.0, 1e-9);
+    // Column 10 is in the band (lit side), column 11 is not: 20 of 20 * 20 - 20 lit outside.
+    EXPECT_NEAR(f.falseShadowPct, 100.0 * 20 / 380, 1e-9);
+    EXPECT_NEAR(f.falseShadowBandPct, 100.0, 1e-9);
+    EXPECT_EQ(f.falseLitPct, 0.0);
+    EXPECT_EQ(f.falseLitBandPct, 0.0);
+}
+
+TEST(Metrics, PerfectRenderHasNoErrors) {
+    ReferenceImage ref = evaluatedEverywhere(30, 20);
+    blockRect(ref, 5, 5, 15, 12);
+    ShadowFigures f = shadowFigures(ref, maskRect(30, 20, 5, 5, 15, 12));
+    EXPECT_EQ(f.falseShadowPct, 0.0);
+    EXPECT_EQ(f.falseLitPct, 0.0);
+    EXPECT_EQ(f.falseShadowBandPct, 0.0);
+    EXPECT_EQ(f.falseLitBandPct, 0.0);
+    EXPECT_EQ(f.edgeMeanPx, 0.0);
+    EXPECT_EQ(f.edgeP95Px, 0.0);
+    EXPECT_EQ(f.trueBoundary, f.renderedBoundary);
+}
+
+TEST(Metrics, EdgeDistanceIsUndefinedWithoutBoundaries) {
+    ReferenceImage ref = evaluatedEverywhere(10, 10);  // no shadow at all
+    ShadowFigures f = shadowFigures(ref, maskRect(10, 10, 2, 2, 5, 5));
+    EXPECT_FALSE(f.edgeDefined);
+    EXPECT_EQ(f.edgeMeanPx, -1.0);
+    EXPECT_EQ(f.edgeP95Px, -1.0);
+    EXPECT_EQ(f.trueBoundary, 0);
+    EXPECT_EQ(f.renderedBoundary, 9 - 1);  // the 3 x 3 square's perimeter
+    EXPECT_EQ(f.falseLitPct, 0.0);         // no truth-shadowed pixels: 0, not NaN
+    EXPECT_NEAR(f.falseShadowPct, 100.0 * 9 / 100, 1e-9);
+}
+
+TEST(Metrics, BackgroundMirrorAndPixelsFacingAwayAreIgnored) {
+    // One row: background, shadowed, lit, mirror, facing away.
+    ReferenceImage ref = evaluatedEverywhere(5, 1);
+    ref.mirrorObjectId = 7;
+    pixel(ref, 0, 0).objectId = 0;
+    pixel(ref, 1, 0).blocked = true;
+    pixel(ref, 3, 0).objectId = 7;
+    pixel(ref, 3, 0).blocked = true;
+    pixel(ref, 4, 0).facesLight = false;
+    pixel(ref, 4, 0).blocked = true;
+    std::vector<std::uint8_t> allShadowed(5, 1);
+    ShadowFigures f = shadowFigures(ref, allShadowed);
+    EXPECT_EQ(f.evaluated, 2);
+    EXPECT_EQ(f.truthShadow, 1);
+    EXPECT_EQ(f.truthLit, 1);
+    EXPECT_EQ(f.falseShadowBandPct, 100.0);  // pixel 2 is next to the true edge
+    EXPECT_EQ(f.falseShadowPct, 0.0);
+    EXPECT_EQ(f.trueBoundary, 1);
+    // Every evaluated pixel is rendered shadowed: no rendered boundary, even next to the
+    // background and the mirror.
+    EXPECT_EQ(f.renderedBoundary, 0);
+    EXPECT_FALSE(f.edgeDefined);
+
+    Image render(5, 1);
+    Image diff = diffImage(ref, allShadowed, render);
+    expectColor(diff, 0, 0, 255, 255, 255);
+    expectColor(diff, 3, 0, 255, 255, 255);
+    expectColor(diff, 4, 0, 255, 255, 255);
+}
+
+TEST(Metrics, SizeMismatchesAreRejected) {
+    ReferenceImage ref = evaluatedEverywhere(4, 4);
+    EXPECT_THROW(shadowFigures(ref, std::vector<std::uint8_t>(15)), std::invalid_argument);
+    EXPECT_THROW(diffImage(ref, std::vector<std::uint8_t>(16), Image(4, 3)), std::invalid_argument);
+    EXPECT_THROW(classifyShadowed(Image(4, 4), Image(4, 3)), std::invalid_argument);
+}
+
+TEST(Metrics, DistanceTransformMatchesBruteForce) {
+    const int w = 23, h = 17;
+    std::vector<std::uint8_t> feature(w * h, 0);
+    unsigned state = 12345;  // a fixed pseudo-random pattern, about 1 pixel in 16
+    for (auto& f : feature) {
+        state = state * 1103515245u + 12345u;
+        f = (state >> 16) % 16 == 0;
+    }
+    std::vector<float> d = distanceToFeatures(feature, w, h);
+    int features = 0;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            double best = std::numeric_limits<double>::infinity();
+            for (int fj = 0; fj < h; ++fj)
+                for (int fi = 0; fi < w; ++fi)
+                    if (feature[fj * w + fi]) best = std::min(best, std::hypot(fi - i, fj - j));
+            features += feature[j * w + i];
+            ASSERT_NEAR(d[j * w + i], best, 1e-5) << "at " << i << "," << j;
+        }
+    EXPECT_GT(features, 5);
+
+    std::vector<float> none = distanceToFeatures(std::vector<std::uint8_t>(12, 0), 4, 3);
+    for (float v : none) EXPECT_TRUE(std::isinf(v));
+}
+
+TEST(Metrics, ClassificationNeedsBothDrops) {
+    Image lit(4, 1), shadows(4, 1);
+    // Grey levels, so luma equals the level.
+    setGrey(lit, 0, 0, 100), setGrey(shadows, 0, 0, 84);  // -16 %, -16 levels: shadowed
+    setGrey(lit, 1, 0, 100), setGrey(shadows, 1, 0, 86);  // -14 %: not enough
+    setGrey(lit, 2, 0, 30), setGrey(shadows, 2, 0, 20);   // -33 %, -10 levels: shadowed
+    setGrey(lit, 3, 0, 30), setGrey(shadows, 3, 0, 25);   // -17 % but only -5 levels: not
+    std::vector<std::uint8_t> s = classifyShadowed(shadows, lit);
+    EXPECT_EQ(s, (std::vector<std::uint8_t>{1, 0, 1, 0}));
+
+    ClassifyOptions loose;
+    loose.relativeDrop = 0.10f;
+    loose.absoluteDrop = 4.0f;
+    EXPECT_EQ(classifyShadowed(shadows, lit, loose), (std::vector<std::uint8_t>{1, 1, 1, 1}));
+    // Brighter than all-lit is never shadow.
+    EXPECT_EQ(classifyShadowed(lit, shadows, loose), (std::vector<std::uint8_t>{0, 0, 0, 0}));
+}
+
+TEST(Metrics, DiffImageColours) {
+    // Row: false shadow, false lit, agreeing lit (black render), agreeing shadow (white render).
+    ReferenceImage ref = evaluatedEverywhere(4, 1);
+    pixel(ref, 1, 0).blocked = true;
+    pixel(ref, 3, 0).blocked = true;
+    std::vector<std::uint8_t> shadowed{1, 0, 0, 1};
+    Image render(4, 1);
+    setGrey(render, 3, 0, 255);
+    Image diff = diffImage(ref, shadowed, render);
+    expectColor(diff, 0, 0, 220, 40, 40);
+    expectColor(diff, 1, 0, 40, 80, 230);
+    expectColor(diff, 2, 0, 60, 60, 60);
+    expectColor(diff, 3, 0, 200, 200, 200);
+}
+
+TEST(Metrics, PsnrInMask) {
+    Image a(3, 1), b(3, 1);
+    std::vector<std::uint8_t> mask{1, 1, 0};
+    EXPECT_EQ(psnrInMask(a, b, mask), kPsnrIdentical);
+    EXPECT_EQ(psnrInMask(a, b, mask), 99.0);
+    b.at(2, 0)[1] = 200;  // outside the mask
+    b.at(1, 0)[3] = 7;    // alpha does not count
+    EXPECT_EQ(psnrInMask(a, b, mask), 99.0);
+    // One red sample off by 10 among 2 pixels x 3 channels: MSE = 100 / 6,
+    // PSNR = 10 log10(255^2 * 6 / 100) = 35.9123 dB.
+    b.at(0, 0)[0] = 10;
+    EXPECT_NEAR(psnrInMask(a, b, mask), 35.9123, 1e-4);
+    EXPECT_EQ(psnrInMask(a, b, std::vector<std::uint8_t>(3, 0)), 0.0);
+    EXPECT_THROW(psnrInMask(a, Image(2, 1), mask), std::invalid_argument);
+}
+
+TEST(Metrics, MirrorIdAgreementAndMask) {
+    Scene scene;
+    scene.objects.resize(3);  // so the mirror's id is 4
+    ReferenceImage ref = evaluatedEverywhere(6, 1);
+    ref.mirrorObjectId = mirrorId(scene);
+    // Four front mirror pixels seeing 1, 1, background, 3; one mirror back; one plain object.
+    int bounces[4] = {1, 1, 0, 3};
+    for (int i = 0; i < 4; ++i) {
+        pixel(ref, i, 0).objectId = 4;
+        pixel(ref, i, 0).bounceObjectId = bounces[i];
+    }
+    pixel(ref, 4, 0).objectId = 4;  // back: bounceObjectId stays -1
+    std::vector<int> rendered{1, 2, 0, -1, 4, 1};
+    EXPECT_NEAR(mirrorIdAgreementPct(ref, rendered), 50.0, 1e-9);
+    EXPECT_EQ(mirrorMask(ref, scene), (std::vector<std::uint8_t>{1, 1, 1, 1, 0, 0}));
+
+    ReferenceImage noMirror = evaluatedEverywhere(6, 1);
+    EXPECT_EQ(mirrorIdAgreementPct(noMirror, rendered), 0.0);
+    EXPECT_THROW(mirrorIdAgreementPct(ref, std::vector<int>(5)), std::invalid_argument);
+}
+
+TEST(Metrics, ParetoFrontKeepsOnlyUndominatedPoints) {
+    std::vector<CostError> points{
+        {1.0, 10.0, "a"},  // cheapest but one: on the front
+        {2.0, 5.0, "b"},   //
+        {3.0, 7.0, "c"},   // b is cheaper and better
+        {4.0, 1.0, "d"},   //
+        {2.0, 5.0, "e"},   // the same as b: neither dominates the other
+        {0.5, 20.0, "f"},  // cheapest of all
+        {5.0, 1.0, "g"},   // d has the same error for less
+        {1.0, 12.0, "h"},  // a has the same cost and less error
+        {std::nan(""), 0.0, "broken"},
+    };
+    EXPECT_EQ(paretoFront(points), (std::vector<std::size_t>{5, 0, 1, 4, 3}));
+    EXPECT_TRUE(paretoFront({}).empty());
+    EXPECT_EQ(paretoFront({{3.0, 3.0, "only"}}), (std::vector<std::size_t>{0}));
+}
+
+TEST(Metrics, BreakPointScansInTheGivenOrder) {
+    std::vector<double> xs{256, 512, 1024, 2048};
+    EXPECT_EQ(breakPoint(xs, {0.5, 1.0, 2.5, 9.0}, 2.0), 1024.0);
+    EXPECT_EQ(breakPoint(xs, {0.5, 2.0, 2.5, 9.0}, 2.0), 1024.0);  // equal is not above
+    EXPECT_TRUE(std::isnan(breakPoint(xs, {0.1, 0.2, 0.3, 0.4}, 2.0)));
+    // Descending: map sizes from large to small, error growing as the map shrinks.
+    std::vector<double> down{2048, 1024, 512, 256};
+    EXPECT_EQ(breakPoint(down, {0.1, 0.4, 3.0, 8.0}, 1.0), 512.0);
+    // The first in the given order wins, even if a later one is also above.
+    EXPECT_EQ(breakPoint(down, {5.0, 0.4, 3.0, 8.0}, 1.0), 2048.0);
+    EXPECT_TRUE(std::isnan(breakPoint({}, {}, 1.0)));
+    EXPECT_THROW(breakPoint(xs, {1.0}, 1.0), std::invalid_argument);
+}
