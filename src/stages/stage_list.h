@@ -1,3 +1,8 @@
 // The stages in lecture order. Adding a stage: a file src/stages/<id>.cpp defining
 // `StageInfo <id>Stage()`, its shaders in both trees, and one line here.
 SL_STAGE(phong)
+SL_STAGE(rgb)
+SL_STAGE(depth)
+SL_STAGE(bias)
+SL_STAGE(margin)
+SL_STAGE(hardware)

@@ -1,0 +1,21 @@
+#version 330 core
+// The same comparison as the rgb stage, now against a depth texture's full precision.
+#include "common/phong.glsl"
+
+in vec3 worldPosition;
+in vec3 worldNormal;
+in vec4 lightSpace;
+
+uniform sampler2D shadowMap;  // a depth texture: .r is the stored depth
+uniform float margin;
+out vec4 fragColor;
+
+void main()
+{
+    vec3 ndc = lightSpace.xyz / lightSpace.w;
+    vec3 shadowCoord = ndc * 0.5 + 0.5;
+    float visibility = 1.0;
+    if (lightSpace.w > 0.0 && shadowCoord.z <= 1.0)
+        visibility = shadowCoord.z <= texture(shadowMap, shadowCoord.xy).r + margin ? 1.0 : 0.0;
+    fragColor = shade(worldPosition, worldNormal, visibility, shadowCoord.z);
+}

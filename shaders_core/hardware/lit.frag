@@ -1,0 +1,18 @@
+#version 330 core
+// Hardware compare: the texture has GL_TEXTURE_COMPARE_MODE = GL_COMPARE_REF_TO_TEXTURE, so
+// sampling returns the result of (u <= stored depth), not the depth. With GL_LINEAR the four
+// nearest compares are averaged: percentage-closer filtering, soft edges for free.
+#include "common/phong.glsl"
+
+in vec3 worldPosition;
+in vec3 worldNormal;
+in vec4 shadowCoord;
+
+uniform sampler2DShadow shadowMap;
+out vec4 fragColor;
+
+void main()
+{
+    float visibility = shadowCoord.w > 0.0 ? textureProj(shadowMap, shadowCoord) : 1.0;
+    fragColor = shade(worldPosition, worldNormal, visibility, shadowCoord.z / shadowCoord.w);
+}

@@ -1,0 +1,21 @@
+#version 120
+// With bias z = +0.5 (OpenGL's projection: near -> NDC -1) u runs 0 near .. 1 far, like the
+// stored gl_FragCoord.z. With the slides' -0.5, u runs the other way unless the light's
+// projection is flipped too (near -> NDC +1, glDepthRange(1, 0)).
+#include "common/phong.glsl"
+
+varying vec3 worldPosition;
+varying vec3 worldNormal;
+varying vec4 shadowCoord;
+
+uniform sampler2D shadowMap;
+uniform float margin;
+
+void main()
+{
+    vec3 stu = shadowCoord.xyz / shadowCoord.w;
+    float visibility = 1.0;
+    if (shadowCoord.w > 0.0)
+        visibility = stu.z <= texture2D(shadowMap, stu.xy).r + margin ? 1.0 : 0.0;
+    gl_FragColor = shade(worldPosition, worldNormal, visibility, stu.z);
+}

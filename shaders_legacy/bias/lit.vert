@@ -1,0 +1,24 @@
+#version 120
+// The scale/bias matrix is built on the CPU and multiplied in: one uniform per object,
+// shadowMatrix = bias * P_light * V_light * model.
+attribute vec3 position;
+attribute vec3 normal;
+
+uniform mat4 model;
+uniform mat3 normalMatrix;
+uniform mat4 view;
+uniform mat4 projection;
+uniform mat4 shadowMatrix;
+
+varying vec3 worldPosition;
+varying vec3 worldNormal;
+varying vec4 shadowCoord;  // s, t, u and w: divide by w for texture coordinates and depth
+
+void main()
+{
+    vec4 world = model * vec4(position, 1.0);
+    worldPosition = world.xyz;
+    worldNormal = normalMatrix * normal;
+    shadowCoord = shadowMatrix * vec4(position, 1.0);
+    gl_Position = projection * view * world;
+}

@@ -1,0 +1,17 @@
+#version 120
+// Hardware compare: the texture has GL_TEXTURE_COMPARE_MODE = GL_COMPARE_REF_TO_TEXTURE, so
+// sampling returns the result of (u <= stored depth), not the depth. With GL_LINEAR the four
+// nearest compares are averaged: percentage-closer filtering, soft edges for free.
+#include "common/phong.glsl"
+
+varying vec3 worldPosition;
+varying vec3 worldNormal;
+varying vec4 shadowCoord;
+
+uniform sampler2DShadow shadowMap;
+
+void main()
+{
+    float visibility = shadowCoord.w > 0.0 ? shadow2DProj(shadowMap, shadowCoord).r : 1.0;
+    gl_FragColor = shade(worldPosition, worldNormal, visibility, shadowCoord.z / shadowCoord.w);
+}

@@ -1,0 +1,173 @@
+#include "render/shadow_map.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "gl/state.h"
+#include "render/scene_pass.h"
+#include "scene/mesh.h"
+
+namespace sl {
+
+MapStorage parseStorage(const std::string& t) {
+    if (t == "rgb8") return MapStorage::Rgb8;
+    if (t == "depth16" || t == "16") return MapStorage::Depth16;
+    if (t == "depth24" || t == "24") return MapStorage::Depth24;
+    if (t == "depth32f" || t == "32f") return MapStorage::Depth32F;
+    throw std::invalid_argument("unknown map storage '" + t + "'");
+}
+
+bool ShadowMapSettings::operator==(const ShadowMapSettings& o) const {
+    return storage == o.storage && size == o.size && fit == o.fit && castersOnly == o.castersOnly &&
+           offsetFactor == o.offsetFactor && offsetUnits == o.offsetUnits && cullFront == o.cullFront &&
+           depthFlipped == o.depthFlipped && compare == o.compare && linear == o.linear;
+}
+
+std::size_t ShadowMap::bytes() const {
+    std::size_t texels = std::size_t(settings_.size) * settings_.size;
+    switch (settings_.storage) {
+        case MapStorage::Rgb8: return texels * (3 + 4);  // colour + depth renderbuffer
+        case MapStorage::Depth16: return texels * 2;
+        case MapStorage::Depth24: return texels * 4;
+        case MapStorage::Depth32F: return texels * 4;
+    }
+    return 0;
+}
+
+void ShadowMap::allocate(const ShadowMapSettings& s) {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (s.size < 16 || s.size > maxSize)
+        throw std::invalid_argument("map-size " + std::to_string(s.size) + " is outside 16 to " +
+                                    std::to_string(maxSize) + " (this driver's GL_MAX_TEXTURE_SIZE)");
+    map_ = Texture::create();
+    extraColour_.reset();
+    depth_.reset();
+    fbo_ = Framebuffer::create();
+    plain_ = Sampler::create();
+    addedColour_ = false;
+
+    glBindTexture(GL_TEXTURE_2D, map_.id());
+    GLint filter = s.linear ? GL_LINEAR : GL_NEAREST;
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    // Outside the map counts as lit: clamp to a border at the far value.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float white[4] = {1, 1, 1, 1};
+    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, white);
+    glSamplerParameteri(plain_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(plain_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(plain_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+
+    ScopedFramebuffer bind(fbo_.id(), s.size, s.size);
+    if (s.storage == MapStorage::Rgb8) {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, s.size, s.size, 0, GL_RGB, GL_UNSIGNED_BYTE, nullptr);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, map_.id(), 0);
+        depth_ = Renderbuffer::create();
+        glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, s.size, s.size);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+        glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    } else {
+        GLenum format = s.storage == MapStorage::Depth16   ? GL_DEPTH_COMPONENT16
+                        : s.storage == MapStorage::Depth24 ? GL_DEPTH_COMPONENT24
+                                                           : GL_DEPTH_COMPONENT32F;
+        GLenum type = s.storage == MapStorage::Depth32F ? GL_FLOAT : GL_UNSIGNED_INT;
+        glTexImage2D(GL_TEXTURE_2D, 0, format, s.size, s.size, 0, GL_DEPTH_COMPONENT, type, nullptr);
+        if (s.compare) {
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        }
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map_.id(), 0);
+        glDrawBuffer(GL_NONE);  // no colour writes where none are needed
+        glReadBuffer(GL_NONE);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            // Some drivers (the lab's) want a colour attachment before they call it complete.
+            extraColour_ = Texture::create();
+            glBindTexture(GL_TEXTURE_2D, extraColour_.id());
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, s.size, s.size, 0, GL_RED, GL_FLOAT, nullptr);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, extraColour_.id(), 0);
+            glDrawBuffer(GL_COLOR_ATTACHMENT0);
+            addedColour_ = true;
+        }
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    std::string incomplete = checkFramebufferComplete("shadow map framebuffer");
+    if (!incomplete.empty()) throw std::runtime_error(incomplete);
+    allocated_ = true;
+}
+
+std::vector<Aabb> ShadowMap::boundsInMap(const FrameContext& f, bool castersOnly) const {
+    std::vector<Aabb> boxes;
+    for (const Object& o : f.scene.objects) {
+        if (castersOnly && !o.castsShadow) continue;
+        glm::mat4 m = modelMatrix(o);
+        Aabb b{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
+        for (int k = 0; k < 8; ++k) {  // the unit primitive's corners, placed in the world
+            glm::vec3 c((k & 1) ? 0.5f : -0.5f, (k & 2) ? 0.5f : -0.5f, (k & 4) ? 0.5f : -0.5f);
+            if (o.kind == PrimitiveKind::Sphere) c *= 2.0f;  // the unit sphere has radius 1
+            if (o.kind == PrimitiveKind::Quad) c.z = 0;
+            glm::vec3 w = glm::vec3(m * glm::vec4(c, 1));
+            b.lo = glm::min(b.lo, w);
+            b.hi = glm::max(b.hi, w);
+        }
+        boxes.push_back(b);
+    }
+    return boxes;
+}
+
+void ShadowMap::update(FrameContext& f, const ShadowMapSettings& s, Program& program) {
+    PassScope pass("shadow");
+    bool reallocate = !allocated_ || s.storage != settings_.storage || s.size != settings_.size ||
+                      s.compare != settings_.compare || s.linear != settings_.linear;
+    if (reallocate) allocate(s);
+    settings_ = s;
+    bool stale = reallocate || f.lightPosition != renderedLight_ || f.sceneGeneration != renderedScene_ ||
+                 f.allLit != renderedAllLit_ || program.id() != renderedProgram_ || s != renderedSettings_;
+    if (!stale) return;
+
+    auto start = std::chrono::steady_clock::now();
+    frustum_ = fitLightFrustum(f.lightPosition, f.scene.light.target, boundsInMap(f, s.castersOnly), s.fit);
+    glm::mat4 projection = s.depthFlipped ? depthFlippedProjection(frustum_.projection) : frustum_.projection;
+    lightViewProjection_ = projection * frustum_.view;
+    {
+        ScopedFramebuffer bind(fbo_.id(), s.size, s.size);
+        ScopedDepthRange range(s.depthFlipped ? 1.0 : 0.0, s.depthFlipped ? 0.0 : 1.0);
+        // With the flipped range, nearer fragments have larger NDC z but smaller window z, so the
+        // usual GL_LESS still keeps the nearest one.
+        ScopedPolygonOffset offset(s.offsetFactor, s.offsetUnits);
+        ScopedCullFace cull(s.cullFront ? GL_FRONT : GL_NONE);
+        glClearColor(1, 1, 1, 1);  // the far value, in colour too
+        glClearDepth(1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (!f.allLit)  // forced "everything lit": the map stays at the far value
+            drawSceneFromLight(program, f, lightViewProjection_, s.castersOnly);
+    }
+    ++f.stats.shadowMapRenders;
+    if (f.timePasses) {
+        glFinish();
+        f.stats.shadowMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    }
+    renderedLight_ = f.lightPosition;
+    renderedScene_ = f.sceneGeneration;
+    renderedAllLit_ = f.allLit;
+    renderedProgram_ = program.id();
+    renderedSettings_ = s;
+}
+
+void ShadowMap::bind(int unit) const {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, map_.id());
+    glBindSampler(unit, 0);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+void ShadowMap::bindPlain(int unit) const {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, map_.id());
+    glBindSampler(unit, plain_.id());  // compare mode off: sampling a compare texture as plain is undefined
+    glActiveTexture(GL_TEXTURE0);
+}
+
+}  // namespace sl

@@ -1,0 +1,43 @@
+// What every shadow-mapping stage does: render the map from the light (only when it is stale),
+// then the lit pass that compares against it, plus the debug views. A stage supplies its map
+// settings and the uniforms its shaders read; its shaders live in shaders_*/<id>/.
+#pragma once
+
+#include "render/shadow_map.h"
+
+namespace sl {
+
+// Parameters every shadow stage shares: map-size, light-fit, casters.
+std::vector<ParamSpec> commonShadowParams(const std::string& castersDefault);
+// Reads the shared parameters into settings.
+ShadowMapSettings commonShadowSettings(const ParamSet& p);
+// The views every shadow stage offers.
+std::vector<ViewMode> shadowViews();
+
+class ShadowStage : public Stage {
+public:
+    explicit ShadowStage(std::string id) : id_(std::move(id)) {}
+    void render(FrameContext& f) override;
+    std::string explain() const override { return explanation_; }
+
+protected:
+    virtual ShadowMapSettings settings(const ParamSet& p) const = 0;
+    // Uniforms of this stage's shadow-pass and lit-pass programs (margin, encodings...).
+    virtual void setShadowUniforms(Program&, const ParamSet&) const {}
+    virtual void setLitUniforms(Program&, const ParamSet&) const {}
+    // z scale of the bias matrix the lit pass uses (+0.5 for OpenGL's projection).
+    virtual float biasZ(const ParamSet&) const { return 0.5f; }
+    // How the debug view decodes the map: 0 depth, 1 one 8-bit value, 2 packed RGB.
+    virtual int mapEncoding(const ParamSet&) const { return settings_.storage == MapStorage::Rgb8 ? 1 : 0; }
+
+    ShadowMap map_;
+    ShadowMapSettings settings_;
+
+private:
+    void showMap(FrameContext& f);
+    void describe(FrameContext& f);
+    std::string id_;
+    std::string explanation_;
+};
+
+}  // namespace sl
