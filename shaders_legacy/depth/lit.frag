@@ -13,8 +13,9 @@ void main()
 {
     vec3 ndc = lightSpace.xyz / lightSpace.w;
     vec3 shadowCoord = ndc * 0.5 + 0.5;
+    shadowCoord.z = min(shadowCoord.z, 1.0);  // beyond the far plane: as far as can be stored
     float visibility = 1.0;
-    if (lightSpace.w > 0.0 && shadowCoord.z <= 1.0)
+    if (lightSpace.w > 0.0)
         visibility = shadowCoord.z <= texture2D(shadowMap, shadowCoord.xy).r + margin ? 1.0 : 0.0;
     gl_FragColor = shade(worldPosition, worldNormal, visibility, shadowCoord.z);
 }

@@ -20,8 +20,9 @@ void main()
 {
     vec3 ndc = lightSpace.xyz / lightSpace.w;  // perspective divide
     vec3 shadowCoord = ndc * 0.5 + 0.5;        // [-1,1] -> [0,1]: s, t and the depth u
+    shadowCoord.z = min(shadowCoord.z, 1.0);   // beyond the light's far plane: as far as can be stored
     float visibility = 1.0;
-    if (lightSpace.w > 0.0 && shadowCoord.z <= 1.0)  // outside the light's frustum: lit
+    if (lightSpace.w > 0.0)  // behind the light: lit
         visibility = shadowCoord.z <= storedDepth(shadowCoord.xy) + margin ? 1.0 : 0.0;
     gl_FragColor = shade(worldPosition, worldNormal, visibility, shadowCoord.z);
 }
