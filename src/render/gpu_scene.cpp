@@ -27,6 +27,20 @@ GpuScene::GpuScene(const Scene& scene, const Camera& camera, int imageHeight)
     glBindVertexArray(0);
 }
 
+void GpuScene::bindFixedFunction() {
+    if (!fixedVao_) {
+        fixedVao_ = VertexArray::create();
+        glBindVertexArray(fixedVao_.id());
+        glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glVertexPointer(3, GL_FLOAT, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
+        glEnableClientState(GL_NORMAL_ARRAY);
+        glNormalPointer(GL_FLOAT, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+    }
+    glBindVertexArray(fixedVao_.id());
+}
+
 void GpuScene::draw(const MeshPart& part) const {
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(part.indexCount), GL_UNSIGNED_INT,
                    reinterpret_cast<void*>(std::size_t(part.firstIndex) * sizeof(std::uint32_t)));

@@ -11,6 +11,9 @@ public:
     GpuScene(const Scene& scene, const Camera& camera, int imageHeight);
 
     void bind() const { glBindVertexArray(vao_.id()); }
+    // Compatibility profile only: a vertex array fed through the fixed-function client arrays
+    // (glVertexPointer, glNormalPointer) from the same buffers, for the `fixed` stage.
+    void bindFixedFunction();
     void drawObject(std::size_t index) const { draw(mesh_.objects[index]); }
     void drawUnitQuad() const { draw(mesh_.unitQuad); }
     const SceneMesh& mesh() const { return mesh_; }
@@ -20,6 +23,7 @@ private:
     void draw(const MeshPart& part) const;
     SceneMesh mesh_;
     VertexArray vao_;
+    VertexArray fixedVao_;
     Buffer vertices_;
     Buffer indices_;
 };

@@ -192,3 +192,20 @@ TEST_P(Lessons, EveryDebugViewRendersWithoutGlErrors) {
 
 INSTANTIATE_TEST_SUITE_P(Trees, Lessons, ::testing::Values(GlslTree::Core, GlslTree::Legacy),
                          [](const auto& info) { return std::string(treeName(info.param)); });
+
+TEST(FixedFunction, ShadowsInPlaceOnTheCompatibilityProfile) {
+    RenderRequest r = request("fixed", GlslTree::Legacy);
+    Rendered out = renderHeadless(r);
+    ASSERT_EQ(out.glErrors, 0);
+    Image phong = renderHeadless(request("phong", GlslTree::Legacy)).image;
+    for (glm::vec3 p : kDeepShadow) EXPECT_LT(luma(out.image, r, p), 0.6f * luma(phong, r, p));
+    // Per-vertex (Gouraud) lighting of the big floor quad differs from per-pixel Phong, so lit
+    // points are compared more loosely: clearly brighter than the shadowed ambient level.
+    for (glm::vec3 p : kClearlyLit) EXPECT_GT(luma(out.image, r, p), 0.7f * luma(phong, r, p));
+}
+
+TEST(FixedFunction, CoreProfileAnswersWithAClearMessage) {
+    std::string output;
+    EXPECT_EQ(runShadowlab("render --stage fixed --glsl core --out /tmp/never.png", &output), 2);
+    EXPECT_NE(output.find("needs the compatibility profile"), std::string::npos) << output;
+}
