@@ -33,7 +33,8 @@ glm::vec3 parseVec3(const std::string& option, const std::string& text) {
 void addCommonOptions(CLI::App* app, CommonOptions& o, bool withStage) {
     if (withStage) app->add_option("--stage", o.stage, "stage id (see `shadowlab stages`)");
     app->add_option("--glsl", o.glsl, "shader tree: core (GLSL 3.30) or legacy (GLSL 1.20)");
-    app->add_option("--scene", o.scene, "built-in scene name or a scene .json file");
+    app->add_option("--scene", o.scene,
+                    "built-in scene or .json file (default: slides; the mirror stage: mirror)");
     app->add_option("--shaders", o.shaders, "student overlay folder: its files replace ours");
     app->add_option("--size", o.size, "image size WxH (default 640x480)");
     app->add_option("--eye", o.eye, "camera position X,Y,Z");
@@ -61,7 +62,10 @@ RenderRequest toRequest(const CommonOptions& o) {
         r.tree = GlslTree::Legacy;
     else
         throw UsageError("--glsl: '" + o.glsl + "' is not one of core, legacy");
-    r.scene = o.scene;
+    if (!o.scene.empty()) {
+        r.scene = o.scene;
+        r.sceneGiven = true;
+    }
     r.overlay = o.shaders;
 
     int w = 0, h = 0;

@@ -9,7 +9,8 @@
 namespace sl {
 
 struct CommonOptions {
-    std::string stage = "phong", glsl = "core", scene = "slides", shaders, size = "640x480";
+    // scene "" = not given: slides, or the stage's own default scene (StageInfo::defaultScene)
+    std::string stage = "phong", glsl = "core", scene, shaders, size = "640x480";
     std::string eye, at, fovy, light, view = "final", backend = "auto";
     std::vector<std::string> sets;
 };

@@ -57,9 +57,22 @@ void applyRequest(Renderer& renderer, const RenderRequest& r) {
     for (const auto& [name, value] : r.sets) renderer.params().set(name, value);
 }
 
+std::string effectiveScene(const RenderRequest& r) {
+    const StageInfo* info = findStage(r.stage);
+    if (!r.sceneGiven && r.scene == "slides" && info && !info->defaultScene.empty())
+        return info->defaultScene;
+    return r.scene;
+}
+
 std::unique_ptr<Renderer> makeRenderer(const RenderRequest& r) {
     validateRequest(r);
-    Scene scene = loadScene(r.scene);
+    std::string sceneName = effectiveScene(r);
+    Scene scene = loadScene(sceneName);
+    const StageInfo* info = findStage(r.stage);
+    if (info->needsMirror && !scene.mirror)
+        throw UsageError("--scene " + sceneName + ": stage '" + r.stage +
+                         "' needs a scene with a \"mirror\" (its default is --scene " +
+                         (info->defaultScene.empty() ? "mirror" : info->defaultScene) + ")");
     Camera camera = scene.camera;
     if (r.eye) camera.eye = *r.eye;
     if (r.at) camera.at = *r.at;

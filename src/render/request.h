@@ -19,6 +19,9 @@ struct RenderRequest {
     std::string stage = "phong";
     GlslTree tree = GlslTree::Core;
     std::string scene = "slides";
+    // True when the user chose the scene (--scene). When false and scene is the default
+    // "slides", the stage's own default scene (StageInfo::defaultScene) is used instead.
+    bool sceneGiven = false;
     std::string overlay;  // student shader folder, "" for none
     int width = 640, height = 480;
     std::optional<glm::vec3> eye, at, light;
@@ -33,6 +36,9 @@ std::string shaderTreeRoot(GlslTree tree);
 // Checks the request against the stage (exists, tree allowed, view offered, parameters) before
 // any GL work; throws UsageError with a one-line message.
 void validateRequest(const RenderRequest& request);
+
+// The scene a request renders: its own, or the stage's default when none was chosen.
+std::string effectiveScene(const RenderRequest& request);
 
 // Builds the renderer for a request (a GL context must be current). Throws UsageError,
 // SceneError or ShaderError.

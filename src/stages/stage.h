@@ -58,6 +58,10 @@ struct StageInfo {
     std::vector<ParamSpec> params;
     std::string expectation;  // the expected outcome of the defaults, one line
     bool legacyOnly = false;  // needs the compatibility profile (the fixed-function stage)
+    // The built-in scene used when the user gives no --scene ("" = slides), and whether the
+    // scene must have a mirror (an explicit --scene without one is a usage error).
+    std::string defaultScene;
+    bool needsMirror = false;
     std::vector<ViewMode> views;
     std::function<std::unique_ptr<Stage>()> create;
 };

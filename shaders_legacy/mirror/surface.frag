@@ -1,0 +1,16 @@
+#version 120
+// As on the slides: the fragment's colour comes either from the texture or from a colour.
+varying vec2 uv;
+
+uniform sampler2D mirrorTexture;  // what the reflected camera saw
+uniform int useTexture;           // 1: the reflection; 0: a flat colour (stencil passes)
+uniform vec4 color;
+uniform float reflectance;  // a real mirror returns a little less than all light
+
+void main()
+{
+    if (useTexture == 1)
+        gl_FragColor = vec4(reflectance * texture2D(mirrorTexture, uv).rgb, 1.0);
+    else
+        gl_FragColor = color;
+}
