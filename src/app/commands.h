@@ -17,6 +17,8 @@ struct Command {
 Command addStagesCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addWindowCommand(CLI::App& app);
+Command addBenchCommand(CLI::App& app);
+Command addSweepCommand(CLI::App& app);
 
 // Runs `body`, turning the project's exceptions into the contract's exit codes and one-line
 // messages on stderr.

@@ -168,6 +168,14 @@ LightFrustum fitLightFrustum(const glm::vec3& light, const glm::vec3& target,
     return fixedFit(light, target, "");
 }
 
+LightFrustum withFarOverNear(LightFrustum f, float ratio) {
+    if (!(ratio > 1.0f) || !std::isfinite(ratio)) return f;
+    f.zNear = f.zFar / ratio;
+    f.projection = glm::perspective(glm::radians(f.fovyDegrees), 1.0f, f.zNear, f.zFar);
+    f.note += format("; near moved to far/%.6g = %.3g (far-near)", ratio, f.zNear);
+    return f;
+}
+
 float farOverNear(const LightFrustum& f) {
     return f.zFar / f.zNear;
 }

@@ -67,6 +67,10 @@ struct LightFrustum {
 LightFrustum fitLightFrustum(const glm::vec3& light, const glm::vec3& target,
                              const std::vector<Aabb>& boxes, LightFit fit);
 
+// The same frustum with its near plane moved to far / ratio (the field of view kept): the knob
+// of the near-far precision sweep. A ratio of 0 (or anything not above 1) returns `f` unchanged.
+LightFrustum withFarOverNear(LightFrustum f, float ratio);
+
 // far / near: how much of the depth buffer's precision the fit wastes (bigger is worse).
 float farOverNear(const LightFrustum& f);
 

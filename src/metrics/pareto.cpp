@@ -45,4 +45,41 @@ double breakPoint(const std::vector<double>& xs, const std::vector<double>& erro
     return std::numeric_limits<double>::quiet_NaN();
 }
 
+WorkingRange workingRange(const std::vector<double>& xs, const std::vector<double>& errors,
+                          double threshold) {
+    if (xs.size() != errors.size())
+        throw std::invalid_argument("workingRange: xs and errors differ in length");
+    WorkingRange r;
+    std::size_t best = xs.size();
+    for (std::size_t k = 0; k < xs.size(); ++k)
+        if (!std::isnan(errors[k]) && (best == xs.size() || errors[k] < errors[best])) best = k;
+    if (best == xs.size()) return r;
+    r.best = xs[best];
+    r.bestError = errors[best];
+    if (!(errors[best] <= threshold)) return r;
+    r.works = true;
+    // NaN never exceeds in breakPoint, so treat it as broken explicitly with +infinity.
+    auto broken = [](double e) { return std::isnan(e) ? INFINITY : e; };
+    std::vector<double> afterX, afterE, beforeX, beforeE;
+    for (std::size_t k = best; k < xs.size(); ++k) {
+        afterX.push_back(xs[k]);
+        afterE.push_back(broken(errors[k]));
+    }
+    for (std::size_t k = best + 1; k-- > 0;) {
+        beforeX.push_back(xs[k]);
+        beforeE.push_back(broken(errors[k]));
+    }
+    r.breaksAfter = breakPoint(afterX, afterE, threshold);
+    r.breaksBefore = breakPoint(beforeX, beforeE, threshold);
+    // The last working value on each side is the one just before the break (or the end).
+    auto lastWorking = [&](const std::vector<double>& x, double brk) {
+        for (std::size_t k = 1; k < x.size(); ++k)
+            if (x[k] == brk) return x[k - 1];
+        return x.back();
+    };
+    r.to = std::isnan(r.breaksAfter) ? afterX.back() : lastWorking(afterX, r.breaksAfter);
+    r.from = std::isnan(r.breaksBefore) ? beforeX.back() : lastWorking(beforeX, r.breaksBefore);
+    return r;
+}
+
 }  // namespace sl

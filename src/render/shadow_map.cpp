@@ -19,6 +19,7 @@ MapStorage parseStorage(const std::string& t) {
 
 bool ShadowMapSettings::operator==(const ShadowMapSettings& o) const {
     return storage == o.storage && size == o.size && fit == o.fit && castersOnly == o.castersOnly &&
+           farOverNear == o.farOverNear &&
            offsetFactor == o.offsetFactor && offsetUnits == o.offsetUnits && cullFront == o.cullFront &&
            depthFlipped == o.depthFlipped && compare == o.compare && linear == o.linear;
 }
@@ -129,6 +130,7 @@ void ShadowMap::update(FrameContext& f, const ShadowMapSettings& s, Program& pro
 
     auto start = std::chrono::steady_clock::now();
     frustum_ = fitLightFrustum(f.lightPosition, f.scene.light.target, boundsInMap(f, s.castersOnly), s.fit);
+    frustum_ = withFarOverNear(frustum_, s.farOverNear);
     glm::mat4 projection = s.depthFlipped ? depthFlippedProjection(frustum_.projection) : frustum_.projection;
     lightViewProjection_ = projection * frustum_.view;
     {

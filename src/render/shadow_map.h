@@ -16,6 +16,7 @@ struct ShadowMapSettings {
     int size = 512;
     LightFit fit = LightFit::Tight;
     bool castersOnly = false;
+    float farOverNear = 0;  // > 1: the light's near plane forced to far / this (precision sweep)
     float offsetFactor = 0, offsetUnits = 0;  // glPolygonOffset in the shadow pass
     bool cullFront = false;                   // draw only back faces of casters into the map
     bool depthFlipped = false;  // projection maps near to NDC +1, with glDepthRange(1, 0)

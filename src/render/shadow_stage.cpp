@@ -18,6 +18,9 @@ std::vector<ParamSpec> commonShadowParams(const std::string& castersDefault) {
                           "light frustum: tight box fit, the casters' bounding sphere, or the lab's "
                           "frustum(-1,1,-1,1,1,100)"),
         ParamSpec::choice("casters", casters, "what goes into the map: every object, or only shadow casters"),
+        ParamSpec::number("far-near", 0, 0, 100000, 1.0,
+                          "light far/near ratio: 0 = as the fit chose; else near = far / this "
+                          "(depth precision)", true),
     };
 }
 
@@ -27,6 +30,7 @@ ShadowMapSettings commonShadowSettings(const ParamSet& p) {
     const std::string& fit = p.choice("light-fit");
     s.fit = fit == "sphere" ? LightFit::Sphere : fit == "fixed" ? LightFit::Fixed : LightFit::Tight;
     s.castersOnly = p.is("casters", "casters-only");
+    s.farOverNear = static_cast<float>(p.number("far-near"));
     return s;
 }
 

@@ -2,6 +2,7 @@
 // the light, copied into a depth texture with glCopyTexImage2D, eye-linear texture generation
 // with the texture matrix bias * P_light * V_light, GL_COMPARE_R_TO_TEXTURE, and two passes:
 // a dim ambient pass, then the lit pass whose shadowed fragments the alpha test discards.
+#include <chrono>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl/state.h"
@@ -13,13 +14,24 @@ namespace sl {
 
 namespace {
 
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 class FixedStage : public Stage {
 public:
     void render(FrameContext& f) override {
         int size = f.params.integer("map-size");
         float factor = static_cast<float>(f.params.number("offset-factor"));
         float units = static_cast<float>(f.params.number("offset-units"));
+        auto start = std::chrono::steady_clock::now();
+        unsigned before = f.stats.shadowMapRenders;
         updateMap(f, size, factor, units);
+        if (f.timePasses && f.stats.shadowMapRenders != before) {
+            glFinish();
+            f.stats.shadowMs = msSince(start);
+        }
+        start = std::chrono::steady_clock::now();
         PassScope pass("lit");
         clearToBackground(f);
         glUseProgram(0);
@@ -73,6 +85,10 @@ public:
         glDisable(GL_LIGHT0);
         glDisable(GL_LIGHTING);
         glBindVertexArray(0);
+        if (f.timePasses) {
+            glFinish();
+            f.stats.litMs = msSince(start);
+        }
     }
 
 private:

@@ -1,4 +1,6 @@
 // Stage 0, the baseline: Phong lighting with no shadows at all.
+#include <chrono>
+
 #include "render/scene_pass.h"
 
 namespace sl {
@@ -9,9 +11,14 @@ class PhongStage : public Stage {
 public:
     void render(FrameContext& f) override {
         PassScope pass("lit");
+        auto start = std::chrono::steady_clock::now();
         clearToBackground(f);
         int debugView = f.view == ViewMode::LightDepth ? 2 : f.view == ViewMode::Visibility ? 1 : 0;
         drawSceneLit(f.shaders.program("phong", "lit"), f, cameraViewer(f), debugView);
+        if (f.timePasses) {
+            glFinish();
+            f.stats.litMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        }
     }
 };
 

@@ -286,3 +286,41 @@ TEST(Metrics, BreakPointScansInTheGivenOrder) {
     EXPECT_TRUE(std::isnan(breakPoint({}, {}, 1.0)));
     EXPECT_THROW(breakPoint(xs, {1.0}, 1.0), std::invalid_argument);
 }
+
+TEST(Metrics, WorkingRangeOfAMarginSweepHasABreakOnEachSide) {
+    // Made-up margin sweep: acne below 0.004, leaking shadows above 0.02.
+    std::vector<double> margin{0, 0.002, 0.004, 0.01, 0.02, 0.03, 0.05};
+    std::vector<double> error{40, 12, 3, 0.5, 2, 7, 20};
+    WorkingRange r = workingRange(margin, error, 5.0);
+    EXPECT_TRUE(r.works);
+    EXPECT_EQ(r.best, 0.01);
+    EXPECT_EQ(r.bestError, 0.5);
+    EXPECT_EQ(r.from, 0.004);
+    EXPECT_EQ(r.to, 0.02);
+    EXPECT_EQ(r.breaksBefore, 0.002);
+    EXPECT_EQ(r.breaksAfter, 0.03);
+}
+
+TEST(Metrics, WorkingRangeWithoutABreakOrWithoutAWorkingPoint) {
+    // Elevation listed from high to low; a method that holds all the way down breaks nowhere.
+    std::vector<double> elevation{85, 45, 15, 5, 1};
+    WorkingRange holds = workingRange(elevation, {0.2, 0.3, 0.9, 1.5, 2.0}, 5.0);
+    EXPECT_TRUE(holds.works);
+    EXPECT_EQ(holds.from, 85.0);
+    EXPECT_EQ(holds.to, 1.0);
+    EXPECT_TRUE(std::isnan(holds.breaksBefore));
+    EXPECT_TRUE(std::isnan(holds.breaksAfter));
+    // One that fails at grazing light: the break is the first value past the working range.
+    WorkingRange grazes = workingRange(elevation, {0.2, 0.3, 6.0, 1.0, 9.0}, 5.0);
+    EXPECT_EQ(grazes.to, 45.0);
+    EXPECT_EQ(grazes.breaksAfter, 15.0);  // 5 degrees works again, but the range ends at the first break
+    // Never under the threshold: not working, best point still reported.
+    WorkingRange never = workingRange(elevation, {9, 8, 7, 8, 9}, 5.0);
+    EXPECT_FALSE(never.works);
+    EXPECT_EQ(never.best, 15.0);
+    EXPECT_TRUE(std::isnan(never.from));
+    // A NaN error counts as broken, and lengths must match.
+    WorkingRange gap = workingRange({1, 2, 3}, {1, NAN, 1}, 5.0);
+    EXPECT_EQ(gap.breaksAfter, 2.0);
+    EXPECT_THROW(workingRange({1, 2}, {1}, 5.0), std::invalid_argument);
+}

@@ -293,3 +293,24 @@ TEST(ShadowMath, LightFitNamesAreShort) {
     EXPECT_STREQ(lightFitName(LightFit::Sphere), "sphere");
     EXPECT_STREQ(lightFitName(LightFit::Fixed), "fixed");
 }
+
+TEST(ShadowMath, FarOverNearMovesOnlyTheNearPlane) {
+    std::vector<Aabb> boxes = {{glm::vec3(-1, 0, -1), glm::vec3(1, 1, 1)}};
+    LightFrustum fitted = fitLightFrustum(glm::vec3(3, 4, 2), glm::vec3(0), boxes, LightFit::Tight);
+    LightFrustum forced = withFarOverNear(fitted, 10000.0f);
+    EXPECT_FLOAT_EQ(forced.zFar, fitted.zFar);
+    EXPECT_FLOAT_EQ(forced.zNear, fitted.zFar / 10000.0f);
+    EXPECT_NEAR(farOverNear(forced), 10000.0f, 1.0f);
+    EXPECT_FLOAT_EQ(forced.fovyDegrees, fitted.fovyDegrees);
+    // The far plane still maps to NDC z = +1 and the new near plane to -1.
+    for (float depth : {forced.zNear, forced.zFar}) {
+        glm::vec4 clip = forced.projection * glm::vec4(0, 0, -depth, 1);
+        EXPECT_NEAR(clip.z / clip.w, depth == forced.zFar ? 1.0f : -1.0f, 1e-3f);
+    }
+    // 0 and anything not above 1 leave the fit alone.
+    for (float ratio : {0.0f, 1.0f, -5.0f, NAN}) {
+        LightFrustum same = withFarOverNear(fitted, ratio);
+        EXPECT_EQ(same.zNear, fitted.zNear);
+        EXPECT_EQ(same.projection, fitted.projection);
+    }
+}

@@ -1,0 +1,101 @@
+#include "app/bench_output.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "gl/gl.h"
+#include "metrics/image.h"
+#include "render/request.h"
+
+namespace sl {
+
+void Table::add(std::vector<std::string> row) {
+    if (row.size() != columns.size())
+        throw std::logic_error("table row has " + std::to_string(row.size()) + " cells for " +
+                               std::to_string(columns.size()) + " columns");
+    rows.push_back(std::move(row));
+}
+
+std::string Table::csv() const {
+    auto cell = [](const std::string& c) {
+        if (c.find_first_of(",\"\n") == std::string::npos) return c;
+        std::string q = "\"";
+        for (char ch : c) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+        return q + "\"";
+    };
+    std::ostringstream out;
+    for (std::size_t k = 0; k < columns.size(); ++k) out << (k ? "," : "") << cell(columns[k]);
+    out << "\n";
+    for (const auto& row : rows) {
+        for (std::size_t k = 0; k < row.size(); ++k) out << (k ? "," : "") << cell(row[k]);
+        out << "\n";
+    }
+    return out.str();
+}
+
+std::string num(double value, int digits) {
+    if (std::isnan(value)) return "na";
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*g", digits, value);
+    return text;
+}
+
+std::string gnuplotBlocks(const std::vector<Series>& series) {
+    std::ostringstream out;
+    bool first = true;
+    for (const Series& s : series) {
+        if (s.xs.empty()) continue;
+        if (!first) out << "\n\n";
+        first = false;
+        out << "\"" << s.title << "\" \"\"\n";
+        for (std::size_t k = 0; k < s.xs.size() && k < s.ys.size(); ++k)
+            out << num(s.xs[k], 8) << " " << num(s.ys[k], 8) << "\n";
+    }
+    return out.str();
+}
+
+std::string machineLine() {
+    auto text = [](GLenum name) {
+        const GLubyte* s = glGetString(name);
+        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
+    };
+    return std::to_string(std::thread::hardware_concurrency()) + " cores, " + text(GL_RENDERER) +
+           ", GL " + text(GL_VERSION);
+}
+
+std::string runGnuplot(const std::string& dir, const std::string& scriptPath,
+                       const std::string& script) {
+    std::string err = writeTextFile(scriptPath, script);
+    if (!err.empty()) return err;
+    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
+        return "gnuplot is not installed (apt-get install gnuplot-nox): tables written, charts "
+               "skipped";
+    std::string command =
+        "cd '" + dir + "' && gnuplot '" + std::filesystem::absolute(scriptPath).string() + "' 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return "could not start gnuplot";
+    std::string output;
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+    int status = pclose(pipe);
+    if (status != 0) {
+        auto eol = output.find('\n');
+        return "gnuplot failed: " + output.substr(0, eol);
+    }
+    return "";
+}
+
+void makeOutputDir(const std::string& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir))
+        throw UsageError("--out: cannot create the folder '" + dir + "'" +
+                         (ec ? " (" + ec.message() + ")" : ""));
+}
+
+}  // namespace sl

@@ -1,0 +1,44 @@
+// Writing what `bench` and `sweep` measured: CSV tables, gnuplot data blocks and charts, and a
+// line naming the machine, which goes beside every figure.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sl {
+
+// A table with named columns; every cell is text (numbers formatted by `num`). Written as CSV.
+struct Table {
+    std::vector<std::string> columns;
+    std::vector<std::vector<std::string>> rows;
+    void add(std::vector<std::string> row);  // throws std::logic_error on a wrong cell count
+    std::string csv() const;
+};
+
+// A number for a table: "na" for NaN (a figure that does not apply), else up to `digits`
+// significant digits.
+std::string num(double value, int digits = 4);
+
+// One chart line: a title and its (x, y) points.
+struct Series {
+    std::string title;
+    std::vector<double> xs, ys;
+};
+
+// gnuplot data: one block per series, headed by its quoted title, blocks separated by two blank
+// lines (so `index i` picks one and `columnheader(1)` titles it). Empty series are skipped.
+std::string gnuplotBlocks(const std::vector<Series>& series);
+
+// "2 cores, llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa 22.3.6" from the current
+// GL context and the CPU count.
+std::string machineLine();
+
+// Runs gnuplot on `script` (written beside the charts as `scriptPath`) in `dir`. Returns "" or a
+// one-line reason (gnuplot missing or failing); charts are an extra, the tables stand alone.
+std::string runGnuplot(const std::string& dir, const std::string& scriptPath,
+                       const std::string& script);
+
+// Creates `dir` (and its parents) if missing; throws UsageError when it cannot.
+void makeOutputDir(const std::string& dir);
+
+}  // namespace sl

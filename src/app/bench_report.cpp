@@ -1,0 +1,295 @@
+#include "app/bench_report.h"
+
+#include <algorithm>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/bench_output.h"
+#include "metrics/image.h"
+#include "metrics/pareto.h"
+
+namespace sl {
+
+namespace {
+
+// The speed targets of issue 6, at 640x480 with a 1024 map.
+constexpr double kHardwareMovingTarget = 1.3, kHardwareStillTarget = 1.05, kMirrorTarget = 2.2;
+
+const std::vector<std::string> kColumns = {"group",
+                                           "series",
+                                           "stage",
+                                           "tree",
+                                           "scene",
+                                           "width",
+                                           "height",
+                                           "settings",
+                                           "map_size",
+                                           "light",
+                                           "frames",
+                                           "frame_ms",
+                                           "frame_iqr_ms",
+                                           "frame_min_ms",
+                                           "frame_max_ms",
+                                           "shadow_ms",
+                                           "lit_ms",
+                                           "mirror_ms",
+                                           "map_renders",
+                                           "ratio_to_phong",
+                                           "false_shadow_pct",
+                                           "false_lit_pct",
+                                           "false_shadow_band_pct",
+                                           "false_lit_band_pct",
+                                           "edge_mean_px",
+                                           "edge_p95_px",
+                                           "error_pct",
+                                           "mirror_id_pct",
+                                           "mirror_psnr_db"};
+
+// The map size a configuration used: its own setting or the stage's default; NaN without a map.
+double mapSize(const BenchConfig& c) {
+    for (const auto& [name, value] : c.sets)
+        if (name == "map-size") return std::stod(value);
+    const StageInfo* info = findStage(c.stage);
+    for (const ParamSpec& p : info->params)
+        if (p.name == "map-size") return p.defaultValue;
+    return NAN;
+}
+
+std::string family(const std::string& series) {
+    return series.substr(0, series.find('/'));
+}
+
+struct Row {
+    const Measured* m;
+    bool moving;
+    double ratio;
+    const PassTimes& t() const { return moving ? m->moving : m->still; }
+};
+
+std::vector<std::string> cells(const Row& r) {
+    const BenchConfig& c = r.m->config;
+    const Accuracy& a = r.m->accuracy;
+    const PassTimes& t = r.t();
+    return {c.group,
+            c.series,
+            c.stage,
+            treeName(c.tree),
+            r.m->scene,
+            std::to_string(c.width),
+            std::to_string(c.height),
+            c.setsText(),
+            num(mapSize(c)),
+            r.moving ? "moving" : "still",
+            std::to_string(t.frame.count),
+            num(t.frame.median),
+            num(t.frame.iqr()),
+            num(t.frame.min),
+            num(t.frame.max),
+            num(t.shadow.median),
+            num(t.lit.median),
+            num(t.mirror.median),
+            std::to_string(t.mapRenders),
+            num(r.ratio),
+            num(a.falseShadowPct),
+            num(a.falseLitPct),
+            num(a.falseShadowBandPct),
+            num(a.falseLitBandPct),
+            num(a.edgeMeanPx),
+            num(a.edgeP95Px),
+            num(a.errorPct),
+            num(a.mirrorIdPct),
+            num(a.mirrorPsnrDb)};
+}
+
+nlohmann::json rowJson(const std::vector<std::string>& cell) {
+    nlohmann::json j;
+    for (std::size_t k = 0; k < kColumns.size(); ++k) {
+        const std::string& v = cell[k];
+        char* end = nullptr;
+        double d = std::strtod(v.c_str(), &end);
+        if (v == "na")
+            j[kColumns[k]] = nullptr;
+        else if (!v.empty() && *end == '\0' && kColumns[k] != "settings")
+            j[kColumns[k]] = d;
+        else
+            j[kColumns[k]] = v;
+    }
+    return j;
+}
+
+std::string chartScript(const std::string& machine) {
+    std::ostringstream g;
+    g << "# Regenerate the charts from the .dat files beside this script: gnuplot charts.gp\n"
+      << "set terminal pngcairo size 960,640 font 'sans,10'\n"
+      << "set key outside right top\nset grid\n"
+      << "machine = '" << machine << "'\n"
+      << "set output 'error-vs-time.png.tmp'\n"
+      << "set title \"Error against frame time (640x480, light moving every frame)\\n\".machine\n"
+      << "set xlabel 'frame time, ms (median)'\nset ylabel 'error % (balanced false shadow / false "
+         "lit; mirror: 100 - id agreement)'\n"
+      << "set logscale x\n"
+      << "plot for [i=0:*] 'points.dat' index i using 1:2 with points pt 7 ps 0.8 lc i+1 title "
+         "columnheader(1), \\\n"
+      << "     for [i=0:*] 'pareto.dat' index i using 1:2 with lines lw 2 lc i+1 notitle\n"
+      << "unset logscale x\n"
+      << "set output 'time-vs-map-size.png.tmp'\n"
+      << "set title \"Frame time against shadow-map size (640x480, map re-rendered every "
+         "frame)\\n\".machine\n"
+      << "set xlabel 'map size (texels per side)'\nset ylabel 'frame time, ms (median)'\n"
+      << "set logscale x 2\nset logscale y\n"
+      << "plot for [i=0:*] 'map-size.dat' index i using 1:2 with linespoints pt 7 title "
+         "columnheader(1)\n"
+      << "unset logscale x\n"
+      << "set output 'time-vs-window.png.tmp'\n"
+      << "set title \"Frame time against window size (stage defaults, still light)\\n\".machine\n"
+      << "set xlabel 'pixels (thousands)'\nset ylabel 'frame time, ms (median)'\n"
+      << "set logscale x\n"
+      << "plot for [i=0:*] 'window.dat' index i using 1:2 with linespoints pt 7 title "
+         "columnheader(1)\n"
+      << "set output\n"
+      << "system('for f in *.png.tmp; do mv \"$f\" \"${f%.tmp}\"; done')\n";
+    return g.str();
+}
+
+void writeOrThrow(const std::string& path, const std::string& text) {
+    std::string err = writeTextFile(path, text);
+    if (!err.empty()) throw UsageError("--out: " + err);
+}
+
+}  // namespace
+
+std::string contextKey(const BenchConfig& c, const std::string& scene) {
+    return treeName(c.tree) + std::string("/") + scene + "/" + std::to_string(c.width) + "x" +
+           std::to_string(c.height);
+}
+
+BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
+                             const std::vector<Measured>& results) {
+    std::map<std::string, const Measured*> phong;
+    for (const Measured& m : results)
+        if (m.config.group == "baseline") phong[contextKey(m.config, m.scene)] = &m;
+    Table table;
+    table.columns = kColumns;
+    nlohmann::json json = {
+        {"machine", machine}, {"columns", kColumns}, {"rows", nlohmann::json::array()}};
+    std::vector<Row> rows;
+    for (const Measured& m : results)
+        for (bool moving : {false, true}) {
+            const Measured* base = phong.at(contextKey(m.config, m.scene));
+            double baseMs = (moving ? base->moving : base->still).frame.median;
+            Row r{&m, moving, (moving ? m.moving : m.still).frame.median / baseMs};
+            rows.push_back(r);
+            table.add(cells(r));
+            json["rows"].push_back(rowJson(table.rows.back()));
+        }
+    writeOrThrow(dir + "/bench.csv", table.csv());
+    writeOrThrow(dir + "/bench.json", json.dump(1) + "\n");
+
+    // Chart data. Error against time: every 640x480 configuration, moving light, by method.
+    std::map<std::string, Series> points;
+    std::map<std::string, std::vector<CostError>> costs;
+    std::map<std::string, Series> bySize, byWindow;
+    for (const Row& r : rows) {
+        const BenchConfig& c = r.m->config;
+        std::string fam = family(c.series);
+        if (r.moving && c.width == 640 && c.height == 480 && !std::isnan(r.m->accuracy.errorPct)) {
+            points[fam].title = fam;
+            points[fam].xs.push_back(r.t().frame.median);
+            points[fam].ys.push_back(r.m->accuracy.errorPct);
+            costs[fam].push_back({r.t().frame.median, r.m->accuracy.errorPct, c.setsText()});
+        }
+        if (r.moving && c.group == "map-size") {
+            bySize[c.series].title = c.series + (c.tree == GlslTree::Legacy ? " (legacy)" : "");
+            bySize[c.series].xs.push_back(mapSize(c));
+            bySize[c.series].ys.push_back(r.t().frame.median);
+        }
+        if (!r.moving && (c.group == "window" || c.group == "baseline") && r.m->scene != "mirror") {
+            byWindow[c.series].title = c.series;
+            byWindow[c.series].xs.push_back(c.width * c.height / 1000.0);
+            byWindow[c.series].ys.push_back(r.t().frame.median);
+        }
+    }
+    std::vector<Series> pointList, frontList, sizeList, windowList;
+    for (auto& [fam, s] : points) {
+        pointList.push_back(s);
+        Series front{fam, {}, {}};
+        for (std::size_t k : paretoFront(costs[fam])) {
+            front.xs.push_back(costs[fam][k].cost);
+            front.ys.push_back(costs[fam][k].error);
+        }
+        frontList.push_back(front);
+    }
+    for (auto& [name, s] : bySize) sizeList.push_back(s);
+    for (auto& [name, s] : byWindow) {
+        // Baseline rows may repeat a size (one per scene): keep the first of each.
+        Series unique{s.title, {}, {}};
+        for (std::size_t k = 0; k < s.xs.size(); ++k)
+            if (std::find(unique.xs.begin(), unique.xs.end(), s.xs[k]) == unique.xs.end()) {
+                unique.xs.push_back(s.xs[k]);
+                unique.ys.push_back(s.ys[k]);
+            }
+        windowList.push_back(unique);
+    }
+    writeOrThrow(dir + "/points.dat", gnuplotBlocks(pointList));
+    writeOrThrow(dir + "/pareto.dat", gnuplotBlocks(frontList));
+    writeOrThrow(dir + "/map-size.dat", gnuplotBlocks(sizeList));
+    writeOrThrow(dir + "/window.dat", gnuplotBlocks(windowList));
+
+    BenchReport report;
+    report.chartProblem = runGnuplot(dir, dir + "/charts.gp", chartScript(machine));
+
+    // The summary: each stage at its defaults, 640x480, and the targets.
+    std::ostringstream s;
+    char line[256];
+    s << "machine: " << machine << "\n";
+    std::snprintf(line, sizeof line, "%-18s %-6s %10s %10s %8s %8s %9s\n", "stage (defaults)",
+                  "tree", "still ms", "moving ms", "x phong", "x phong", "error %");
+    s << line;
+    std::snprintf(line, sizeof line, "%-18s %-6s %10s %10s %8s %8s %9s\n", "", "", "", "", "still",
+                  "moving", "");
+    s << line;
+    auto ratioOf = [&](const Measured& m, bool moving) {
+        const Measured* base = phong.at(contextKey(m.config, m.scene));
+        return (moving ? m.moving : m.still).frame.median /
+               (moving ? base->moving : base->still).frame.median;
+    };
+    for (const Measured& m : results) {
+        const BenchConfig& c = m.config;
+        bool defaults = (c.group == "window" || (c.group == "baseline" && m.scene != "mirror")) &&
+                        c.width == 640 && c.height == 480;
+        if (!defaults) continue;
+        std::snprintf(line, sizeof line, "%-18s %-6s %10.2f %10.2f %8.2f %8.2f %9s\n",
+                      c.stage.c_str(), treeName(c.tree), m.still.frame.median,
+                      m.moving.frame.median, ratioOf(m, false), ratioOf(m, true),
+                      num(m.accuracy.errorPct, 3).c_str());
+        s << line;
+    }
+    for (const Measured& m : results) {
+        const BenchConfig& c = m.config;
+        bool hw1024 = c.series == "hardware/linear" && mapSize(c) == 1024 && c.width == 640;
+        bool mirror = c.series == "mirror/texture" && c.width == 640;
+        if (hw1024) {
+            double moving = ratioOf(m, true), still = ratioOf(m, false);
+            std::snprintf(line, sizeof line,
+                          "target hardware, 1024 map, light moving: %.2fx phong (<= %.2f: %s); "
+                          "still: %.2fx (<= %.2f: %s)\n",
+                          moving, kHardwareMovingTarget,
+                          moving <= kHardwareMovingTarget ? "met" : "MISSED", still,
+                          kHardwareStillTarget, still <= kHardwareStillTarget ? "met" : "MISSED");
+            s << line;
+        }
+        if (mirror) {
+            double still = ratioOf(m, false);
+            std::snprintf(line, sizeof line,
+                          "target mirror (texture, footprint-sized): %.2fx phong on the mirror "
+                          "scene (<= %.2f: %s)\n",
+                          still, kMirrorTarget, still <= kMirrorTarget ? "met" : "MISSED");
+            s << line;
+        }
+    }
+    report.summary = s.str();
+    return report;
+}
+
+}  // namespace sl

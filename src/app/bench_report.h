@@ -1,0 +1,32 @@
+// What `bench` writes: bench.csv and bench.json (one row per configuration and light mode), the
+// charts (error against time with each method's Pareto front, time against map size and against
+// window size) and a summary with the speed targets.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/bench_run.h"
+
+namespace sl {
+
+struct Measured {
+    BenchConfig config;
+    std::string scene;
+    PassTimes still, moving;
+    Accuracy accuracy;
+};
+
+// "tree/scene/WxH": configurations with the same key share a context and a phong baseline.
+std::string contextKey(const BenchConfig& c, const std::string& scene);
+
+struct BenchReport {
+    std::string summary;       // the table printed at the end
+    std::string chartProblem;  // "" or why the charts are missing
+};
+
+// Writes bench.csv, bench.json, the chart data and charts into `dir`.
+BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
+                             const std::vector<Measured>& results);
+
+}  // namespace sl

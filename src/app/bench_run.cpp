@@ -1,0 +1,128 @@
+#include "app/bench_run.h"
+
+#include <chrono>
+#include <glm/gtc/matrix_transform.hpp>
+#include <sstream>
+
+#include "metrics/shadow_metrics.h"
+
+namespace sl {
+
+std::string BenchConfig::setsText() const {
+    std::string text;
+    for (const auto& [name, value] : sets) text += (text.empty() ? "" : " ") + name + "=" + value;
+    return text.empty() ? "defaults" : text;
+}
+
+std::string BenchConfig::sceneName() const {
+    RenderRequest r;
+    r.stage = stage;
+    if (!scene.empty()) {
+        r.scene = scene;
+        r.sceneGiven = true;
+    }
+    return effectiveScene(r);
+}
+
+Renderer& BenchRig::prepare(const BenchConfig& c, const std::optional<glm::vec3>& light) {
+    RenderRequest request;
+    request.stage = c.stage;
+    request.tree = c.tree;
+    request.width = c.width;
+    request.height = c.height;
+    request.sets = c.sets;
+    request.scene = c.sceneName();
+    request.sceneGiven = true;
+    validateRequest(request);
+    std::string scene = request.scene;
+    std::ostringstream key;
+    key << static_cast<int>(c.tree) << "/" << scene << "/" << c.width << "x" << c.height;
+    if (key.str() != key_) {  // a new context: drop the renderer (and its GL objects) first
+        renderer_.reset();
+        context_.reset();
+        context_ = createHeadlessContext(backend_, c.tree, c.width, c.height);
+        renderer_ = makeRenderer(request);
+        sceneLight_ = renderer_->lightPosition;
+        key_ = key.str();
+    }
+    renderer_->selectStage(c.stage);
+    renderer_->params() = ParamSet(renderer_->stage().params);  // defaults, then the config's
+    for (const auto& [name, value] : c.sets) renderer_->params().set(name, value);
+    renderer_->lightPosition = light ? *light : sceneLight_;
+    renderer_->allLit = false;
+    renderer_->view = ViewMode::Final;
+    return *renderer_;
+}
+
+PassTimes BenchRig::time(int warmup, int frames, bool movingLight) {
+    Renderer& r = *renderer_;
+    const glm::vec3 home = r.lightPosition;
+    const glm::vec3 target = r.scene().light.target;
+    // Two positions half a degree either side of home, around the vertical through the target:
+    // every frame differs from the one before, so the map is always stale.
+    auto lightFor = [&](int k) {
+        if (!movingLight) return home;
+        float angle = glm::radians(k % 2 ? 0.5f : -0.5f);
+        glm::mat4 turn = glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0, 1, 0));
+        return target + glm::vec3(turn * glm::vec4(home - target, 0.0f));
+    };
+    r.timePasses = true;
+    std::vector<double> frame, shadow, lit, mirror;
+    unsigned rendersBefore = 0;
+    for (int k = 0; k < warmup + frames; ++k) {
+        if (k == warmup) rendersBefore = r.stats.shadowMapRenders;
+        r.lightPosition = lightFor(k);
+        glFinish();
+        auto start = std::chrono::steady_clock::now();
+        r.render(context_->framebuffer(), context_->width(), context_->height());
+        glFinish();
+        double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        if (k < warmup) continue;
+        frame.push_back(ms);
+        shadow.push_back(r.stats.shadowMs);
+        lit.push_back(r.stats.litMs);
+        mirror.push_back(r.stats.mirrorMs);
+    }
+    r.timePasses = false;
+    r.lightPosition = home;
+    PassTimes t;
+    t.frame = summarize(frame);
+    t.shadow = summarize(shadow);
+    t.lit = summarize(lit);
+    t.mirror = summarize(mirror);
+    t.mapRenders = r.stats.shadowMapRenders - rendersBefore;
+    return t;
+}
+
+Accuracy BenchRig::accuracy() {
+    Renderer& r = *renderer_;
+    int w = context_->width(), h = context_->height();
+    std::ostringstream key;
+    key << key_ << "/" << r.lightPosition.x << "," << r.lightPosition.y << "," << r.lightPosition.z;
+    if (key.str() != referenceKey_) {
+        reference_ = traceReference(r.scene(), r.camera, r.lightPosition, w, h);
+        referenceKey_ = key.str();
+    }
+    Accuracy a;
+    if (r.stage().id == "mirror") return a;  // TODO(check): id image + PSNR against stencil
+    r.allLit = false;
+    r.render(context_->framebuffer(), w, h);
+    Image withShadows = context_->read();
+    r.allLit = true;
+    r.render(context_->framebuffer(), w, h);
+    Image allLit = context_->read();
+    r.allLit = false;
+    ShadowFigures f = shadowFigures(reference_, classifyShadowed(withShadows, allLit));
+    a.falseShadowPct = f.falseShadowPct;
+    a.falseLitPct = f.falseLitPct;
+    a.falseShadowBandPct = f.falseShadowBandPct;
+    a.falseLitBandPct = f.falseLitBandPct;
+    a.edgeMeanPx = f.edgeDefined ? f.edgeMeanPx : NAN;
+    a.edgeP95Px = f.edgeDefined ? f.edgeP95Px : NAN;
+    a.errorPct = 0.5 * (f.falseShadowPct + f.falseLitPct);
+    return a;
+}
+
+}  // namespace sl

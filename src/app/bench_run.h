@@ -1,0 +1,78 @@
+// The measuring engine shared by `bench` and `sweep`: one headless context and renderer per
+// (tree, scene, size), a configuration = stage + parameters, timed per pass and checked against
+// the reference ray tracer.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "metrics/timing.h"
+#include "platform/headless.h"
+#include "reference/raytracer.h"
+#include "render/request.h"
+
+namespace sl {
+
+// One thing to measure. `series` groups points that differ only along one axis (a chart line).
+struct BenchConfig {
+    std::string group;   // "map-size", "format", "mirror", "window", ...
+    std::string series;  // e.g. "hardware/nearest"
+    std::string stage;
+    std::string scene;  // "" = the stage's own default scene
+    GlslTree tree = GlslTree::Core;
+    std::vector<std::pair<std::string, std::string>> sets;
+    int width = 640, height = 480;
+    std::string setsText() const;
+    std::string sceneName() const;  // the scene actually rendered  // "map-size=512 filter=linear",
+                                    // "defaults" when empty
+};
+
+struct PassTimes {
+    TimeSummary frame, shadow, lit, mirror;
+    unsigned mapRenders = 0;  // shadow-map renders during the timed frames
+};
+
+// The accuracy figures of one render (GUIDE section 4). Non-applicable ones stay NaN.
+struct Accuracy {
+    double falseShadowPct = NAN, falseLitPct = NAN;
+    double falseShadowBandPct = NAN, falseLitBandPct = NAN;
+    double edgeMeanPx = NAN, edgeP95Px = NAN;
+    double mirrorIdPct = NAN, mirrorPsnrDb = NAN;
+    // One number for charts: shadow stages the balanced error (false shadow % + false lit %) / 2
+    // outside the edge band; the mirror 100 - id agreement %.
+    double errorPct = NAN;
+};
+
+// Holds a context and renderer for the current (backend, tree, scene, size) and rebuilds them only
+// when one of those changes, so a run compiles each stage's shaders once per context.
+class BenchRig {
+  public:
+    explicit BenchRig(Backend backend) : backend_(backend) {}
+    // Selects the stage and its parameters (defaults + sets) on a renderer for the config's
+    // tree, the stage's default scene and size. The light goes back to the scene's.
+    Renderer& prepare(const BenchConfig& c, const std::optional<glm::vec3>& light = std::nullopt);
+    HeadlessContext& context() { return *context_; }
+    Renderer& renderer() { return *renderer_; }
+
+    // `warmup` untimed frames, then `frames` timed ones (glFinish + steady clock). With
+    // `movingLight` the light steps around its target every frame, so each frame re-renders
+    // the shadow map; otherwise it stays put and a cached map costs nothing.
+    PassTimes time(int warmup, int frames, bool movingLight);
+    // Renders the current configuration with and without its shadow map and compares both with
+    // the reference (traced once per camera, light and size, then reused).
+    Accuracy accuracy();
+
+  private:
+    Backend backend_;
+    std::string key_;
+    std::unique_ptr<HeadlessContext> context_;
+    std::unique_ptr<Renderer> renderer_;
+    glm::vec3 sceneLight_{0};
+    std::string referenceKey_;
+    ReferenceImage reference_;
+};
+
+}  // namespace sl
