@@ -84,8 +84,11 @@ std::string runGnuplot(const std::string& dir, const std::string& scriptPath,
     while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
     int status = pclose(pipe);
     if (status != 0) {
-        auto eol = output.find('\n');
-        return "gnuplot failed: " + output.substr(0, eol);
+        std::string shown;  // gnuplot's message: the last non-empty lines, on one line
+        std::istringstream lines(output);
+        for (std::string l; std::getline(lines, l);)
+            if (!l.empty()) shown += (shown.empty() ? "" : " | ") + l;
+        return "gnuplot failed (" + scriptPath + "): " + shown.substr(0, 300);
     }
     return "";
 }

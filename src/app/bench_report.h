@@ -14,7 +14,12 @@ struct Measured {
     BenchConfig config;
     std::string scene;
     PassTimes still, moving;
+    PassTimes phongStill, phongMoving;  // phong measured in blocks alternating with this one
     Accuracy accuracy;
+    double ratio(bool movingLight) const {
+        return movingLight ? moving.frame.median / phongMoving.frame.median
+                           : still.frame.median / phongStill.frame.median;
+    }
 };
 
 // "tree/scene/WxH": configurations with the same key share a context and a phong baseline.

@@ -54,18 +54,46 @@ Renderer& BenchRig::prepare(const BenchConfig& c, const std::optional<glm::vec3>
     return *renderer_;
 }
 
-PassTimes BenchRig::time(int warmup, int frames, bool movingLight) {
+glm::vec3 steppedLight(const glm::vec3& home, const glm::vec3& target, int k) {
+    float angle = glm::radians(k % 2 ? 0.5f : -0.5f);
+    glm::mat4 turn = glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0, 1, 0));
+    return target + glm::vec3(turn * glm::vec4(home - target, 0.0f));
+}
+
+void PassSamples::append(const PassSamples& more) {
+    frame.insert(frame.end(), more.frame.begin(), more.frame.end());
+    shadow.insert(shadow.end(), more.shadow.begin(), more.shadow.end());
+    lit.insert(lit.end(), more.lit.begin(), more.lit.end());
+    mirror.insert(mirror.end(), more.mirror.begin(), more.mirror.end());
+    mapRenders += more.mapRenders;
+}
+
+PassTimes PassSamples::summary() const {
+    return {summarize(frame), summarize(shadow), summarize(lit), summarize(mirror), mapRenders};
+}
+
+BenchRig::Paired BenchRig::timeBesidePhong(const BenchConfig& c, int frames, int rounds,
+                                           bool movingLight) {
+    BenchConfig phong = c;
+    phong.stage = "phong";
+    phong.sets.clear();
+    phong.scene = c.sceneName();
+    PassSamples config, base;
+    for (int k = 0; k < rounds; ++k) {
+        int n = frames / rounds + (k < frames % rounds ? 1 : 0);
+        prepare(phong);
+        base.append(time(1, n, movingLight));
+        prepare(c);
+        config.append(time(1, n, movingLight));
+    }
+    return {config.summary(), base.summary()};
+}
+
+PassSamples BenchRig::time(int warmup, int frames, bool movingLight) {
     Renderer& r = *renderer_;
     const glm::vec3 home = r.lightPosition;
     const glm::vec3 target = r.scene().light.target;
-    // Two positions half a degree either side of home, around the vertical through the target:
-    // every frame differs from the one before, so the map is always stale.
-    auto lightFor = [&](int k) {
-        if (!movingLight) return home;
-        float angle = glm::radians(k % 2 ? 0.5f : -0.5f);
-        glm::mat4 turn = glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0, 1, 0));
-        return target + glm::vec3(turn * glm::vec4(home - target, 0.0f));
-    };
+    auto lightFor = [&](int k) { return movingLight ? steppedLight(home, target, k) : home; };
     r.timePasses = true;
     std::vector<double> frame, shadow, lit, mirror;
     unsigned rendersBefore = 0;
@@ -87,13 +115,7 @@ PassTimes BenchRig::time(int warmup, int frames, bool movingLight) {
     }
     r.timePasses = false;
     r.lightPosition = home;
-    PassTimes t;
-    t.frame = summarize(frame);
-    t.shadow = summarize(shadow);
-    t.lit = summarize(lit);
-    t.mirror = summarize(mirror);
-    t.mapRenders = r.stats.shadowMapRenders - rendersBefore;
-    return t;
+    return {frame, shadow, lit, mirror, r.stats.shadowMapRenders - rendersBefore};
 }
 
 Accuracy BenchRig::accuracy() {

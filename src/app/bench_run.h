@@ -16,6 +16,10 @@
 
 namespace sl {
 
+// The light of frame k when it moves every frame: half a degree either side of `home` around the
+// vertical through `target`, so each frame differs from the last and the map is always stale.
+glm::vec3 steppedLight(const glm::vec3& home, const glm::vec3& target, int k);
+
 // One thing to measure. `series` groups points that differ only along one axis (a chart line).
 struct BenchConfig {
     std::string group;   // "map-size", "format", "mirror", "window", ...
@@ -33,6 +37,14 @@ struct BenchConfig {
 struct PassTimes {
     TimeSummary frame, shadow, lit, mirror;
     unsigned mapRenders = 0;  // shadow-map renders during the timed frames
+};
+
+// Raw per-frame times, appended over several rounds and summarised at the end.
+struct PassSamples {
+    std::vector<double> frame, shadow, lit, mirror;
+    unsigned mapRenders = 0;
+    void append(const PassSamples& more);
+    PassTimes summary() const;
 };
 
 // The accuracy figures of one render (GUIDE section 4). Non-applicable ones stay NaN.
@@ -60,7 +72,16 @@ class BenchRig {
     // `warmup` untimed frames, then `frames` timed ones (glFinish + steady clock). With
     // `movingLight` the light steps around its target every frame, so each frame re-renders
     // the shadow map; otherwise it stays put and a cached map costs nothing.
-    PassTimes time(int warmup, int frames, bool movingLight);
+    PassSamples time(int warmup, int frames, bool movingLight);
+
+    // The configuration and phong (same context, scene and light) measured in alternating
+    // blocks, `rounds` of each, so drift on a shared machine hits both alike: the ratio of the
+    // two medians is the figure that matters. Each block starts with one untimed frame (a stage
+    // switch re-creates its map).
+    struct Paired {
+        PassTimes config, phong;
+    };
+    Paired timeBesidePhong(const BenchConfig& c, int frames, int rounds, bool movingLight);
     // Renders the current configuration with and without its shadow map and compares both with
     // the reference (traced once per camera, light and size, then reused).
     Accuracy accuracy();

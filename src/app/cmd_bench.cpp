@@ -100,6 +100,7 @@ int runBench(const BenchArgs& a) {
     Backend backend = toBackend(a.backend);
     int frames = a.frames > 0 ? a.frames : a.quick ? 3 : 20;
     int warmup = a.warmup > 0 ? a.warmup : a.quick ? 1 : 3;
+    int rounds = std::min(frames, a.quick ? 1 : 4);
     makeOutputDir(a.out);
 
     // Phong at every (tree, scene, size) a configuration uses, measured right before it.
@@ -126,19 +127,30 @@ int runBench(const BenchArgs& a) {
     bool tty = isatty(STDERR_FILENO);
     for (std::size_t k = 0; k < configs.size(); ++k) {
         const BenchConfig& c = configs[k];
-        Measured m{c, c.sceneName(), {}, {}, {}};
-        rig.prepare(c);
+        Measured m{c, c.sceneName(), {}, {}, {}, {}, {}};
+        if (c.group == "baseline") {  // phong on its own: its ratio is 1 by definition
+            rig.prepare(c);
+            m.still = m.phongStill = rig.time(warmup, frames, false).summary();
+            m.moving = m.phongMoving = rig.time(warmup, frames, true).summary();
+        } else {
+            auto still = rig.timeBesidePhong(c, frames, rounds, false);
+            auto moving = rig.timeBesidePhong(c, frames, rounds, true);
+            m.still = still.config;
+            m.phongStill = still.phong;
+            m.moving = moving.config;
+            m.phongMoving = moving.phong;
+        }
         if (machine.empty()) machine = machineLine();
-        m.still = rig.time(warmup, frames, false);
-        m.moving = rig.time(warmup, frames, true);
+        rig.prepare(c);
         m.accuracy = rig.accuracy();
         results.push_back(m);
         std::fprintf(stderr,
-                     "%s[%zu/%zu] %-8s %-22s %-7s %4dx%-4d %-28s still %7.2f ms  moving %7.2f ms  "
+                     "%s[%zu/%zu] %-8s %-22s %-7s %4dx%-4d %-28s still %7.2f ms %5.2fx  moving "
+                     "%7.2f ms %5.2fx  "
                      "error %6s %%%s",
                      tty ? "\r" : "", k + 1, configs.size(), c.group.c_str(), c.series.c_str(),
                      treeName(c.tree), c.width, c.height, c.setsText().c_str(),
-                     m.still.frame.median, m.moving.frame.median,
+                     m.still.frame.median, m.ratio(false), m.moving.frame.median, m.ratio(true),
                      num(m.accuracy.errorPct, 3).c_str(), tty ? "\033[K" : "\n");
     }
     if (tty) std::fprintf(stderr, "\n");

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "app/bench_run.h"
 #include "app/commands.h"
 
 namespace sl {
@@ -14,6 +15,7 @@ struct RenderArgs {
     std::string out;
     bool explain = false;
     int repeat = 10;
+    bool moveLight = false;
 };
 
 int renderOnce(const RenderArgs& a) {
@@ -27,11 +29,17 @@ int renderOnce(const RenderArgs& a) {
     renderer->timePasses = true;
     // The first frame compiles shaders and renders the map; later frames show the steady cost.
     std::vector<double> times;
+    const glm::vec3 home = renderer->lightPosition;
     for (int k = 0; k <= a.repeat; ++k) {
+        if (a.moveLight)  // the last frame, the one saved, is lit from the requested light
+            renderer->lightPosition =
+                k == a.repeat ? home : steppedLight(home, renderer->scene().light.target, k);
         auto start = std::chrono::steady_clock::now();
         renderer->render(context->framebuffer(), request.width, request.height);
         glFinish();
-        times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        times.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
     }
     double first = times.front();
     std::vector<double> steady(times.begin() + 1, times.end());
@@ -58,6 +66,9 @@ Command addRenderCommand(CLI::App& app) {
     addCommonOptions(cmd, args->common);
     cmd->add_option("--out", args->out, "output PNG file");
     cmd->add_flag("--explain", args->explain, "print the matrices and choices used");
+    cmd->add_flag(
+        "--move-light", args->moveLight,
+        "step the light by half a degree every frame (the map is re-rendered each frame)");
     cmd->add_option("--repeat", args->repeat, "frames timed after the first (median reported)")
         ->check(CLI::Range(0, 1000));
     return {cmd, [args] { return guarded([&] { return renderOnce(*args); }); }};

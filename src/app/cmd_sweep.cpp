@@ -132,7 +132,7 @@ int runSweep(const SweepArgs& a) {
     breaks.columns = {"axis",       "stage",          "tree",        "threshold_pct",
                       "best_value", "best_error_pct", "works",       "works_from",
                       "works_to",   "breaks_before",  "breaks_after"};
-    std::vector<Series> chart;
+    std::vector<Series> chart, edges;
     bool tty = isatty(STDERR_FILENO);
     std::size_t done = 0, total = stages.size() * values.size();
     std::string machine;
@@ -148,6 +148,7 @@ int runSweep(const SweepArgs& a) {
             stage + (c.tree == GlslTree::Legacy && tree == GlslTree::Core ? " (legacy)" : ""),
             {},
             {}};
+        Series edge{line.title, {}, {}};
         for (double v : values) {
             BenchConfig at = c;
             std::optional<glm::vec3> light;
@@ -165,6 +166,8 @@ int runSweep(const SweepArgs& a) {
                         num(acc.edgeMeanPx), num(acc.edgeP95Px), num(acc.errorPct)});
             line.xs.push_back(v);
             line.ys.push_back(acc.errorPct);
+            edge.xs.push_back(v);
+            edge.ys.push_back(acc.edgeP95Px);
             if (machine.empty()) machine = machineLine();
             ++done;
             std::fprintf(stderr, "%s[%zu/%zu] %-9s %s=%-8s false shadow %6s %%  false lit %6s %%%s",
@@ -177,6 +180,7 @@ int runSweep(const SweepArgs& a) {
                     num(r.bestError), r.works ? "yes" : "no", num(r.from, 8), num(r.to, 8),
                     num(r.breaksBefore, 8), num(r.breaksAfter, 8)});
         chart.push_back(line);
+        edges.push_back(edge);
     }
     if (tty) std::fprintf(stderr, "\n");
 
@@ -184,25 +188,34 @@ int runSweep(const SweepArgs& a) {
     for (const auto& [path, text] :
          {std::pair<std::string, std::string>{base + ".csv", points.csv()},
           {base + "-breaks.csv", breaks.csv()},
-          {base + ".dat", gnuplotBlocks(chart)}}) {
+          {base + ".dat", gnuplotBlocks(chart)},
+          {base + "-edge.dat", gnuplotBlocks(edges)}}) {
         std::string err = writeTextFile(path, text);
         if (!err.empty()) throw UsageError("--out: " + err);
     }
     std::string name = "sweep-" + axis.name;
     std::ostringstream g;
+    // Two panels: the balanced error (acne and missing shadows), and the 95th-percentile edge
+    // error, where shadows that slide off their casters (too much margin) show first.
     g << "# Regenerate: gnuplot " << name << ".gp\n"
-      << "set terminal pngcairo size 960,640 font 'sans,10'\nset output '" << name << ".png.tmp'\n"
-      << "set key outside right top\nset grid\n"
+      << "set terminal pngcairo size 960,900 font 'sans,10'\nset output '" << name << ".png.tmp'\n"
+      << "set key outside right top\nset grid\nset multiplot layout 2,1\n"
       << "set title \"Error along " << axis.name << " (" << sized.width << "x" << sized.height
       << "), threshold " << a.threshold << " %\\n"
       << machine << "\"\n"
-      << "set xlabel '" << axis.unit
-      << "'\nset ylabel 'balanced error % (false shadow + false lit) / 2'\n"
+      << "set xlabel '" << axis.unit << "'\n"
       << (axis.logX ? "set logscale x\n" : "")
-      << (axis.name == "elevation" ? "set xrange [*:*] reverse\n" : "") << "plot for [i=0:*] '"
-      << name << ".dat' index i using 1:2 with linespoints pt 7 title columnheader(1), \\\n"
+      << (axis.name == "elevation" ? "set xrange [*:*] reverse\n" : "")
+      << "set logscale y\nset yrange [0.01:100]\nshown(y) = y < 0.01 ? 0.01 : y\n"
+      << "set ylabel 'balanced error %, (false shadow + false lit) / 2 (0 drawn at 0.01)'\n"
+      << "plot for [i=0:*] '" << name << ".dat' index i using 1:(shown($2)) with linespoints pt 7 "
+      << "title columnheader(1), \\\n"
       << "     " << a.threshold << " with lines dt 2 lc rgb 'black' title 'threshold'\n"
-      << "set output\nsystem('mv " << name << ".png.tmp " << name << ".png')\n";
+      << "unset logscale y\nset yrange [0:*]\nset title 'Shadow edge error, 95th percentile'\n"
+      << "set ylabel 'edge error p95, pixels'\n"
+      << "plot for [i=0:*] '" << name << "-edge.dat' index i using 1:2 with linespoints pt 7 "
+      << "title columnheader(1)\n"
+      << "unset multiplot\nset output\nsystem('mv " << name << ".png.tmp " << name << ".png')\n";
     std::string problem = runGnuplot(a.out, base + ".gp", g.str());
 
     // The verdict per stage, readable.

@@ -1,0 +1,16 @@
+# `bench` and `sweep` on a small setting: they run, and their CSV has every column filled.
+# (Speed targets are read from a full `shadowlab bench`, never asserted in a test.)
+set(SL_BENCH_DIR ${CMAKE_BINARY_DIR}/bench-ci)
+set(SL_CHECK_CSV ${CMAKE_CURRENT_SOURCE_DIR}/bench/check_csv.py)
+add_test(NAME bench_quick
+         COMMAND sh -c "$<TARGET_FILE:shadowlab> bench --quick --frames 2 --out ${SL_BENCH_DIR} && python3 ${SL_CHECK_CSV} ${SL_BENCH_DIR}/bench.csv 60 frame_ms frame_iqr_ms shadow_ms lit_ms mirror_ms ratio_to_phong error_pct && test -s ${SL_BENCH_DIR}/bench.json && test -s ${SL_BENCH_DIR}/error-vs-time.png")
+set_tests_properties(bench_quick PROPERTIES LABELS bench TIMEOUT 300)
+foreach(axis elevation margin offset near-far map-size)
+  add_test(NAME sweep_${axis}
+           COMMAND sh -c "$<TARGET_FILE:shadowlab> sweep ${axis} --quick --size 160x120 --out ${SL_BENCH_DIR} && python3 ${SL_CHECK_CSV} ${SL_BENCH_DIR}/sweep-${axis}.csv 8 value error_pct false_shadow_pct false_lit_pct && python3 ${SL_CHECK_CSV} ${SL_BENCH_DIR}/sweep-${axis}-breaks.csv 2 best_value best_error_pct")
+  set_tests_properties(sweep_${axis} PROPERTIES LABELS bench TIMEOUT 300)
+endforeach()
+# A misspelt axis: exit 2 and the closest axis suggested.
+add_test(NAME sweep_unknown_axis
+         COMMAND sh -c "$<TARGET_FILE:shadowlab> sweep elevaton --out ${SL_BENCH_DIR} 2>&1; test $? -eq 2" )
+set_tests_properties(sweep_unknown_axis PROPERTIES LABELS bench PASS_REGULAR_EXPRESSION "did you mean 'elevation'")
