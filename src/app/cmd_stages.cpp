@@ -28,13 +28,10 @@ int listStages(bool json) {
         nlohmann::json out = nlohmann::json::array();
         int key = 0;
         for (const auto& s : stageRegistry()) {
-            nlohmann::json j{{"id", s.id},
-                             {"key", key++},
-                             {"title", s.title},
-                             {"lecture", s.lecture},
+            nlohmann::json j{{"id", s.id},           {"key", key++},
+                             {"title", s.title},     {"lecture", s.lecture},
                              {"expectation", s.expectation},
-                             {"trees", s.legacyOnly ? nlohmann::json{"legacy"}
-                                                    : nlohmann::json{"core", "legacy"}}};
+                             {"trees", s.legacyOnly ? nlohmann::json{"legacy"} : nlohmann::json{"core", "legacy"}}};
             j["parameters"] = nlohmann::json::array();
             for (const auto& p : s.params) j["parameters"].push_back(paramJson(p));
             j["views"] = nlohmann::json::array();
@@ -46,12 +43,11 @@ int listStages(bool json) {
     }
     int key = 0;
     for (const auto& s : stageRegistry()) {
-        std::cout << key++ << "  " << s.id << "  " << s.title
-                  << (s.legacyOnly ? "  [legacy only]" : "") << "\n     " << s.lecture
-                  << "\n     expected: " << s.expectation << "\n";
+        std::cout << key++ << "  " << s.id << "  " << s.title << (s.legacyOnly ? "  [legacy only]" : "")
+                  << "\n     " << s.lecture << "\n     expected: " << s.expectation << "\n";
         for (const auto& p : s.params)
-            std::cout << "     --set " << p.name << "=" << p.defaultText() << "   ("
-                      << p.rangeText() << ") " << p.help << "\n";
+            std::cout << "     --set " << p.name << "=" << p.defaultText() << "   (" << p.rangeText()
+                      << ") " << p.help << "\n";
     }
     return kOk;
 }

@@ -25,8 +25,7 @@ glm::vec3 parseVec3(const std::string& option, const std::string& text) {
     while (std::getline(in, p, ',')) parts.push_back(p);
     if (parts.size() != 3 || text.back() == ',')
         throw UsageError(option + ": '" + text + "' must be three numbers X,Y,Z");
-    return {parseFloat(option, parts[0]), parseFloat(option, parts[1]),
-            parseFloat(option, parts[2])};
+    return {parseFloat(option, parts[0]), parseFloat(option, parts[1]), parseFloat(option, parts[2])};
 }
 
 }  // namespace
@@ -85,8 +84,7 @@ RenderRequest toRequest(const CommonOptions& o) {
     if (!o.light.empty()) r.light = parseVec3("--light", o.light);
     if (!o.fovy.empty()) {
         float f = parseFloat("--fovy", o.fovy);
-        if (f < 1 || f > 170)
-            throw UsageError("--fovy: " + o.fovy + " must be between 1 and 170 degrees");
+        if (f < 1 || f > 170) throw UsageError("--fovy: " + o.fovy + " must be between 1 and 170 degrees");
         r.fovy = f;
     }
     if (!parseView(o.view, r.view)) {
