@@ -18,6 +18,7 @@ struct BenchArgs {
     std::string glsl = "core";
     std::string backend = "auto";
     bool quick = false;
+    std::string only;            // keep configurations whose series contains this
     int frames = 0, warmup = 0;  // 0 = the default for the mode
 };
 
@@ -73,7 +74,9 @@ std::vector<BenchConfig> plan(bool quick, GlslTree tree) {
                 {{"depth-format", f}, {"map-size", m}});
         for (const char* s : {"rgb8", "depth16", "depth24", "depth32f"})
             add("format", std::string("margin/") + s, "margin", {{"storage", s}, {"map-size", m}});
-        add("format", "hardware/32f", "hardware", {{"depth-format", "32f"}, {"map-size", m}});
+        for (const char* f : {"16", "32f"})
+            add("format", std::string("hardware/") + f, "hardware",
+                {{"depth-format", f}, {"map-size", m}});
         add("format", "hardware/cull-front", "hardware",
             {{"shadow-cull", "front"}, {"map-size", m}});
     }
@@ -107,6 +110,7 @@ int runBench(const BenchArgs& a) {
     std::vector<BenchConfig> configs;
     std::map<std::string, bool> baselined;
     for (BenchConfig& c : plan(a.quick, tree)) {
+        if (c.series.find(a.only) == std::string::npos) continue;
         std::string key = contextKey(c, c.sceneName());
         if (!baselined[key]) {
             BenchConfig base = c;
@@ -175,6 +179,8 @@ Command addBenchCommand(CLI::App& app) {
         ->check(CLI::Range(1, 10000));
     cmd->add_option("--warmup", args->warmup, "untimed frames first (default 3; quick 1)")
         ->check(CLI::Range(1, 1000));
+    cmd->add_option("--only", args->only,
+                    "measure only series containing this text, e.g. hardware");
     cmd->add_option("--glsl", args->glsl, "shader tree: core or legacy (fixed always runs legacy)");
     cmd->add_option("--backend", args->backend, "headless backend: auto|osmesa|egl");
     return {cmd, [args] { return guarded([&] { return runBench(*args); }); }};

@@ -36,7 +36,8 @@ StageInfo hardwareStage() {
                                          "linear: 2x2 percentage-closer filtering; nearest: one compare"));
     s.params.push_back(ParamSpec::number("offset-factor", 2.0, 0.0, 40.0, 1.0, "glPolygonOffset factor (slope)"));
     s.params.push_back(ParamSpec::number("offset-units", 4.0, 0.0, 100.0, 1.0, "glPolygonOffset units"));
-    s.params.push_back(ParamSpec::choice("depth-format", {"24", "32f"}, "depth texture format"));
+    s.params.push_back(ParamSpec::choice("depth-format", {"24", "32f", "16"},
+                                         "depth texture format (bits): 16 halves the memory the map re-render writes"));
     s.params.push_back(ParamSpec::choice("shadow-cull", {"none", "front"},
                                          "front: draw only casters' back faces into the map"));
     s.expectation = "small errors on both sides: no acne, shadows attached, soft 1-texel edges";
