@@ -1,12 +1,147 @@
-// EGL backend placeholder until the surfaceless backend lands (issue 7).
-#include <stdexcept>
-
+// EGL without a window: Mesa's surfaceless platform (EGL_MESA_platform_surfaceless) on the
+// software device, desktop GL, rendering into a framebuffer object we own. This is the headless
+// path for Mesa 25.1 and later, which no longer ship OSMesa.
 #include "platform/headless.h"
+
+#ifdef SHADOWLAB_HAVE_EGL
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "gl/debug.h"
+#include "gl/handles.h"
+#include "gl/loader.h"
+
+namespace sl {
+
+namespace {
+
+std::string eglFailure(const char* what) {
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04X", eglGetError());
+    return std::string("EGL: ") + what + " failed (error " + code + ")";
+}
+
+// The display is opened and initialised once per process and never terminated: Mesa's EGL does
+// not survive eglTerminate followed by a second eglInitialize in one process cleanly, and tests
+// create many contexts.
+EGLDisplay surfacelessDisplay() {
+    static EGLDisplay display = [] {
+        auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+            eglGetProcAddress("eglGetPlatformDisplayEXT"));
+        if (!getPlatformDisplay)
+            throw std::runtime_error(
+                "EGL: eglGetPlatformDisplayEXT is missing (no EGL_EXT_platform_base)");
+        EGLDisplay d =
+            getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (d == EGL_NO_DISPLAY) throw std::runtime_error(eglFailure("the surfaceless display"));
+        EGLint major = 0, minor = 0;
+        if (!eglInitialize(d, &major, &minor))
+            throw std::runtime_error(eglFailure("eglInitialize"));
+        return d;
+    }();
+    return display;
+}
+
+class EglContextImpl : public HeadlessContext {
+  public:
+    EglContextImpl(EGLDisplay display, EGLContext context, int w, int h)
+        : display_(display), context_(context) {
+        width_ = w;
+        height_ = h;
+        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
+            std::string why = eglFailure("eglMakeCurrent without a surface");
+            eglDestroyContext(display_, context_);
+            throw std::runtime_error(why);
+        }
+    }
+    // Called once the GL entry points are loaded: the colour and depth/stencil target.
+    void createTarget() {
+        colour_ = Renderbuffer::create();
+        glBindRenderbuffer(GL_RENDERBUFFER, colour_.id());
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width_, height_);
+        depthStencil_ = Renderbuffer::create();
+        glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_.id());
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width_, height_);
+        glBindRenderbuffer(GL_RENDERBUFFER, 0);
+        fbo_ = Framebuffer::create();
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  colour_.id());
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                  depthStencil_.id());
+        std::string incomplete = checkFramebufferComplete("EGL target framebuffer");
+        if (!incomplete.empty()) throw std::runtime_error(incomplete);
+    }
+    ~EglContextImpl() override {
+        // GL objects go while their context is still current; then the context itself.
+        fbo_.reset();
+        colour_.reset();
+        depthStencil_.reset();
+        eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        eglDestroyContext(display_, context_);
+    }
+    GLuint framebuffer() const override { return fbo_.id(); }
+    const char* backendName() const override { return "egl"; }
+
+  private:
+    EGLDisplay display_;
+    EGLContext context_;
+    Renderbuffer colour_, depthStencil_;
+    Framebuffer fbo_;
+};
+
+}  // namespace
+
+std::unique_ptr<HeadlessContext> createEglContext(GlslTree tree, int width, int height) {
+    EGLDisplay display = surfacelessDisplay();
+    if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error(eglFailure("eglBindAPI(OpenGL)"));
+    // No surface will be made, so any surface type will do (a zero mask matches every config).
+    const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0,
+                                    EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint count = 0;
+    if (!eglChooseConfig(display, configAttribs, &config, 1, &count) || count < 1)
+        throw std::runtime_error(eglFailure("eglChooseConfig for desktop OpenGL"));
+    bool core = tree == GlslTree::Core;
+    const EGLint coreAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                  3,
+                                  EGL_CONTEXT_MINOR_VERSION,
+                                  3,
+                                  EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                  EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                  EGL_NONE};
+    const EGLint compatAttribs[] = {EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                    EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, EGL_NONE};
+    EGLContext context =
+        eglCreateContext(display, config, EGL_NO_CONTEXT, core ? coreAttribs : compatAttribs);
+    if (context == EGL_NO_CONTEXT)
+        throw std::runtime_error(
+            eglFailure(core ? "a core 3.3 context" : "a compatibility context"));
+    auto result = std::make_unique<EglContextImpl>(display, context, width, height);
+    if (!loadGl(reinterpret_cast<GlProcLoader>(&eglGetProcAddress)))
+        throw std::runtime_error("could not load GL entry points through eglGetProcAddress");
+    result->createTarget();
+    return result;
+}
+
+}  // namespace sl
+
+#else
+
+#include <stdexcept>
 
 namespace sl {
 
 std::unique_ptr<HeadlessContext> createEglContext(GlslTree, int, int) {
-    throw std::runtime_error("the EGL backend is not built yet; use --backend osmesa");
+    throw std::runtime_error(
+        "this build has no EGL (libegl-dev was not found at configure time); "
+        "use --backend osmesa");
 }
 
 }  // namespace sl
+
+#endif

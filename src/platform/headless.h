@@ -27,6 +27,8 @@ protected:
     int width_ = 0, height_ = 0;
 };
 
+// Auto picks the backend named by the environment variable SHADOWLAB_BACKEND (osmesa|egl) when
+// set, else OSMesa when this build has it and it works, else EGL.
 // Creates a context of the profile the tree needs (core 3.3+ or compatibility) and a
 // width x height RGBA8 + depth24/stencil8 target; GL entry points are loaded. Throws
 // std::runtime_error with a one-line reason on failure.

@@ -1,6 +1,8 @@
 // OSMesa: Mesa renders into a buffer in our memory. glad's header comes first and stands in
 // for GL/gl.h, which GL/osmesa.h would otherwise pull in.
 #include "platform/headless.h"
+
+#ifdef SHADOWLAB_HAVE_OSMESA
 #ifndef GLAPIENTRY
 #define GLAPIENTRY APIENTRY
 #endif
@@ -58,3 +60,20 @@ std::unique_ptr<HeadlessContext> createOSMesaContext(GlslTree tree, int width, i
 }
 
 }  // namespace sl
+
+#else
+
+#include <stdexcept>
+
+namespace sl {
+
+bool osmesaAvailable() { return false; }
+
+std::unique_ptr<HeadlessContext> createOSMesaContext(GlslTree, int, int) {
+    throw std::runtime_error("this build has no OSMesa (configured with SHADOWLAB_WITH_OSMESA=OFF); "
+                             "use --backend egl");
+}
+
+}  // namespace sl
+
+#endif
