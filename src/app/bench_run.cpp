@@ -118,25 +118,57 @@ PassSamples BenchRig::time(int warmup, int frames, bool movingLight) {
     return {frame, shadow, lit, mirror, r.stats.shadowMapRenders - rendersBefore};
 }
 
-Accuracy BenchRig::accuracy() {
+Renderer& BenchRig::prepare(const RenderRequest& request) {
+    validateRequest(request);
+    RenderRequest r = request;
+    r.scene = effectiveScene(request);
+    r.sceneGiven = true;
+    // The camera is part of the key: spheres are tessellated for the camera they are seen from.
+    auto vec = [](const std::optional<glm::vec3>& v) {
+        std::ostringstream t;
+        if (v) t << v->x << "," << v->y << "," << v->z;
+        return t.str();
+    };
+    std::ostringstream key;
+    key << static_cast<int>(r.tree) << "/" << r.scene << "/" << r.width << "x" << r.height
+        << "/overlay=" << r.overlay << "/eye=" << vec(r.eye) << "/at=" << vec(r.at)
+        << "/fovy=" << (r.fovy ? std::to_string(*r.fovy) : "");
+    if (key.str() != key_) {
+        reset();
+        context_ = createHeadlessContext(backend_, r.tree, r.width, r.height);
+        renderer_ = makeRenderer(r);
+        sceneLight_ = renderer_->scene().light.position;
+        key_ = key.str();
+    }
+    renderer_->selectStage(r.stage);
+    renderer_->params() = ParamSet(renderer_->stage().params);
+    renderer_->lightPosition = sceneLight_;
+    renderer_->allLit = false;
+    applyRequest(*renderer_, r);
+    return *renderer_;
+}
+
+void BenchRig::reset() {
+    renderer_.reset();  // its GL objects go before the context
+    context_.reset();
+    key_.clear();
+    referenceKey_.clear();
+}
+
+const ReferenceImage& BenchRig::reference() {
     Renderer& r = *renderer_;
-    int w = context_->width(), h = context_->height();
     std::ostringstream key;
     key << key_ << "/" << r.lightPosition.x << "," << r.lightPosition.y << "," << r.lightPosition.z;
     if (key.str() != referenceKey_) {
-        reference_ = traceReference(r.scene(), r.camera, r.lightPosition, w, h);
+        reference_ = traceReference(r.scene(), r.camera, r.lightPosition, context_->width(),
+                                    context_->height());
         referenceKey_ = key.str();
     }
+    return reference_;
+}
+
+Accuracy shadowAccuracy(const ShadowFigures& f) {
     Accuracy a;
-    if (r.stage().id == "mirror") return a;  // TODO(check): id image + PSNR against stencil
-    r.allLit = false;
-    r.render(context_->framebuffer(), w, h);
-    Image withShadows = context_->read();
-    r.allLit = true;
-    r.render(context_->framebuffer(), w, h);
-    Image allLit = context_->read();
-    r.allLit = false;
-    ShadowFigures f = shadowFigures(reference_, classifyShadowed(withShadows, allLit));
     a.falseShadowPct = f.falseShadowPct;
     a.falseLitPct = f.falseLitPct;
     a.falseShadowBandPct = f.falseShadowBandPct;
@@ -145,6 +177,31 @@ Accuracy BenchRig::accuracy() {
     a.edgeP95Px = f.edgeDefined ? f.edgeP95Px : NAN;
     a.errorPct = 0.5 * (f.falseShadowPct + f.falseLitPct);
     return a;
+}
+
+Accuracy BenchRig::accuracy() {
+    Renderer& r = *renderer_;
+    reference();
+    Accuracy a;
+    if (r.stage().id == "mirror") return a;  // TODO(check): id image + PSNR against stencil
+    return shadowAccuracy(shadowEvidence().figures);
+}
+
+ShadowEvidence BenchRig::shadowEvidence() {
+    Renderer& r = *renderer_;
+    int w = context_->width(), h = context_->height();
+    const ReferenceImage& ref = reference();
+    ShadowEvidence e;
+    r.allLit = false;
+    r.render(context_->framebuffer(), w, h);
+    e.withShadows = context_->read();
+    r.allLit = true;
+    r.render(context_->framebuffer(), w, h);
+    e.allLit = context_->read();
+    r.allLit = false;
+    e.shadowed = classifyShadowed(e.withShadows, e.allLit);
+    e.figures = shadowFigures(ref, e.shadowed);
+    return e;
 }
 
 }  // namespace sl

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "metrics/shadow_metrics.h"
 #include "metrics/timing.h"
 #include "platform/headless.h"
 #include "reference/raytracer.h"
@@ -58,6 +59,16 @@ struct Accuracy {
     double errorPct = NAN;
 };
 
+// The Accuracy of a shadow stage from its figures (edge figures NaN when undefined).
+Accuracy shadowAccuracy(const ShadowFigures& f);
+
+// The two renders and the classification behind a shadow stage's figures (diff images use them).
+struct ShadowEvidence {
+    Image withShadows, allLit;
+    std::vector<std::uint8_t> shadowed;  // classifyShadowed(withShadows, allLit)
+    ShadowFigures figures;
+};
+
 // Holds a context and renderer for the current (backend, tree, scene, size) and rebuilds them only
 // when one of those changes, so a run compiles each stage's shaders once per context.
 class BenchRig {
@@ -66,6 +77,12 @@ class BenchRig {
     // Selects the stage and its parameters (defaults + sets) on a renderer for the config's
     // tree, the stage's default scene and size. The light goes back to the scene's.
     Renderer& prepare(const BenchConfig& c, const std::optional<glm::vec3>& light = std::nullopt);
+    // The same for a whole request (`check`): its student overlay and camera are part of the
+    // context key; parameters start from the defaults, then the request's camera, light, view
+    // and --set values apply.
+    Renderer& prepare(const RenderRequest& request);
+    // Drops the context and renderer, e.g. after a shader error left the GL state unknown.
+    void reset();
     HeadlessContext& context() { return *context_; }
     Renderer& renderer() { return *renderer_; }
 
@@ -85,6 +102,10 @@ class BenchRig {
     // Renders the current configuration with and without its shadow map and compares both with
     // the reference (traced once per camera, light and size, then reused).
     Accuracy accuracy();
+    // The reference for the current camera, light and size (traced once, then reused).
+    const ReferenceImage& reference();
+    // The shadow stages' half of accuracy(): both renders, the classification and the figures.
+    ShadowEvidence shadowEvidence();
 
   private:
     Backend backend_;

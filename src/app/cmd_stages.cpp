@@ -3,10 +3,30 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "stages/expectations.h"
 
 namespace sl {
 
 namespace {
+
+// The stage's lesson as `check` judges it: its defaults entry in src/stages/expectations.json
+// (the one source of truth; StageInfo::expectation is the short prose of the same lesson).
+const Expectation& defaultsEntry(const StageInfo& s) {
+    std::string tree = s.legacyOnly ? "legacy" : "core";
+    return *findExpectation(expectations(), s.id, s.defaultScene.empty() ? "slides" : s.defaultScene,
+                            tree, ParamSet(s.params))
+                .entry;
+}
+
+nlohmann::json expectedJson(const Expectation& e) {
+    nlohmann::json limits = nlohmann::json::object();
+    for (const Limit& l : e.limits) {
+        limits[l.figure] = nlohmann::json::object();
+        if (!std::isnan(l.min)) limits[l.figure]["min"] = l.min;
+        if (!std::isnan(l.max)) limits[l.figure]["max"] = l.max;
+    }
+    return {{"outcome", e.outcome}, {"why", e.why}, {"limits", limits}};
+}
 
 nlohmann::json paramJson(const ParamSpec& p) {
     nlohmann::json j{{"name", p.name}, {"help", p.help}};
@@ -32,6 +52,7 @@ int listStages(bool json) {
                              {"title", s.title},     {"lecture", s.lecture},
                              {"expectation", s.expectation},
                              {"trees", s.legacyOnly ? nlohmann::json{"legacy"} : nlohmann::json{"core", "legacy"}}};
+            j["expected"] = expectedJson(defaultsEntry(s));
             j["parameters"] = nlohmann::json::array();
             for (const auto& p : s.params) j["parameters"].push_back(paramJson(p));
             j["views"] = nlohmann::json::array();
@@ -45,6 +66,10 @@ int listStages(bool json) {
     for (const auto& s : stageRegistry()) {
         std::cout << key++ << "  " << s.id << "  " << s.title << (s.legacyOnly ? "  [legacy only]" : "")
                   << "\n     " << s.lecture << "\n     expected: " << s.expectation << "\n";
+        const Expectation& e = defaultsEntry(s);
+        std::string limits;
+        for (const Limit& l : e.limits) limits += (limits.empty() ? "" : ", ") + l.figure + " " + l.bound();
+        std::cout << "     check: " << e.outcome << " (" << limits << ")\n";
         for (const auto& p : s.params)
             std::cout << "     --set " << p.name << "=" << p.defaultText() << "   (" << p.rangeText()
                       << ") " << p.help << "\n";
@@ -58,7 +83,7 @@ Command addStagesCommand(CLI::App& app) {
     auto* cmd = app.add_subcommand("stages", "list stages with their parameters and defaults");
     auto json = std::make_shared<bool>(false);
     cmd->add_flag("--json", *json, "machine-readable output");
-    return {cmd, [json] { return listStages(*json); }};
+    return {cmd, [json] { return guarded([&] { return listStages(*json); }); }};
 }
 
 }  // namespace sl

@@ -19,6 +19,8 @@ Command addRenderCommand(CLI::App& app);
 Command addWindowCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addSweepCommand(CLI::App& app);
+Command addCheckCommand(CLI::App& app);
+Command addExampleCommand(CLI::App& app);
 
 // Runs `body`, turning the project's exceptions into the contract's exit codes and one-line
 // messages on stderr.

@@ -1,0 +1,161 @@
+#include "app/check_run.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "app/options.h"
+#include "metrics/shadow_metrics.h"
+
+namespace sl {
+
+namespace {
+
+std::string fixed(double v, int width, int decimals) {
+    char text[32];
+    if (std::isnan(v))
+        std::snprintf(text, sizeof text, "%*s", width, "-");
+    else
+        std::snprintf(text, sizeof text, "%*.*f", width, decimals, v);
+    return text;
+}
+
+std::string padded(const std::string& s, std::size_t width) {
+    return s.size() >= width ? s + " " : s + std::string(width - s.size(), ' ');
+}
+
+nlohmann::json vec(const glm::vec3& v) {
+    return {v.x, v.y, v.z};
+}
+
+nlohmann::json number(double v) {
+    return std::isnan(v) ? nlohmann::json() : nlohmann::json(v);
+}
+
+std::string firstLine(const std::string& text) {
+    std::string line = text.substr(0, text.find('\n'));
+    return line.empty() ? text : line;
+}
+
+}  // namespace
+
+std::map<std::string, double> CheckResult::figureMap() const {
+    return {{"false_shadow_pct", figures.falseShadowPct},
+            {"false_lit_pct", figures.falseLitPct},
+            {"false_shadow_band_pct", figures.falseShadowBandPct},
+            {"false_lit_band_pct", figures.falseLitBandPct},
+            {"edge_mean_px", figures.edgeMeanPx},
+            {"edge_p95_px", figures.edgeP95Px},
+            {"mirror_id_pct", figures.mirrorIdPct},
+            {"mirror_psnr_db", figures.mirrorPsnrDb}};
+}
+
+CheckResult runCheck(BenchRig& rig, const RenderRequest& request, const std::string& diffPath) {
+    if (request.view != ViewMode::Final)
+        throw UsageError("--view " + std::string(viewName(request.view)) +
+                         ": check judges the final picture; use --view final (or leave it out)");
+    auto start = std::chrono::steady_clock::now();
+    CheckResult r;
+    r.stage = request.stage;
+    r.tree = treeName(request.tree);
+    r.overlay = request.overlay;
+    r.width = request.width;
+    r.height = request.height;
+    Renderer& renderer = rig.prepare(request);
+    r.scene = renderer.scene().name;
+    r.parameters = renderer.params();
+    r.camera = renderer.camera;
+    r.light = renderer.lightPosition;
+    r.expectation = findExpectation(expectations(), r.stage, r.scene, r.tree, r.parameters);
+    try {
+        if (request.stage == "mirror") {
+            r.figures = rig.accuracy();
+            if (!diffPath.empty())
+                r.note = "no diff image: the mirror is judged by id agreement and PSNR";
+        } else {
+            ShadowEvidence e = rig.shadowEvidence();
+            r.figures = shadowAccuracy(e.figures);
+            r.evaluated = e.figures.evaluated;
+            r.truthLit = e.figures.truthLit;
+            r.truthShadow = e.figures.truthShadow;
+            if (!diffPath.empty()) {
+                std::string err =
+                    writePng(diffPath, diffImage(rig.reference(), e.shadowed, e.withShadows));
+                if (!err.empty()) throw UsageError("--diff: " + err);
+                r.diffFile = diffPath;
+            }
+        }
+    } catch (const ShaderError& e) {
+        std::cerr << "shadowlab: shader error: " << e.what()
+                  << (std::string(e.what()).back() == '\n' ? "" : "\n");
+        rig.reset();
+        r.error = true;
+        r.judgement = {Verdict::Fail, "shader error: " + firstLine(e.what())};
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return r;
+    }
+    if (!SL_CHECK_GL())
+        throw std::runtime_error("the check of stage " + r.stage +
+                                 " raised a GL error: " + lastGlError());
+    r.judgement = judge(*r.expectation.entry, r.figureMap());
+    if (!r.expectation.exact)
+        r.judgement.message += " [no entry for these settings: judged by the defaults' lesson]";
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+}
+
+std::string checkTableHeader() {
+    return "stage     tree    false-shadow %  false-lit %  band fs/fl %   edge mean/p95 px  "
+           "mirror id % / dB  verdict\n";
+}
+
+std::string checkTableLine(const CheckResult& r) {
+    const Accuracy& a = r.figures;
+    std::string line =
+        padded(r.stage, 10) + padded(r.tree, 7) + fixed(a.falseShadowPct, 9, 2) + "     " +
+        fixed(a.falseLitPct, 9, 2) + "    " + fixed(a.falseShadowBandPct, 6, 1) + "/" +
+        padded(fixed(a.falseLitBandPct, 5, 1), 6) + "  " + fixed(a.edgeMeanPx, 6, 2) + "/" +
+        padded(fixed(a.edgeP95Px, 5, 1), 8) + "  " + fixed(a.mirrorIdPct, 7, 2) + "/" +
+        padded(fixed(a.mirrorPsnrDb, 5, 1), 6) + "   " + padded(r.verdict(), 6) +
+        r.judgement.message;
+    return line + "\n";
+}
+
+nlohmann::json checkJson(const CheckResult& r) {
+    nlohmann::json params = nlohmann::json::object();
+    for (const ParamSpec& p : r.parameters.specs()) params[p.name] = r.parameters.text(p.name);
+    nlohmann::json figures = nlohmann::json::object();
+    for (const auto& [name, value] : r.figureMap()) figures[name] = number(value);
+    nlohmann::json expectation;
+    if (r.expectation.entry) {
+        const Expectation& e = *r.expectation.entry;
+        nlohmann::json limits = nlohmann::json::object();
+        for (const Limit& l : e.limits)
+            limits[l.figure] = {{"min", number(l.min)}, {"max", number(l.max)}};
+        expectation = {{"entry", e.label()},
+                       {"matched", r.expectation.exact ? "exact" : "defaults"},
+                       {"outcome", e.outcome},
+                       {"why", e.why},
+                       {"limits", limits}};
+    }
+    return {
+        {"stage", r.stage},
+        {"tree", r.tree},
+        {"scene", r.scene},
+        {"shaders", r.overlay.empty() ? nlohmann::json() : nlohmann::json(r.overlay)},
+        {"size", {r.width, r.height}},
+        {"parameters", params},
+        {"camera",
+         {{"eye", vec(r.camera.eye)}, {"at", vec(r.camera.at)}, {"fovy", r.camera.fovyDegrees}}},
+        {"light", vec(r.light)},
+        {"figures", figures},
+        {"pixels",
+         {{"evaluated", r.evaluated}, {"truth_lit", r.truthLit}, {"truth_shadow", r.truthShadow}}},
+        {"expectation", expectation},
+        {"verdict", r.verdict()},
+        {"message", r.judgement.message},
+        {"diff", r.diffFile.empty() ? nlohmann::json() : nlohmann::json(r.diffFile)},
+        {"seconds", r.seconds}};
+}
+
+}  // namespace sl

@@ -1,0 +1,46 @@
+// One check: a stage rendered at a request's settings, its figures measured against the
+// reference (through BenchRig, as bench and sweep measure them), and judged against the
+// stage's entry in src/stages/expectations.json. Shared by `check` and `example`.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "app/bench_run.h"
+#include "stages/expectations.h"
+
+namespace sl {
+
+struct CheckResult {
+    std::string stage, tree, scene, overlay;
+    int width = 0, height = 0;
+    ParamSet parameters;  // every parameter's value used
+    Camera camera;
+    glm::vec3 light{0};
+    Accuracy figures;
+    long evaluated = 0, truthLit = 0, truthShadow = 0;  // pixel counts behind the percentages
+    ExpectationMatch expectation;
+    Judgement judgement;
+    bool error = false;    // a shader did not build: judgement.message says why (exit 2)
+    std::string diffFile;  // the diff image written, or ""
+    std::string note;      // e.g. why no diff image was written
+    double seconds = 0;
+
+    std::string verdict() const { return error ? "ERROR" : verdictName(judgement.verdict); }
+    std::map<std::string, double> figureMap() const;
+};
+
+// Renders and judges `request` (its view must be final); writes the diff image to `diffPath`
+// when not empty (shadow stages only). A shader that does not build is caught: the result is an
+// ERROR with the compiler's first line, the full message goes to stderr and the rig is reset.
+// Other failures propagate (bad input: UsageError; GL: std::runtime_error).
+CheckResult runCheck(BenchRig& rig, const RenderRequest& request, const std::string& diffPath);
+
+// The fixed-width table a check prints: a header, then one line per result.
+std::string checkTableHeader();
+std::string checkTableLine(const CheckResult& r);
+
+// A result in the report (fields documented in docs/check.md).
+nlohmann::json checkJson(const CheckResult& r);
+
+}  // namespace sl

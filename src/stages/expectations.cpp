@@ -1,0 +1,231 @@
+#include "stages/expectations.h"
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "scene/scene_json.h"
+#include "stages/stage.h"
+
+namespace sl {
+
+namespace {
+
+using nlohmann::json;
+
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
+}
+
+std::string defaultSceneOf(const std::string& stage) {
+    const StageInfo* info = findStage(stage);
+    return info && !info->defaultScene.empty() ? info->defaultScene : "slides";
+}
+
+std::vector<std::string> treesOf(const StageInfo& info) {
+    if (info.legacyOnly) return {"legacy"};
+    return {"core", "legacy"};
+}
+
+bool coversTree(const Expectation& e, const std::string& tree) {
+    if (e.trees.empty()) return true;
+    for (const auto& t : e.trees)
+        if (t == tree) return true;
+    return false;
+}
+
+bool isDefaultsEntry(const Expectation& e) {
+    return e.scene.empty() && e.set.empty();
+}
+
+// The entry's settings applied to the stage's defaults; throws with `where` on a bad setting.
+ParamSet settingsOf(const Expectation& e, const std::string& where) {
+    const StageInfo* info = findStage(e.stage);
+    ParamSet values(info->params);
+    for (const auto& [name, value] : e.set) {
+        std::string err = values.set(name, value);
+        if (!err.empty())
+            throw ExpectationError(where + ": set " + name + "=" + value + ": " + err);
+    }
+    return values;
+}
+
+bool sameValues(const ParamSet& a, const ParamSet& b) {
+    for (const ParamSpec& p : a.specs())
+        if (a.text(p.name) != b.text(p.name)) return false;
+    return true;
+}
+
+Expectation parseEntry(const json& j, const std::string& where) {
+    auto fail = [&](const std::string& what) { throw ExpectationError(where + ": " + what); };
+    if (!j.is_object()) fail("an entry must be an object");
+    static const std::vector<std::string> known = {"stage",   "scene", "trees",  "set",
+                                                   "outcome", "why",   "limits", "measured"};
+    for (const auto& [key, value] : j.items()) {
+        bool ok = false;
+        for (const auto& k : known) ok = ok || k == key;
+        if (!ok) fail("unknown field '" + key + "'");
+    }
+    auto text = [&](const char* key, bool required) -> std::string {
+        if (!j.contains(key)) {
+            if (required) fail(std::string("missing \"") + key + "\"");
+            return {};
+        }
+        if (!j[key].is_string() || j[key].get<std::string>().empty())
+            fail(std::string("\"") + key + "\" must be a non-empty string");
+        return j[key].get<std::string>();
+    };
+    Expectation e;
+    e.stage = text("stage", true);
+    const StageInfo* info = findStage(e.stage);
+    if (!info) fail("unknown stage '" + e.stage + "'");
+    e.scene = text("scene", false);
+    e.outcome = text("outcome", true);
+    e.why = text("why", true);
+    if (j.contains("trees")) {
+        if (!j["trees"].is_array() || j["trees"].empty()) fail("\"trees\" must be a list");
+        for (const auto& t : j["trees"]) {
+            bool allowed = false;
+            for (const auto& s : treesOf(*info)) allowed = allowed || (t.is_string() && t == s);
+            if (!allowed)
+                fail("\"trees\": '" + t.dump() + "' is not a tree stage " + e.stage + " runs in");
+            e.trees.push_back(t.get<std::string>());
+        }
+    }
+    if (j.contains("set")) {
+        if (!j["set"].is_object()) fail("\"set\" must be an object of NAME: \"VALUE\"");
+        for (const auto& [name, value] : j["set"].items()) {
+            if (!value.is_string()) fail("set." + name + " must be a string");
+            e.set.emplace_back(name, value.get<std::string>());
+        }
+    }
+    if (!j.contains("limits") || !j["limits"].is_object() || j["limits"].empty())
+        fail("\"limits\" must be a non-empty object of FIGURE: {\"min\": X, \"max\": Y}");
+    for (const auto& [figure, bound] : j["limits"].items()) {
+        bool ok = false;
+        for (const auto& f : figureNames()) ok = ok || f == figure;
+        if (!ok) fail("limits: unknown figure '" + figure + "'");
+        Limit l{figure};
+        if (!bound.is_object() || bound.empty()) fail("limits." + figure + " must be {min, max}");
+        for (const auto& [side, v] : bound.items()) {
+            if (!v.is_number()) fail("limits." + figure + "." + side + " must be a number");
+            if (side == "min")
+                l.min = v.get<double>();
+            else if (side == "max")
+                l.max = v.get<double>();
+            else
+                fail("limits." + figure + ": unknown bound '" + side + "' (min, max)");
+        }
+        e.limits.push_back(l);
+    }
+    settingsOf(e, where);  // every setting must be a declared parameter with an allowed value
+    return e;
+}
+
+}  // namespace
+
+std::string Limit::bound() const {
+    if (!std::isnan(min) && !std::isnan(max))
+        return "in [" + number(min) + ", " + number(max) + "]";
+    if (!std::isnan(min)) return ">= " + number(min);
+    return "<= " + number(max);
+}
+
+std::string Expectation::label() const {
+    std::string text = stage;
+    if (!scene.empty()) text += " scene=" + scene;
+    for (const auto& [name, value] : set) text += " " + name + "=" + value;
+    return text;
+}
+
+const std::vector<std::string>& figureNames() {
+    static const std::vector<std::string> names = {
+        "false_shadow_pct", "false_lit_pct", "false_shadow_band_pct", "false_lit_band_pct",
+        "edge_mean_px",     "edge_p95_px",   "mirror_id_pct",         "mirror_psnr_db"};
+    return names;
+}
+
+std::vector<Expectation> parseExpectations(const std::string& text, const std::string& origin) {
+    json doc;
+    try {
+        doc = json::parse(text);
+    } catch (const json::parse_error& e) {
+        throw ExpectationError(origin + ": not valid JSON: " + e.what());
+    }
+    if (!doc.is_object() || !doc.contains("expectations") || !doc["expectations"].is_array())
+        throw ExpectationError(origin + ": needs an \"expectations\" list");
+    std::vector<Expectation> book;
+    for (std::size_t k = 0; k < doc["expectations"].size(); ++k)
+        book.push_back(parseEntry(doc["expectations"][k],
+                                  origin + ": expectations[" + std::to_string(k) + "]"));
+    for (const StageInfo& info : stageRegistry())
+        for (const std::string& tree : treesOf(info)) {
+            int defaults = 0;
+            for (const auto& e : book)
+                defaults += e.stage == info.id && isDefaultsEntry(e) && coversTree(e, tree);
+            if (defaults != 1)
+                throw ExpectationError(
+                    origin + ": stage " + info.id + " (" + tree +
+                    ") needs one entry for its defaults (no scene, no set), found " +
+                    std::to_string(defaults));
+        }
+    return book;
+}
+
+std::string expectationsPath() {
+    return dataDir() + "/src/stages/expectations.json";
+}
+
+const std::vector<Expectation>& expectations() {
+    static const std::vector<Expectation> book = [] {
+        std::ifstream in(expectationsPath());
+        if (!in)
+            throw ExpectationError(expectationsPath() +
+                                   ": cannot be read (set SHADOWLAB_DATA_DIR?)");
+        std::stringstream text;
+        text << in.rdbuf();
+        return parseExpectations(text.str(), expectationsPath());
+    }();
+    return book;
+}
+
+ExpectationMatch findExpectation(const std::vector<Expectation>& book, const std::string& stage,
+                                 const std::string& sceneName, const std::string& tree,
+                                 const ParamSet& values) {
+    ExpectationMatch match;
+    for (const auto& e : book) {
+        if (e.stage != stage || !coversTree(e, tree)) continue;
+        if (isDefaultsEntry(e) && !match.entry) match.entry = &e;
+        std::string scene = e.scene.empty() ? defaultSceneOf(stage) : e.scene;
+        if (scene == sceneName && sameValues(settingsOf(e, e.label()), values)) return {&e, true};
+    }
+    return match;
+}
+
+const char* verdictName(Verdict v) {
+    return v == Verdict::Pass ? "PASS" : v == Verdict::Fail ? "FAIL" : "SKIP";
+}
+
+Judgement judge(const Expectation& e, const std::map<std::string, double>& figures) {
+    std::string failed, unmeasured, held;
+    for (const Limit& l : e.limits) {
+        auto it = figures.find(l.figure);
+        double v = it == figures.end() ? NAN : it->second;
+        if (std::isnan(v)) {
+            unmeasured += (unmeasured.empty() ? "" : ", ") + l.figure;
+            continue;
+        }
+        bool ok = !(v < l.min) && !(v > l.max);  // a NaN bound compares false: no bound
+        std::string& list = ok ? held : failed;
+        list += (list.empty() ? "" : ", ") + l.figure + " " + number(v) + (ok ? " " : " not ") +
+                l.bound();
+    }
+    if (!failed.empty()) return {Verdict::Fail, "expected " + e.outcome + ", but " + failed};
+    if (!unmeasured.empty()) return {Verdict::Skip, "not measured: " + unmeasured};
+    return {Verdict::Pass, e.outcome + " as expected: " + held};
+}
+
+}  // namespace sl

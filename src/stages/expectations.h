@@ -1,0 +1,75 @@
+// What each stage is expected to show, read from one data file (src/stages/expectations.json):
+// the lesson of a stage's defaults, and of a few named settings (the slides' figures). A lesson
+// may be a failure (acne, the inverted -0.5, phong's missing shadows); the limits then say that
+// it fails and by how much. `check`, `example` and `stages` all read this one file.
+#pragma once
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "stages/params.h"
+
+namespace sl {
+
+// A broken or inconsistent data file (names the file and the entry); exit code 2.
+class ExpectationError : public std::invalid_argument {
+  public:
+    using std::invalid_argument::invalid_argument;
+};
+
+// A bound on one figure (names as in the check report: false_shadow_pct, mirror_psnr_db, ...).
+// NaN = no bound on that side.
+struct Limit {
+    std::string figure;
+    double min = NAN, max = NAN;
+    std::string bound() const;  // ">= 20", "<= 5", "in [0, 5]"
+};
+
+struct Expectation {
+    std::string stage;
+    std::string scene;                                     // "" = the stage's own default scene
+    std::vector<std::string> trees;                        // empty = every tree the stage runs in
+    std::vector<std::pair<std::string, std::string>> set;  // the settings it is about
+    std::string outcome;  // the lesson in a few words: "acne", "no shadows", "correct", ...
+    std::string why;
+    std::vector<Limit> limits;
+    // "rgb", "margin margin-kind=slope", "hardware scene=lab offset-factor=20 ..."
+    std::string label() const;
+};
+
+// The figures names a limit may use, in report order.
+const std::vector<std::string>& figureNames();
+
+// Parses the data file's text; `origin` names it in errors. Checks every entry against the
+// stage registry (stage, scene, parameter names and values) and that each stage has exactly one
+// defaults entry (no scene, no settings) per tree.
+std::vector<Expectation> parseExpectations(const std::string& text, const std::string& origin);
+// <data dir>/src/stages/expectations.json, loaded once.
+std::string expectationsPath();
+const std::vector<Expectation>& expectations();
+
+// The entry for what is being checked: the one whose scene, tree and settings match exactly
+// (every parameter equal, compared through ParamSet so 0.01 == 0.010); else the stage's defaults
+// entry, and `exact` is false (the settings are judged against the defaults' lesson).
+struct ExpectationMatch {
+    const Expectation* entry = nullptr;
+    bool exact = false;
+};
+ExpectationMatch findExpectation(const std::vector<Expectation>& book, const std::string& stage,
+                                 const std::string& sceneName, const std::string& tree,
+                                 const ParamSet& values);
+
+enum class Verdict { Pass, Fail, Skip };
+const char* verdictName(Verdict v);  // "PASS" | "FAIL" | "SKIP" (a bounded figure not measured)
+
+struct Judgement {
+    Verdict verdict = Verdict::Skip;
+    std::string message;  // why, in one line
+};
+Judgement judge(const Expectation& e, const std::map<std::string, double>& figures);
+
+}  // namespace sl

@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""Checks a `shadowlab check --report` file: every documented field (docs/check.md) is there
+with the right type, the summary agrees with the results, and optional claims hold.
+
+usage: check_report.py REPORT.json [--count N] [--exit N] [--verdict STAGE/TREE=VERDICT]...
+       [--figure STAGE/TREE:NAME<VALUE | NAME>VALUE]..."""
+import json
+import re
+import sys
+
+FIGURES = ["false_shadow_pct", "false_lit_pct", "false_shadow_band_pct", "false_lit_band_pct",
+           "edge_mean_px", "edge_p95_px", "mirror_id_pct", "mirror_psnr_db"]
+RESULT_FIELDS = {"stage": str, "tree": str, "scene": str, "size": list, "parameters": dict,
+                 "camera": dict, "light": list, "figures": dict, "pixels": dict,
+                 "expectation": dict, "verdict": str, "message": str, "seconds": float}
+
+
+def main():
+    args = sys.argv[1:]
+    with open(args.pop(0)) as f:
+        report = json.load(f)
+    problems = []
+    for key in ("tool", "report_version", "expectations", "machine", "summary", "results"):
+        if key not in report:
+            problems.append(f"missing top-level '{key}'")
+    if problems:
+        sys.exit("FAIL: " + "; ".join(problems))
+    if not report["machine"].get("renderer"):
+        problems.append("machine.renderer is empty")
+    summary, results = report["summary"], report["results"]
+    for key in ("checked", "passed", "failed", "skipped", "errors", "exit_code", "seconds"):
+        if key not in summary:
+            problems.append(f"summary.{key} is missing")
+    by_verdict = {v: sum(1 for r in results if r.get("verdict") == v)
+                  for v in ("PASS", "FAIL", "SKIP", "ERROR")}
+    if summary.get("checked") != len(results):
+        problems.append(f"summary.checked {summary.get('checked')} != {len(results)} results")
+    for key, verdict in (("passed", "PASS"), ("failed", "FAIL"), ("skipped", "SKIP"),
+                         ("errors", "ERROR")):
+        if summary.get(key) != by_verdict[verdict]:
+            problems.append(f"summary.{key} {summary.get(key)} != {by_verdict[verdict]} {verdict}")
+    for r in results:
+        name = f"{r.get('stage')}/{r.get('tree')}"
+        for key, kind in RESULT_FIELDS.items():
+            if not isinstance(r.get(key), (int, float) if kind is float else kind):
+                problems.append(f"{name}: '{key}' missing or not {kind.__name__}")
+        for fig in FIGURES:
+            if fig not in r.get("figures", {}):
+                problems.append(f"{name}: figures.{fig} missing")
+        exp = r.get("expectation", {})
+        for key in ("entry", "matched", "outcome", "why", "limits"):
+            if key not in exp:
+                problems.append(f"{name}: expectation.{key} missing")
+        if "diff" not in r:
+            problems.append(f"{name}: 'diff' missing (null when none)")
+        if r.get("verdict") not in by_verdict:
+            problems.append(f"{name}: verdict '{r.get('verdict')}'")
+    while args:
+        flag, value = args.pop(0), args.pop(0)
+        if flag == "--count" and len(results) != int(value):
+            problems.append(f"{len(results)} results, expected {value}")
+        elif flag == "--exit" and summary.get("exit_code") != int(value):
+            problems.append(f"exit_code {summary.get('exit_code')}, expected {value}")
+        elif flag == "--verdict":
+            key, verdict = value.split("=")
+            got = [r["verdict"] for r in results if f"{r['stage']}/{r['tree']}" == key]
+            if got != [verdict]:
+                problems.append(f"{key}: verdict {got}, expected {verdict}")
+        elif flag == "--figure":
+            key, rest = value.split(":")
+            name, op, bound = re.match(r"(\w+)([<>])(.+)", rest).groups()
+            got = [r["figures"][name] for r in results if f"{r['stage']}/{r['tree']}" == key]
+            if len(got) != 1 or got[0] is None or not (
+                    got[0] < float(bound) if op == "<" else got[0] > float(bound)):
+                problems.append(f"{key}: {name} = {got}, expected {op} {bound}")
+            else:
+                print(f"{key}: {name} = {got[0]:.3f} {op} {bound}")
+    if problems:
+        sys.exit("FAIL: " + "; ".join(problems))
+    print(f"OK: {len(results)} results, exit code {summary['exit_code']}")
+
+
+if __name__ == "__main__":
+    main()

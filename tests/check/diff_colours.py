@@ -1,0 +1,47 @@
+#!/usr/bin/env python3
+"""Counts the colours of a check diff image (red false shadow, blue false lit, grey agreement,
+white not evaluated; src/metrics/shadow_metrics.h) and checks them against the report's pixel
+counts for that stage.
+
+usage: diff_colours.py DIFF.png REPORT.json STAGE TREE MIN_BLUE_OF_SHADOW MAX_RED_OF_EVALUATED
+  MIN_BLUE_OF_SHADOW: blue pixels / truly shadowed pixels must be at least this (0..1)
+  MAX_RED_OF_EVALUATED: red pixels / evaluated pixels must be at most this (0..1)"""
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pngread import read_png  # noqa: E402
+
+RED, BLUE, WHITE = (220, 40, 40), (40, 80, 230), (255, 255, 255)
+
+
+def main():
+    png, report, stage, tree = sys.argv[1:5]
+    min_blue, max_red = float(sys.argv[5]), float(sys.argv[6])
+    _, _, pixels = read_png(png)
+    red = sum(1 for p in pixels if p == RED)
+    blue = sum(1 for p in pixels if p == BLUE)
+    white = sum(1 for p in pixels if p == WHITE)
+    grey = sum(1 for p in pixels if p[0] == p[1] == p[2] and 60 <= p[0] <= 200)
+    with open(report) as f:
+        results = [r for r in json.load(f)["results"] if r["stage"] == stage and r["tree"] == tree]
+    if len(results) != 1:
+        sys.exit(f"FAIL: the report has {len(results)} results for {stage}/{tree}")
+    counts = results[0]["pixels"]
+    print(f"red {red}  blue {blue}  grey {grey}  white {white}  of {len(pixels)}; "
+          f"report: evaluated {counts['evaluated']}, truly shadowed {counts['truth_shadow']}")
+    problems = []
+    if red + blue + grey + white != len(pixels):
+        problems.append(f"{len(pixels) - red - blue - grey - white} pixels of another colour")
+    if blue < min_blue * counts["truth_shadow"]:
+        problems.append(f"blue {blue} < {min_blue} x truly shadowed {counts['truth_shadow']}")
+    if red > max_red * counts["evaluated"]:
+        problems.append(f"red {red} > {max_red} x evaluated {counts['evaluated']}")
+    if problems:
+        sys.exit("FAIL: " + "; ".join(problems))
+    print("OK")
+
+
+if __name__ == "__main__":
+    main()
