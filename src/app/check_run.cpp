@@ -3,7 +3,9 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 
+#include "app/bench_output.h"
 #include "app/options.h"
 #include "metrics/shadow_metrics.h"
 
@@ -32,9 +34,15 @@ nlohmann::json number(double v) {
     return std::isnan(v) ? nlohmann::json() : nlohmann::json(v);
 }
 
-std::string firstLine(const std::string& text) {
-    std::string line = text.substr(0, text.find('\n'));
-    return line.empty() ? text : line;
+// The compiler's own words in one line: the first line naming a line number (file:line:col:
+// error ...), else the first line.
+std::string errorLine(const std::string& text) {
+    std::istringstream in(text);
+    std::string first, line;
+    std::getline(in, first);
+    while (std::getline(in, line))
+        if (line.find("error") != std::string::npos) return line;
+    return first;
 }
 
 }  // namespace
@@ -62,6 +70,8 @@ CheckResult runCheck(BenchRig& rig, const RenderRequest& request, const std::str
     r.width = request.width;
     r.height = request.height;
     Renderer& renderer = rig.prepare(request);
+    r.backend = rig.context().backendName();
+    r.machine = machineLine();
     r.scene = renderer.scene().name;
     r.parameters = renderer.params();
     r.camera = renderer.camera;
@@ -90,7 +100,7 @@ CheckResult runCheck(BenchRig& rig, const RenderRequest& request, const std::str
                   << (std::string(e.what()).back() == '\n' ? "" : "\n");
         rig.reset();
         r.error = true;
-        r.judgement = {Verdict::Fail, "shader error: " + firstLine(e.what())};
+        r.judgement = {Verdict::Fail, "shader error: " + errorLine(e.what())};
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
     }

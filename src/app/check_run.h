@@ -21,9 +21,10 @@ struct CheckResult {
     long evaluated = 0, truthLit = 0, truthShadow = 0;  // pixel counts behind the percentages
     ExpectationMatch expectation;
     Judgement judgement;
-    bool error = false;    // a shader did not build: judgement.message says why (exit 2)
-    std::string diffFile;  // the diff image written, or ""
-    std::string note;      // e.g. why no diff image was written
+    bool error = false;            // a shader did not build: judgement.message says why (exit 2)
+    std::string diffFile;          // the diff image written, or ""
+    std::string note;              // e.g. why no diff image was written
+    std::string backend, machine;  // the headless backend, machineLine() of the context used
     double seconds = 0;
 
     std::string verdict() const { return error ? "ERROR" : verdictName(judgement.verdict); }

@@ -139,9 +139,9 @@ int runCheckCommand(const CheckArgs& a) {
         if (!a.diffDir.empty() && r.stage != "mirror")
             diff = a.diffDir + "/" + r.stage + "-" + treeName(r.tree) + ".png";
         CheckResult result = runCheck(rig, r, diff);
-        if (machine.empty() && !result.error) {
-            machine = machineLine();
-            backend = rig.context().backendName();
+        if (machine.empty()) {
+            machine = result.machine;
+            backend = result.backend;
         }
         char counter[32];
         std::snprintf(counter, sizeof counter, "[%2zu/%zu] ", k + 1, requests.size());

@@ -1,0 +1,69 @@
+# `check` and `example` through the real binary: verdicts, exit codes, the report's fields, diff
+# images, a student overlay that is wrong and one that does not build. Figures are asserted
+# against bounds that could fail (docs/check.md quotes the measured values).
+set(SL_CHECK_DIR ${CMAKE_BINARY_DIR}/check-ci)
+set(SL_CHECK_PY ${CMAKE_CURRENT_SOURCE_DIR}/check)
+set(SL_EXE $<TARGET_FILE:shadowlab>)
+file(MAKE_DIRECTORY ${SL_CHECK_DIR})
+
+# Every stage in both trees shows its lesson: exit 0, and the report says so stage by stage.
+add_test(NAME check_all
+         COMMAND sh -c "${SL_EXE} check --all --report ${SL_CHECK_DIR}/all.json --diff-dir ${SL_CHECK_DIR}/all-diff && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all.json --count 15 --exit 0 --verdict rgb/core=PASS --verdict bias/legacy=PASS --verdict fixed/legacy=PASS && test -s ${SL_CHECK_DIR}/all-diff/hardware-core.png && test -s ${SL_CHECK_DIR}/all-diff/fixed-legacy.png")
+set_tests_properties(check_all PROPERTIES LABELS check TIMEOUT 600)
+
+# rgb: margin 0 shows acne, the slides' 0.01 cures it; both are the lesson (exit 0), and the
+# false-shadow figure drops by an order of magnitude.
+add_test(NAME check_rgb_margin
+         COMMAND sh -c "${SL_EXE} check --stage rgb --report ${SL_CHECK_DIR}/rgb0.json && ${SL_EXE} check --stage rgb --set margin=0.01 --report ${SL_CHECK_DIR}/rgb001.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/rgb0.json --figure rgb/core:false_shadow_pct>20 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/rgb001.json --figure rgb/core:false_shadow_pct<2")
+set_tests_properties(check_rgb_margin PROPERTIES LABELS check TIMEOUT 300)
+
+# Judged against the wrong lesson, the result fails: rgb with margin 0.01 where the entry for
+# margin 0 is wanted is what `--set` does for a setting with no entry (bias-z=+0.5 with flipped
+# light-z has none): the verdict is FAIL, exit 1, and the message says why.
+add_test(NAME check_no_entry_judged_by_defaults
+         COMMAND sh -c "${SL_EXE} check --stage bias --set bias-z=+0.5 --set light-z=flipped; test $? -eq 1")
+set_tests_properties(check_no_entry_judged_by_defaults PROPERTIES LABELS check TIMEOUT 300
+                     PASS_REGULAR_EXPRESSION "FAIL +expected inverted.*judged by the defaults")
+
+# A student's margin shader with the comparison turned inside out: exit 1, and its diff image is
+# blue (false lit) over the true shadows and almost never red.
+add_test(NAME check_student_inverted
+         COMMAND sh -c "${SL_EXE} check --stage margin --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_bad --report ${SL_CHECK_DIR}/bad.json --diff ${SL_CHECK_DIR}/bad-diff.png; test $? -eq 1 && python3 ${SL_CHECK_PY}/diff_colours.py ${SL_CHECK_DIR}/bad-diff.png ${SL_CHECK_DIR}/bad.json margin core 0.9 0.02 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/bad.json --exit 1 --verdict margin/core=FAIL --figure margin/core:false_lit_pct>90")
+set_tests_properties(check_student_inverted PROPERTIES LABELS check TIMEOUT 300)
+
+# The same stage with our shader: its diff image has next to no blue or red.
+add_test(NAME check_diff_good
+         COMMAND sh -c "${SL_EXE} check --stage margin --report ${SL_CHECK_DIR}/good.json --diff ${SL_CHECK_DIR}/good-diff.png && python3 ${SL_CHECK_PY}/diff_colours.py ${SL_CHECK_DIR}/good-diff.png ${SL_CHECK_DIR}/good.json margin core 0 0.02")
+set_tests_properties(check_diff_good PROPERTIES LABELS check TIMEOUT 300)
+
+# A student shader that does not compile: exit 2, the file and line named, and --all goes on
+# with the other stages (one ERROR in the report).
+add_test(NAME check_student_broken
+         COMMAND sh -c "${SL_EXE} check --stage margin --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken 2>&1; test $? -eq 2")
+set_tests_properties(check_student_broken PROPERTIES LABELS check TIMEOUT 300
+                     PASS_REGULAR_EXPRESSION "student_broken/margin/lit.frag:[0-9]+")
+add_test(NAME check_all_student_broken
+         COMMAND sh -c "${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken.json; test $? -eq 2 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/broken.json --count 7 --exit 2 --verdict margin/core=ERROR --verdict hardware/core=PASS")
+set_tests_properties(check_all_student_broken PROPERTIES LABELS check TIMEOUT 300)
+
+# Bad input: exit 2 with one line naming the option.
+add_test(NAME check_usage COMMAND sh -c "${SL_EXE} check 2>&1; test $? -eq 2")
+set_tests_properties(check_usage PROPERTIES LABELS check PASS_REGULAR_EXPRESSION "give either --stage ID or --all")
+add_test(NAME check_unknown_stage COMMAND sh -c "${SL_EXE} check --stage marign 2>&1; test $? -eq 2")
+set_tests_properties(check_unknown_stage PROPERTIES LABELS check PASS_REGULAR_EXPRESSION "did you mean 'margin'")
+add_test(NAME check_view_not_final COMMAND sh -c "${SL_EXE} check --stage rgb --view light 2>&1; test $? -eq 2")
+set_tests_properties(check_view_not_final PROPERTIES LABELS check PASS_REGULAR_EXPRESSION "check judges the final picture")
+add_test(NAME check_no_partial_report
+         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/none.json; ${SL_EXE} check --stage rgb --set margin=9 --report ${SL_CHECK_DIR}/none.json 2>&1; test $? -eq 2 && test ! -e ${SL_CHECK_DIR}/none.json")
+set_tests_properties(check_no_partial_report PROPERTIES LABELS check)
+
+# Every lecture figure in slides_examples/ renders and gets the verdict it expects.
+file(GLOB SL_EXAMPLES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/slides_examples/*.json)
+foreach(example ${SL_EXAMPLES})
+  get_filename_component(name ${example} NAME_WE)
+  add_test(NAME example_${name}
+           COMMAND sh -c "rm -f ${SL_CHECK_DIR}/examples/${name}.png ${SL_CHECK_DIR}/examples/${name}-*.png; ${SL_EXE} example ${name} --out ${SL_CHECK_DIR}/examples && ls ${SL_CHECK_DIR}/examples/${name}.png ${SL_CHECK_DIR}/examples/${name}-*.png 2>/dev/null | grep -q png")
+  set_tests_properties(example_${name} PROPERTIES LABELS example TIMEOUT 300)
+endforeach()
+add_test(NAME example_list COMMAND ${SL_EXE} example --list)
+set_tests_properties(example_list PROPERTIES LABELS example PASS_REGULAR_EXPRESSION "acne")
