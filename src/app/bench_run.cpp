@@ -4,6 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <sstream>
 
+#include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
 
 namespace sl {
@@ -38,6 +39,7 @@ Renderer& BenchRig::prepare(const BenchConfig& c, const std::optional<glm::vec3>
     std::ostringstream key;
     key << static_cast<int>(c.tree) << "/" << scene << "/" << c.width << "x" << c.height;
     if (key.str() != key_) {  // a new context: drop the renderer (and its GL objects) first
+        idRenderer_.reset();
         renderer_.reset();
         context_.reset();
         context_ = createHeadlessContext(backend_, c.tree, c.width, c.height);
@@ -149,7 +151,8 @@ Renderer& BenchRig::prepare(const RenderRequest& request) {
 }
 
 void BenchRig::reset() {
-    renderer_.reset();  // its GL objects go before the context
+    idRenderer_.reset();  // the renderers' GL objects go before the context
+    renderer_.reset();
     context_.reset();
     key_.clear();
     referenceKey_.clear();
@@ -158,7 +161,9 @@ void BenchRig::reset() {
 const ReferenceImage& BenchRig::reference() {
     Renderer& r = *renderer_;
     std::ostringstream key;
-    key << key_ << "/" << r.lightPosition.x << "," << r.lightPosition.y << "," << r.lightPosition.z;
+    auto put = [&](const glm::vec3& v) { key << "/" << v.x << "," << v.y << "," << v.z; };
+    key << key_ << "/" << r.camera.fovyDegrees;
+    for (const glm::vec3& v : {r.lightPosition, r.camera.eye, r.camera.at}) put(v);
     if (key.str() != referenceKey_) {
         reference_ = traceReference(r.scene(), r.camera, r.lightPosition, context_->width(),
                                     context_->height());
@@ -182,8 +187,7 @@ Accuracy shadowAccuracy(const ShadowFigures& f) {
 Accuracy BenchRig::accuracy() {
     Renderer& r = *renderer_;
     reference();
-    Accuracy a;
-    if (r.stage().id == "mirror") return a;  // TODO(check): id image + PSNR against stencil
+    if (r.stage().id == "mirror") return mirrorAccuracy();
     return shadowAccuracy(shadowEvidence().figures);
 }
 
@@ -202,6 +206,44 @@ ShadowEvidence BenchRig::shadowEvidence() {
     e.shadowed = classifyShadowed(e.withShadows, e.allLit);
     e.figures = shadowFigures(ref, e.shadowed);
     return e;
+}
+
+// The mirror (GUIDE section 4): which object each mirror pixel shows, against the reference's
+// bounce, and how close the picture is to the exact stencil method, over the mirror's front.
+Accuracy BenchRig::mirrorAccuracy() {
+    Renderer& r = *renderer_;
+    int w = context_->width(), h = context_->height();
+    std::vector<std::uint8_t> mask = mirrorMask(reference_, r.scene());
+    r.allLit = false;
+    r.render(context_->framebuffer(), w, h);
+    Image shown = context_->read();
+    const std::string method = r.params().text("mirror-method");
+    r.params().set("mirror-method", "stencil");
+    r.render(context_->framebuffer(), w, h);
+    Image exact = context_->read();
+    r.params().set("mirror-method", method);
+
+    if (!idRenderer_)  // same shaders (a student's overlay too), the scene painted in id colours
+        idRenderer_ = std::make_unique<Renderer>(
+            idColouredScene(r.scene()),
+            ShaderLibrary(r.shaders().tree(), shaderTreeRoot(r.shaders().tree()),
+                          r.shaders().overlay()),
+            h);
+    Renderer& ids = *idRenderer_;
+    ids.selectStage(r.stage().id);
+    ids.params() = r.params();
+    ids.camera = r.camera;
+    ids.lightPosition = r.lightPosition;
+    ids.view = ViewMode::Final;
+    ids.render(context_->framebuffer(), w, h);
+    std::vector<int> seen =
+        decodeIdImage(context_->read(), mirrorId(r.scene()) - 1, kMirrorReflectance);
+
+    Accuracy a;
+    a.mirrorIdPct = mirrorIdAgreementPct(reference_, seen);
+    a.mirrorPsnrDb = psnrInMask(shown, exact, mask);
+    a.errorPct = 100.0 - a.mirrorIdPct;
+    return a;
 }
 
 }  // namespace sl
