@@ -3,9 +3,9 @@
 with the right type, the summary agrees with the results, and optional claims hold.
 
 usage: check_report.py REPORT.json [--count N] [--exit N] [--verdict STAGE/TREE=VERDICT]...
-       [--figure STAGE/TREE:NAME<VALUE | NAME>VALUE]..."""
+       [--figure STAGE/TREE:NAME:lt:VALUE | STAGE/TREE:NAME:gt:VALUE]...
+(lt/gt rather than < and > so the arguments survive a shell.)"""
 import json
-import re
 import sys
 
 FIGURES = ["false_shadow_pct", "false_lit_pct", "false_shadow_band_pct", "false_lit_band_pct",
@@ -67,11 +67,12 @@ def main():
             if got != [verdict]:
                 problems.append(f"{key}: verdict {got}, expected {verdict}")
         elif flag == "--figure":
-            key, rest = value.split(":")
-            name, op, bound = re.match(r"(\w+)([<>])(.+)", rest).groups()
+            key, name, op, bound = value.split(":")
+            if op not in ("lt", "gt"):
+                sys.exit(f"usage: --figure STAGE/TREE:NAME:lt|gt:VALUE, not {value}")
             got = [r["figures"][name] for r in results if f"{r['stage']}/{r['tree']}" == key]
             if len(got) != 1 or got[0] is None or not (
-                    got[0] < float(bound) if op == "<" else got[0] > float(bound)):
+                    got[0] < float(bound) if op == "lt" else got[0] > float(bound)):
                 problems.append(f"{key}: {name} = {got}, expected {op} {bound}")
             else:
                 print(f"{key}: {name} = {got[0]:.3f} {op} {bound}")

@@ -4,8 +4,10 @@ white not evaluated; src/metrics/shadow_metrics.h) and checks them against the r
 counts for that stage.
 
 usage: diff_colours.py DIFF.png REPORT.json STAGE TREE MIN_BLUE_OF_SHADOW MAX_RED_OF_EVALUATED
+                       [MAX_BLUE_OF_SHADOW]
   MIN_BLUE_OF_SHADOW: blue pixels / truly shadowed pixels must be at least this (0..1)
-  MAX_RED_OF_EVALUATED: red pixels / evaluated pixels must be at most this (0..1)"""
+  MAX_RED_OF_EVALUATED: red pixels / evaluated pixels must be at most this (0..1)
+  MAX_BLUE_OF_SHADOW: blue pixels / truly shadowed pixels must be at most this (default 1)"""
 import json
 import os
 import sys
@@ -19,6 +21,7 @@ RED, BLUE, WHITE = (220, 40, 40), (40, 80, 230), (255, 255, 255)
 def main():
     png, report, stage, tree = sys.argv[1:5]
     min_blue, max_red = float(sys.argv[5]), float(sys.argv[6])
+    max_blue = float(sys.argv[7]) if len(sys.argv) > 7 else 1.0
     _, _, pixels = read_png(png)
     red = sum(1 for p in pixels if p == RED)
     blue = sum(1 for p in pixels if p == BLUE)
@@ -36,6 +39,8 @@ def main():
         problems.append(f"{len(pixels) - red - blue - grey - white} pixels of another colour")
     if blue < min_blue * counts["truth_shadow"]:
         problems.append(f"blue {blue} < {min_blue} x truly shadowed {counts['truth_shadow']}")
+    if blue > max_blue * counts["truth_shadow"]:
+        problems.append(f"blue {blue} > {max_blue} x truly shadowed {counts['truth_shadow']}")
     if red > max_red * counts["evaluated"]:
         problems.append(f"red {red} > {max_red} x evaluated {counts['evaluated']}")
     if problems:

@@ -1,0 +1,105 @@
+// The expectations data file: the shipped file loads, each stage has its defaults entry, matching
+// picks the exact entry or falls back to the defaults, and judging reads the limits right.
+#include <gtest/gtest.h>
+
+#include "stages/expectations.h"
+#include "stages/stage.h"
+
+namespace sl {
+namespace {
+
+const char* kMinimal = R"({"expectations": [
+  {"stage": "phong", "outcome": "no shadows", "why": "w", "limits": {"false_lit_pct": {"min": 99}}},
+  {"stage": "rgb", "outcome": "acne", "why": "w", "limits": {"false_shadow_pct": {"min": 20}}},
+  {"stage": "rgb", "set": {"margin": "0.010"}, "outcome": "no acne", "why": "w",
+   "limits": {"false_shadow_pct": {"max": 1}, "false_lit_pct": {"max": 2}}},
+  {"stage": "depth", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "bias", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "margin", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "hardware", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "hardware", "scene": "lab", "outcome": "lab", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "fixed", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "mirror", "outcome": "m", "why": "w", "limits": {"mirror_id_pct": {"min": 98}}}
+]})";
+
+ParamSet values(const std::string& stage, std::vector<std::pair<std::string, std::string>> sets) {
+    ParamSet p(findStage(stage)->params);
+    for (const auto& [n, v] : sets) EXPECT_EQ(p.set(n, v), "");
+    return p;
+}
+
+TEST(Expectations, ShippedFileLoadsWithEveryStage) {
+    const auto& book = expectations();
+    for (const StageInfo& s : stageRegistry()) {
+        std::string scene = s.defaultScene.empty() ? "slides" : s.defaultScene;
+        ExpectationMatch m = findExpectation(book, s.id, scene, s.legacyOnly ? "legacy" : "core",
+                                             ParamSet(s.params));
+        ASSERT_NE(m.entry, nullptr) << s.id;
+        EXPECT_TRUE(m.exact) << s.id;
+        EXPECT_FALSE(m.entry->why.empty()) << s.id;
+    }
+}
+
+TEST(Expectations, ExactMatchComparesParsedValues) {
+    auto book = parseExpectations(kMinimal, "test");
+    auto m = findExpectation(book, "rgb", "slides", "core", values("rgb", {{"margin", "0.01"}}));
+    ASSERT_NE(m.entry, nullptr);
+    EXPECT_TRUE(m.exact);
+    EXPECT_EQ(m.entry->outcome, "no acne");
+}
+
+TEST(Expectations, UnlistedSettingsFallBackToTheDefaults) {
+    auto book = parseExpectations(kMinimal, "test");
+    auto m = findExpectation(book, "rgb", "slides", "legacy", values("rgb", {{"margin", "0.02"}}));
+    ASSERT_NE(m.entry, nullptr);
+    EXPECT_FALSE(m.exact);
+    EXPECT_EQ(m.entry->outcome, "acne");
+    auto lab = findExpectation(book, "hardware", "lab", "core", values("hardware", {}));
+    EXPECT_TRUE(lab.exact);
+    EXPECT_EQ(lab.entry->outcome, "lab");
+}
+
+TEST(Expectations, JudgeReadsBothSidesAndNaN) {
+    auto book = parseExpectations(kMinimal, "test");
+    const Expectation& noAcne = book[2];
+    auto pass = judge(noAcne, {{"false_shadow_pct", 0.5}, {"false_lit_pct", 2.0}});
+    EXPECT_EQ(pass.verdict, Verdict::Pass) << pass.message;
+    auto fail = judge(noAcne, {{"false_shadow_pct", 49.0}, {"false_lit_pct", 0.1}});
+    EXPECT_EQ(fail.verdict, Verdict::Fail);
+    EXPECT_NE(fail.message.find("false_shadow_pct 49 not <= 1"), std::string::npos) << fail.message;
+    auto skip = judge(noAcne, {{"false_shadow_pct", 0.5}, {"false_lit_pct", NAN}});
+    EXPECT_EQ(skip.verdict, Verdict::Skip);
+    auto failWins = judge(noAcne, {{"false_shadow_pct", 5.0}, {"false_lit_pct", NAN}});
+    EXPECT_EQ(failWins.verdict, Verdict::Fail);
+}
+
+TEST(Expectations, MistakesNameTheEntry) {
+    auto expectError = [](const std::string& text, const std::string& part) {
+        try {
+            parseExpectations(text, "f.json");
+            ADD_FAILURE() << "no error for " << text;
+        } catch (const ExpectationError& e) {
+            EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+        }
+    };
+    std::string ok = kMinimal;
+    auto replaced = [&](const std::string& from, const std::string& to) {
+        std::string t = ok;
+        t.replace(t.find(from), from.size(), to);
+        return t;
+    };
+    expectError(replaced("\"margin\": \"0.010\"", "\"margn\": \"0.010\""), "expectations[2]");
+    expectError(replaced("\"margin\": \"0.010\"", "\"margin\": \"7\""), "margin=7");
+    expectError(replaced("false_shadow_pct\": {\"min\": 20}", "false_shade\": {\"min\": 20}"),
+                "unknown figure 'false_shade'");
+    expectError(replaced("{\"stage\": \"depth\"", "{\"stage\": \"deep\""), "unknown stage 'deep'");
+    expectError(replaced("{\"stage\": \"fixed\", \"outcome\": \"c\", \"why\": \"w\", \"limits\": "
+                         "{\"false_lit_pct\": {\"max\": 2}}},",
+                         ""),
+                "stage fixed (legacy) needs one entry");
+    expectError("{\"expectations\": 3}", "needs an \"expectations\" list");
+    expectError("{", "not valid JSON");
+}
+
+}  // namespace
+}  // namespace sl
