@@ -3,6 +3,7 @@
 // One line per stage as it finishes, an optional JSON report and diff images; exit 0 when every
 // stage shows its lesson, 1 when one does not, 2 on bad input (a student shader that does not
 // build included), 3 on a GL failure.
+#include <algorithm>
 #include <chrono>
 #include <iomanip>
 #include <iostream>
@@ -63,8 +64,10 @@ std::vector<RenderRequest> allRequests(const CheckArgs& a, const RenderRequest& 
             if (s.needsMirror && base.sceneGiven && !sceneHasMirror) {
                 r.scene = "slides";
                 r.sceneGiven = false;  // the stage's own scene
-                notes.push_back("stage " + s.id + ": --scene " + base.scene +
-                                " has no mirror, checked in its own scene");
+                std::string note = "stage " + s.id + ": --scene " + base.scene +
+                                   " has no mirror, checked in its own scene";
+                if (std::find(notes.begin(), notes.end(), note) == notes.end())
+                    notes.push_back(note);
             }
             out.push_back(r);
         }
