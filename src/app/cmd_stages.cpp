@@ -9,8 +9,8 @@ namespace sl {
 
 namespace {
 
-// The stage's lesson as `check` judges it: its defaults entry in src/stages/expectations.json
-// (the one source of truth; StageInfo::expectation is the short prose of the same lesson).
+// The stage's lesson as `check` judges it: its defaults entry in src/stages/expectations.json,
+// the one source of truth (`expectation` and `expected` below both come from it).
 const Expectation& defaultsEntry(const StageInfo& s) {
     std::string tree = s.legacyOnly ? "legacy" : "core";
     return *findExpectation(expectations(), s.id, s.defaultScene.empty() ? "slides" : s.defaultScene,
@@ -50,7 +50,7 @@ int listStages(bool json) {
         for (const auto& s : stageRegistry()) {
             nlohmann::json j{{"id", s.id},           {"key", key++},
                              {"title", s.title},     {"lecture", s.lecture},
-                             {"expectation", s.expectation},
+                             {"expectation", defaultsEntry(s).outcome + ": " + defaultsEntry(s).why},
                              {"trees", s.legacyOnly ? nlohmann::json{"legacy"} : nlohmann::json{"core", "legacy"}}};
             j["expected"] = expectedJson(defaultsEntry(s));
             j["parameters"] = nlohmann::json::array();
@@ -65,11 +65,11 @@ int listStages(bool json) {
     int key = 0;
     for (const auto& s : stageRegistry()) {
         std::cout << key++ << "  " << s.id << "  " << s.title << (s.legacyOnly ? "  [legacy only]" : "")
-                  << "\n     " << s.lecture << "\n     expected: " << s.expectation << "\n";
+                  << "\n     " << s.lecture << "\n";
         const Expectation& e = defaultsEntry(s);
         std::string limits;
         for (const Limit& l : e.limits) limits += (limits.empty() ? "" : ", ") + l.figure + " " + l.bound();
-        std::cout << "     check: " << e.outcome << " (" << limits << ")\n";
+        std::cout << "     expected: " << e.outcome << "; check: " << limits << "\n";
         for (const auto& p : s.params)
             std::cout << "     --set " << p.name << "=" << p.defaultText() << "   (" << p.rangeText()
                       << ") " << p.help << "\n";

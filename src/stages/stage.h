@@ -56,7 +56,9 @@ struct StageInfo {
     std::string title;
     std::string lecture;      // which lecture step, in a few words
     std::vector<ParamSpec> params;
-    std::string expectation;  // the expected outcome of the defaults, one line
+    // The lesson of the defaults in prose, for readers of the stage file. What `check` judges and
+    // `stages` shows is the stage's entry in src/stages/expectations.json (one source of truth).
+    std::string expectation;
     bool legacyOnly = false;  // needs the compatibility profile (the fixed-function stage)
     // The built-in scene used when the user gives no --scene ("" = slides), and whether the
     // scene must have a mirror (an explicit --scene without one is a usage error).
