@@ -389,3 +389,22 @@ TEST(MirrorStage, ReflectionFollowsTheCameraAndTheLightFromFrameToFrame) {
     EXPECT_EQ(pixelsOff(moved[1], fresh[0]), 0);
     EXPECT_GT(pixelsOff(moved[0], moved[1]), inMirror / 4) << "the set-up must really change";
 }
+
+TEST(MirrorStage, FigureSeenFromAboveIsDrawn) {
+    std::string dir = tempDir("mirror-figure");
+    std::string output;
+    ASSERT_EQ(runShadowlab("render --stage mirror --figure " + dir + "/top.png", &output), 0)
+        << output;
+    Image figure;
+    ASSERT_EQ(readPng(dir + "/top.png", figure), "");
+    EXPECT_GT(figure.width, 400);
+    // The default camera's eye (-0.6, 2.6, 3.4) mirrored in z = -1.4: z' = -6.2.
+    EXPECT_NE(output.find("eye' (-0.6, -6.2)"), std::string::npos) << output;
+    EXPECT_NE(output.find("near' 4.8"), std::string::npos) << output;
+    // A scene without a mirror is bad input, named by the option.
+    EXPECT_EQ(runShadowlab("render --stage mirror --scene slides --figure " + dir + "/no.png",
+                           &output),
+              2)
+        << output;
+    EXPECT_NE(output.find("--figure"), std::string::npos) << output;
+}
