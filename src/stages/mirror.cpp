@@ -21,8 +21,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// A real mirror returns a little less than all light; the CPU reference uses the same 0.9.
-constexpr float kReflectance = 0.9f;
+constexpr float kReflectance = kMirrorReflectance;  // scene.h: the reference uses the same
 // The back of the mirror: a dull dark grey, lit like any surface (as in the reference).
 const glm::vec3 kBackColour(0.3f);
 
