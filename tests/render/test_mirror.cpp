@@ -224,8 +224,8 @@ TEST_P(MirrorMethods, OddViewsDrawNoNonsense) {
         long off = pixelsOff(out.image, truth);
         std::printf("[ mirror ] %s, %s %s: %ld pixels off the reference by more than 8 levels\n",
                     v.what, treeName(tree), method.c_str(), off);
-        // Measured: at most 736 of 76800 (the eye inside the mirror's plane, mostly along
-        // silhouettes); 2 % allowed.
+        // Measured: at most 736 of 76800 (the eye inside the mirror's plane: silhouettes and
+        // shadow edges); 2 % allowed.
         EXPECT_LT(off, r.width * r.height / 50) << "pixels off by more than 8 levels: " << off;
     }
 }
