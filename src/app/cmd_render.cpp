@@ -1,6 +1,7 @@
 // `shadowlab render --stage ID --out FILE.png`: one headless frame.
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 
 #include "app/bench_run.h"
@@ -41,6 +42,9 @@ void drawMirrorFigure(const RenderRequest& request, const std::string& path) {
         reflected.reason = reason;
     MirrorTopView view =
         mirrorTopView(mirror ? *mirror : *scene.mirror, camera.eye, camera.at, reflected);
+    std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
+    if (!std::filesystem::is_directory(folder))
+        throw UsageError("--figure: the folder '" + folder.string() + "' does not exist");
     std::string err = writeMirrorFigure(path, view);
     if (!err.empty()) throw std::runtime_error("--figure: " + err);
     std::cout << "mirror seen from above -> " << path << "\n" << describeTopView(view);

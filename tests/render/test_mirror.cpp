@@ -402,4 +402,8 @@ TEST(MirrorStage, FigureSeenFromAboveIsDrawn) {
         2)
         << output;
     EXPECT_NE(output.find("--figure"), std::string::npos) << output;
+    EXPECT_EQ(runShadowlab("render --stage mirror --figure " + dir + "/missing/top.png", &output),
+              2)
+        << output;
+    EXPECT_NE(output.find("does not exist"), std::string::npos) << output;
 }
