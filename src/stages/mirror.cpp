@@ -400,7 +400,7 @@ StageInfo mirrorStage() {
                           "the hardware stage's shadow map, in the main view and the reflection"),
     };
     s.expectation =
-        "the reflection matches the exact stencil method (PSNR over the mirror about 30 dB at "
+        "the reflection matches the exact stencil method (PSNR over the mirror about 36 dB at "
         "640x480); nothing behind the mirror shows in it";
     s.defaultScene = "mirror";
     s.needsMirror = true;
