@@ -184,9 +184,10 @@ int runExample(const ExampleArgs& a) {
     makeOutputDir(a.out);
     auto lines = comment(j, origin);
     std::cout << base << ": " << lines[0] << "\n    " << lines[1] << "\n";
-    if (j.contains("figure"))
-        std::cout << "note: this example has a \"figure\" (drawn by a figure function); this "
-                     "build renders the stage only\n";
+    if (j.contains("figure"))  // the hook for a drawn figure (the mirror construction)
+        std::cout << "note: this example has a \"figure\", which `example` does not draw yet; "
+                     "`shadowlab render --stage mirror --figure FILE.png` draws the construction "
+                     "seen from above\n";
     if (j.contains("see") && j["see"].is_string())
         std::cout << "see also: " << j["see"].get<std::string>() << "\n";
     BenchRig rig(toBackend(a.backend));
