@@ -72,3 +72,16 @@ set_tests_properties(example_list PROPERTIES LABELS example PASS_REGULAR_EXPRESS
 add_test(NAME stages_json_expected
          COMMAND sh -c "${SL_EXE} stages --json | python3 -c \"import json,sys; s=json.load(sys.stdin); bad=[x['id'] for x in s if not x['expected']['outcome'] or not x['expected']['limits']]; print('stages without a lesson:', bad); sys.exit(1 if bad or len(s) < 8 else 0)\" && ${SL_EXE} stages | grep -c 'expected: .*; check: ' | grep -qx 8")
 set_tests_properties(stages_json_expected PROPERTIES LABELS check)
+
+# An example whose expected verdict is wrong exits 1 and says so.
+add_test(NAME example_wrong_expectation
+         COMMAND sh -c "${SL_EXE} example ${SL_CHECK_PY}/acne_expected_clean.json --out ${SL_CHECK_DIR}/examples; test $? -eq 1")
+set_tests_properties(example_wrong_expectation PROPERTIES LABELS example
+                     PASS_REGULAR_EXPRESSION "expected fail, got pass: NOT what the lecture shows")
+add_test(NAME example_unknown COMMAND sh -c "${SL_EXE} example acen 2>&1; test $? -eq 2")
+set_tests_properties(example_unknown PROPERTIES LABELS example PASS_REGULAR_EXPRESSION "did you mean 'acne'")
+
+# The same verdicts on the EGL backend (the headless path without OSMesa).
+add_test(NAME check_all_egl
+         COMMAND sh -c "SHADOWLAB_BACKEND=egl ${SL_EXE} check --all --report ${SL_CHECK_DIR}/all-egl.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all-egl.json --count 15 --exit 0")
+set_tests_properties(check_all_egl PROPERTIES LABELS check TIMEOUT 600)
