@@ -5,6 +5,7 @@
 // build included), 3 on a GL failure.
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
@@ -104,6 +105,14 @@ nlohmann::json reportJson(const std::vector<CheckResult>& results, int exitCode,
             {"results", list}};
 }
 
+// An output file's folder must exist before any GL work, so a typo costs nothing.
+void requireFolderOf(const std::string& option, const std::string& file) {
+    if (file.empty()) return;
+    std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
+    if (!std::filesystem::is_directory(folder))
+        throw UsageError(option + ": the folder '" + folder.string() + "' does not exist");
+}
+
 int runCheckCommand(const CheckArgs& a) {
     if (a.all == !a.stage.empty()) throw UsageError("check: give either --stage ID or --all");
     if (!a.diff.empty() && !a.diffDir.empty())
@@ -112,6 +121,8 @@ int runCheckCommand(const CheckArgs& a) {
             "--diff-dir DIR for --all)");
     if (a.all && !a.diff.empty())
         throw UsageError("--diff: with --all use --diff-dir DIR (one image per stage and tree)");
+    requireFolderOf("--report", a.report);
+    requireFolderOf("--diff", a.diff);
     CommonOptions common = a.common;
     common.stage = a.all ? "phong" : a.stage;
     RenderRequest base = toRequest(common);
