@@ -122,9 +122,13 @@ std::vector<ExampleRender> parseExample(const json& j, const std::string& origin
     std::string view = "final";
     text("view", view);
     RenderRequest base = toRequest(o);
-    if (base.scene.find('/') == std::string::npos && base.sceneGiven && base.scene.size() > 5 &&
-        base.scene.substr(base.scene.size() - 5) == ".json")
-        base.scene = dataDir() + "/" + base.scene;  // "scenes/lab.json" from the data folder
+    // A scene file is named relative to the data folder ("scenes/lab.json"), so an example
+    // means the same wherever it is run from; a built-in name ("lab") is left as it is.
+    bool sceneIsFile =
+        base.scene.find('/') != std::string::npos ||
+        (base.scene.size() > 5 && base.scene.substr(base.scene.size() - 5) == ".json");
+    if (base.sceneGiven && sceneIsFile && base.scene.front() != '/')
+        base.scene = dataDir() + "/" + base.scene;
     ViewMode mode = ViewMode::Final;
     if (!parseView(view, mode))
         throw UsageError(origin + ": \"view\": '" + view + "' is not a view");
