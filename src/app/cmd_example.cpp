@@ -10,6 +10,8 @@
 #include "app/bench_output.h"
 #include "app/check_run.h"
 #include "app/commands.h"
+#include "app/mirror_figure.h"
+#include "metrics/mirror_figure.h"
 #include "scene/scene_json.h"
 
 namespace sl {
@@ -79,6 +81,29 @@ glm::vec3 vec3Of(const json& v, const std::string& where) {
         !v[2].is_number())
         throw UsageError(where + " must be three numbers [x, y, z]");
     return {v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
+}
+
+glm::vec2 xzOf(const json& v, const std::string& where) {
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+        throw UsageError(where + " must be two numbers [x, z]");
+    return {v[0].get<float>(), v[1].get<float>()};
+}
+
+// The "figure" of the lecture's mirror exercise: {"p1", "p2", "eye", "at"} in the x-z plane,
+// seen from above. Checked before any GL work; an impossible set-up is bad input.
+MirrorTopView practiceFigure(const json& figure, const std::string& origin) {
+    const std::string where = origin + ": figure";
+    if (!figure.is_object()) throw UsageError(where + " must be an object {p1, p2, eye, at}");
+    for (const auto& [key, value] : figure.items())
+        if (key != "p1" && key != "p2" && key != "eye" && key != "at")
+            throw UsageError(where + "." + key + ": unknown field; allowed: p1, p2, eye, at");
+    for (const char* key : {"p1", "p2", "eye", "at"})
+        if (!figure.contains(key)) throw UsageError(where + " needs \"" + key + "\"");
+    MirrorTopView view =
+        practiceTopView(xzOf(figure["p1"], where + ".p1"), xzOf(figure["p2"], where + ".p2"),
+                        xzOf(figure["eye"], where + ".eye"), xzOf(figure["at"], where + ".at"));
+    if (!view.valid) throw UsageError(where + ": " + view.reason);
+    return view;
 }
 
 void applySets(const json& params, RenderRequest& r, const std::string& where) {
@@ -188,10 +213,8 @@ int runExample(const ExampleArgs& a) {
     makeOutputDir(a.out);
     auto lines = comment(j, origin);
     std::cout << base << ": " << lines[0] << "\n    " << lines[1] << "\n";
-    if (j.contains("figure"))  // the hook for a drawn figure (the mirror construction)
-        std::cout << "note: this example has a \"figure\", which `example` does not draw yet; "
-                     "`shadowlab render --stage mirror --figure FILE.png` draws the construction "
-                     "seen from above\n";
+    std::optional<MirrorTopView> figure;
+    if (j.contains("figure")) figure = practiceFigure(j["figure"], origin);
     if (j.contains("see") && j["see"].is_string())
         std::cout << "see also: " << j["see"].get<std::string>() << "\n";
     BenchRig rig(toBackend(a.backend));
@@ -216,6 +239,12 @@ int runExample(const ExampleArgs& a) {
         std::cout << (er.label.empty() ? "" : er.label + ": ") << stem << ".png  "
                   << checkTableLine(result) << "    expected " << er.expect << ", got " << got
                   << (ok ? ": as the lecture shows" : ": NOT what the lecture shows") << "\n";
+    }
+    if (figure) {  // the exercise's answer: eye', at' and the frustum, printed and drawn
+        std::string path = a.out + "/" + base + "-figure.png";
+        std::string err = writeMirrorFigure(path, *figure);
+        if (!err.empty()) throw std::runtime_error("figure: " + err);
+        std::cout << "the exercise seen from above -> " << path << "\n" << describeTopView(*figure);
     }
     return exitCode;
 }

@@ -1,5 +1,6 @@
 #include "metrics/mirror_figure.h"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -8,6 +9,7 @@ namespace sl {
 namespace {
 
 std::string fmt(float value) {
+    if (std::fabs(value) < 1e-5f) value = 0.0f;  // float rounding, not a figure: 1.2e-07 reads as 0
     char text[32];
     std::snprintf(text, sizeof text, "%.4g", double(value));
     return text;

@@ -15,11 +15,12 @@ namespace sl {
 namespace {
 
 double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
 }
 
 class FixedStage : public Stage {
-public:
+  public:
     void render(FrameContext& f) override {
         int size = f.params.integer("map-size");
         float factor = static_cast<float>(f.params.number("offset-factor"));
@@ -77,7 +78,8 @@ public:
         glDepthFunc(GL_LESS);
         glDisable(GL_BLEND);
         glDisable(GL_ALPHA_TEST);
-        for (GLenum c : {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q}) glDisable(c);
+        for (GLenum c : {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q})
+            glDisable(c);
         glDisable(GL_TEXTURE_2D);
         glBindTexture(GL_TEXTURE_2D, 0);
         glDisable(GL_COLOR_MATERIAL);
@@ -91,7 +93,7 @@ public:
         }
     }
 
-private:
+  private:
     static glm::mat4 viewMatrix(const FrameContext& f) { return cameraViewer(f).view; }
 
     void drawObjects(FrameContext& f, const glm::mat4& view) {
@@ -110,7 +112,8 @@ private:
         glm::mat4 t = glm::transpose(biasMatrix(0.5f) * lightViewProjection_);  // rows as columns
         glLoadMatrixf(glm::value_ptr(view));
         const GLenum coords[] = {GL_S, GL_T, GL_R, GL_Q};
-        const GLenum enables[] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
+        const GLenum enables[] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
+                                  GL_TEXTURE_GEN_Q};
         for (int k = 0; k < 4; ++k) {
             glTexGeni(coords[k], GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
             glTexGenfv(coords[k], GL_EYE_PLANE, glm::value_ptr(t[k]));
@@ -129,14 +132,17 @@ private:
         PassScope pass("shadow");
         GLint maxSize = 0;
         glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-        if (size > maxSize) throw std::invalid_argument("map-size " + std::to_string(size) + " exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize));
+        if (size > maxSize)
+            throw std::invalid_argument("map-size " + std::to_string(size) +
+                                        " exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize));
         if (size != size_) {  // a depth buffer of the map's size to render into and copy from
             fbo_ = Framebuffer::create();
             depthBuffer_ = Renderbuffer::create();
             glBindRenderbuffer(GL_RENDERBUFFER, depthBuffer_.id());
             glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
             ScopedFramebuffer bind(fbo_.id(), size, size);
-            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthBuffer_.id());
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                      depthBuffer_.id());
             glDrawBuffer(GL_NONE);
             glReadBuffer(GL_NONE);
             std::string incomplete = checkFramebufferComplete("fixed-function depth framebuffer");
@@ -146,10 +152,12 @@ private:
         std::vector<Aabb> casters;
         for (const Object& o : f.scene.objects)
             if (o.castsShadow) {  // the floor need not be drawn into the map
-                glm::vec3 half = o.kind == PrimitiveKind::Sphere ? glm::vec3(o.radius) : 0.5f * o.size;
+                glm::vec3 half =
+                    o.kind == PrimitiveKind::Sphere ? glm::vec3(o.radius) : 0.5f * o.size;
                 casters.push_back({o.center - half, o.center + half});
             }
-        LightFrustum lf = fitLightFrustum(f.lightPosition, f.scene.light.target, casters, LightFit::Tight);
+        LightFrustum lf =
+            fitLightFrustum(f.lightPosition, f.scene.light.target, casters, LightFit::Tight);
         lightViewProjection_ = lf.projection * lf.view;
         {
             ScopedFramebuffer bind(fbo_.id(), size, size);
@@ -211,11 +219,11 @@ StageInfo fixedStage() {
     s.title = "The fixed-function way: copy, texgen, GL_COMPARE_R_TO_TEXTURE";
     s.lecture = "the SuperBible chapter: glCopyTexImage2D, eye-linear texgen, alpha test";
     s.params = {
-        ParamSpec::integer("map-size", 512, 16, 8192, 1.0, "shadow map width and height in texels", true),
+        ParamSpec::integer("map-size", 512, 16, 8192, 1.0, "shadow map width and height in texels",
+                           true),
         ParamSpec::number("offset-factor", 2.0, 0.0, 40.0, 1.0, "glPolygonOffset factor"),
         ParamSpec::number("offset-units", 4.0, 0.0, 100.0, 1.0, "glPolygonOffset units"),
     };
-    s.expectation = "shadows in place (per-vertex lighting makes the lit parts look flatter)";
     s.legacyOnly = true;
     s.views = {ViewMode::Final};
     s.create = [] { return std::make_unique<FixedStage>(); };

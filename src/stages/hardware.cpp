@@ -8,10 +8,10 @@ namespace sl {
 namespace {
 
 class HardwareStage : public ShadowStage {
-public:
+  public:
     HardwareStage() : ShadowStage("hardware") {}
 
-protected:
+  protected:
     ShadowMapSettings settings(const ParamSet& p) const override {
         ShadowMapSettings s = commonShadowSettings(p);
         s.storage = parseStorage(p.choice("depth-format"));
@@ -32,15 +32,18 @@ StageInfo hardwareStage() {
     s.title = "Hardware compare: sampler2DShadow, polygon offset, PCF";
     s.lecture = "GL_COMPARE_REF_TO_TEXTURE + GL_LEQUAL, textureProj, glPolygonOffset(2, 4)";
     s.params = commonShadowParams("casters-only");
-    s.params.push_back(ParamSpec::choice("filter", {"linear", "nearest"},
-                                         "linear: 2x2 percentage-closer filtering; nearest: one compare"));
-    s.params.push_back(ParamSpec::number("offset-factor", 2.0, 0.0, 40.0, 1.0, "glPolygonOffset factor (slope)"));
-    s.params.push_back(ParamSpec::number("offset-units", 4.0, 0.0, 100.0, 1.0, "glPolygonOffset units"));
-    s.params.push_back(ParamSpec::choice("depth-format", {"24", "32f", "16"},
-                                         "depth texture format (bits): 16 halves the memory the map re-render writes"));
+    s.params.push_back(
+        ParamSpec::choice("filter", {"linear", "nearest"},
+                          "linear: 2x2 percentage-closer filtering; nearest: one compare"));
+    s.params.push_back(
+        ParamSpec::number("offset-factor", 2.0, 0.0, 40.0, 1.0, "glPolygonOffset factor (slope)"));
+    s.params.push_back(
+        ParamSpec::number("offset-units", 4.0, 0.0, 100.0, 1.0, "glPolygonOffset units"));
+    s.params.push_back(ParamSpec::choice(
+        "depth-format", {"24", "32f", "16"},
+        "depth texture format (bits): 16 halves the memory the map re-render writes"));
     s.params.push_back(ParamSpec::choice("shadow-cull", {"none", "front"},
                                          "front: draw only casters' back faces into the map"));
-    s.expectation = "small errors on both sides: no acne, shadows attached, soft 1-texel edges";
     s.views = shadowViews();
     s.create = [] { return std::make_unique<HardwareStage>(); };
     return s;

@@ -7,10 +7,10 @@ namespace sl {
 namespace {
 
 class MarginStage : public ShadowStage {
-public:
+  public:
     MarginStage() : ShadowStage("margin") {}
 
-protected:
+  protected:
     ShadowMapSettings settings(const ParamSet& p) const override {
         ShadowMapSettings s = commonShadowSettings(p);
         s.storage = parseStorage(p.choice("storage"));
@@ -33,15 +33,18 @@ StageInfo marginStage() {
     s.title = "The margin: constant or slope-scaled from N and L";
     s.lecture = "acne cured by a margin; too much of it detaches shadows";
     s.params = commonShadowParams("all");
-    s.params.push_back(ParamSpec::choice("margin-kind", {"constant", "slope"},
-                                         "constant margin, or clamp(k * tan(acos(N.L)), min, max)"));
-    s.params.push_back(ParamSpec::number("margin", 0.01, 0.0, 0.1, 0.001, "the constant margin (1/256 = 0.0039 for 8 bits)"));
+    s.params.push_back(
+        ParamSpec::choice("margin-kind", {"constant", "slope"},
+                          "constant margin, or clamp(k * tan(acos(N.L)), min, max)"));
+    s.params.push_back(ParamSpec::number("margin", 0.01, 0.0, 0.1, 0.001,
+                                         "the constant margin (1/256 = 0.0039 for 8 bits)"));
     s.params.push_back(ParamSpec::number("slope-k", 0.004, 0.0, 0.1, 0.0005, "slope-scaled: k"));
-    s.params.push_back(ParamSpec::number("slope-min", 0.002, 0.0, 0.1, 0.0005, "slope-scaled: smallest margin"));
-    s.params.push_back(ParamSpec::number("slope-max", 0.03, 0.0, 0.2, 0.001, "slope-scaled: largest margin"));
+    s.params.push_back(
+        ParamSpec::number("slope-min", 0.002, 0.0, 0.1, 0.0005, "slope-scaled: smallest margin"));
+    s.params.push_back(
+        ParamSpec::number("slope-max", 0.03, 0.0, 0.2, 0.001, "slope-scaled: largest margin"));
     s.params.push_back(ParamSpec::choice("storage", {"rgb8", "depth16", "depth24", "depth32f"},
                                          "what the map stores depth in"));
-    s.expectation = "no acne with 0.01 on the 8-bit map; shadows in place";
     s.views = shadowViews();
     s.create = [] { return std::make_unique<MarginStage>(); };
     return s;

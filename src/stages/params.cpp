@@ -98,12 +98,14 @@ std::string ParamSet::set(const std::string& name, const std::string& value) {
         std::string hint = closestMatch(name, names);
         std::string all;
         for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
-        return "unknown parameter '" + name + "'" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
+        return "unknown parameter '" + name + "'" +
+               (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
                "; this stage has: " + (all.empty() ? "none" : all);
     }
     if (p->kind == ParamKind::Choice) {
         if (std::find(p->choices.begin(), p->choices.end(), value) == p->choices.end())
-            return "parameter '" + name + "' must be one of: " + p->rangeText() + " (got '" + value + "')";
+            return "parameter '" + name + "' must be one of: " + p->rangeText() + " (got '" +
+                   value + "')";
         if (choices_[name] != value) ++generation_;
         choices_[name] = value;
         return "";
@@ -152,7 +154,8 @@ std::string closestMatch(const std::string& word, const std::vector<std::string>
             row[0] = i;
             for (std::size_t j = 1; j <= c.size(); ++j) {
                 std::size_t up = row[j];
-                row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (word[i - 1] != c[j - 1])});
+                row[j] =
+                    std::min({row[j] + 1, row[j - 1] + 1, diagonal + (word[i - 1] != c[j - 1])});
                 diagonal = up;
             }
         }

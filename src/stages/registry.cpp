@@ -33,7 +33,9 @@ namespace {
 const char* const kViewNames[] = {"final", "shadow-map", "light", "visibility", "light-depth"};
 }
 
-const char* viewName(ViewMode v) { return kViewNames[static_cast<int>(v)]; }
+const char* viewName(ViewMode v) {
+    return kViewNames[static_cast<int>(v)];
+}
 
 bool parseView(const std::string& text, ViewMode& out) {
     for (int i = 0; i < 5; ++i)
@@ -44,6 +46,8 @@ bool parseView(const std::string& text, ViewMode& out) {
     return false;
 }
 
-std::vector<std::string> allViewNames() { return {std::begin(kViewNames), std::end(kViewNames)}; }
+std::vector<std::string> allViewNames() {
+    return {std::begin(kViewNames), std::end(kViewNames)};
+}
 
 }  // namespace sl

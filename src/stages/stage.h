@@ -1,5 +1,6 @@
-// What a stage is: an id, a title, the lecture step it teaches, its declared parameters, the
-// expected outcome of its defaults, and a render hook. Stages are listed in stage_list.h.
+// What a stage is: an id, a title, the lecture step it teaches, its declared parameters and a
+// render hook (the expected outcome of its defaults: src/stages/expectations.json). Stages are
+// listed in stage_list.h.
 #pragma once
 
 #include <functional>
@@ -37,14 +38,14 @@ struct FrameContext {
     int width = 0, height = 0;
     GLuint target = 0;
     ViewMode view = ViewMode::Final;
-    bool allLit = false;      // the shadow map forced to "everything lit" (for `check`)
-    bool timePasses = false;  // glFinish around passes to time them
+    bool allLit = false;           // the shadow map forced to "everything lit" (for `check`)
+    bool timePasses = false;       // glFinish around passes to time them
     unsigned sceneGeneration = 0;  // bumps when the light or objects move
     RenderStats& stats;
 };
 
 class Stage {
-public:
+  public:
     virtual ~Stage() = default;
     virtual void render(FrameContext& frame) = 0;
     // A readable account of the matrices and choices of the last frame (`render --explain`).
@@ -54,11 +55,10 @@ public:
 struct StageInfo {
     std::string id;
     std::string title;
-    std::string lecture;      // which lecture step, in a few words
+    std::string lecture;  // which lecture step, in a few words
     std::vector<ParamSpec> params;
-    // The lesson of the defaults in prose, for readers of the stage file. What `check` judges and
-    // `stages` shows is the stage's entry in src/stages/expectations.json (one source of truth).
-    std::string expectation;
+    // The expected outcome of the defaults lives in src/stages/expectations.json (one source of
+    // truth for `check`, `stages`, reports and docs), not here.
     bool legacyOnly = false;  // needs the compatibility profile (the fixed-function stage)
     // The built-in scene used when the user gives no --scene ("" = slides), and whether the
     // scene must have a mirror (an explicit --scene without one is a usage error).
