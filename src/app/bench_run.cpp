@@ -4,6 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <sstream>
 
+#include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
 
 namespace sl {
@@ -38,6 +39,7 @@ Renderer& BenchRig::prepare(const BenchConfig& c, const std::optional<glm::vec3>
     std::ostringstream key;
     key << static_cast<int>(c.tree) << "/" << scene << "/" << c.width << "x" << c.height;
     if (key.str() != key_) {  // a new context: drop the renderer (and its GL objects) first
+        idRenderer_.reset();
         renderer_.reset();
         context_.reset();
         context_ = createHeadlessContext(backend_, c.tree, c.width, c.height);
@@ -122,13 +124,15 @@ Accuracy BenchRig::accuracy() {
     Renderer& r = *renderer_;
     int w = context_->width(), h = context_->height();
     std::ostringstream key;
-    key << key_ << "/" << r.lightPosition.x << "," << r.lightPosition.y << "," << r.lightPosition.z;
+    auto put = [&](const glm::vec3& v) { key << "/" << v.x << "," << v.y << "," << v.z; };
+    key << key_ << "/" << r.camera.fovyDegrees;
+    for (const glm::vec3& v : {r.lightPosition, r.camera.eye, r.camera.at}) put(v);
     if (key.str() != referenceKey_) {
         reference_ = traceReference(r.scene(), r.camera, r.lightPosition, w, h);
         referenceKey_ = key.str();
     }
     Accuracy a;
-    if (r.stage().id == "mirror") return a;  // TODO(check): id image + PSNR against stencil
+    if (r.stage().id == "mirror") return mirrorAccuracy();
     r.allLit = false;
     r.render(context_->framebuffer(), w, h);
     Image withShadows = context_->read();
@@ -144,6 +148,44 @@ Accuracy BenchRig::accuracy() {
     a.edgeMeanPx = f.edgeDefined ? f.edgeMeanPx : NAN;
     a.edgeP95Px = f.edgeDefined ? f.edgeP95Px : NAN;
     a.errorPct = 0.5 * (f.falseShadowPct + f.falseLitPct);
+    return a;
+}
+
+// The mirror (GUIDE section 4): which object each mirror pixel shows, against the reference's
+// bounce, and how close the picture is to the exact stencil method, over the mirror's front.
+Accuracy BenchRig::mirrorAccuracy() {
+    Renderer& r = *renderer_;
+    int w = context_->width(), h = context_->height();
+    std::vector<std::uint8_t> mask = mirrorMask(reference_, r.scene());
+    r.allLit = false;
+    r.render(context_->framebuffer(), w, h);
+    Image shown = context_->read();
+    const std::string method = r.params().text("mirror-method");
+    r.params().set("mirror-method", "stencil");
+    r.render(context_->framebuffer(), w, h);
+    Image exact = context_->read();
+    r.params().set("mirror-method", method);
+
+    if (!idRenderer_)  // same shaders (a student's overlay too), the scene painted in id colours
+        idRenderer_ = std::make_unique<Renderer>(
+            idColouredScene(r.scene()),
+            ShaderLibrary(r.shaders().tree(), shaderTreeRoot(r.shaders().tree()),
+                          r.shaders().overlay()),
+            h);
+    Renderer& ids = *idRenderer_;
+    ids.selectStage(r.stage().id);
+    ids.params() = r.params();
+    ids.camera = r.camera;
+    ids.lightPosition = r.lightPosition;
+    ids.view = ViewMode::Final;
+    ids.render(context_->framebuffer(), w, h);
+    std::vector<int> seen =
+        decodeIdImage(context_->read(), mirrorId(r.scene()) - 1, kMirrorReflectance);
+
+    Accuracy a;
+    a.mirrorIdPct = mirrorIdAgreementPct(reference_, seen);
+    a.mirrorPsnrDb = psnrInMask(shown, exact, mask);
+    a.errorPct = 100.0 - a.mirrorIdPct;
     return a;
 }
 

@@ -87,10 +87,12 @@ class BenchRig {
     Accuracy accuracy();
 
   private:
+    Accuracy mirrorAccuracy();
     Backend backend_;
     std::string key_;
     std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<Renderer> idRenderer_;  // the same scene in id colours (mirror figures)
     glm::vec3 sceneLight_{0};
     std::string referenceKey_;
     ReferenceImage reference_;

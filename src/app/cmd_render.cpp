@@ -1,10 +1,15 @@
 // `shadowlab render --stage ID --out FILE.png`: one headless frame.
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 
 #include "app/bench_run.h"
 #include "app/commands.h"
+#include "app/mirror_figure.h"
+#include "metrics/mirror_figure.h"
+#include "render/mirror_pass.h"
+#include "scene/scene_json.h"
 
 namespace sl {
 
@@ -16,11 +21,42 @@ struct RenderArgs {
     bool explain = false;
     int repeat = 10;
     bool moveLight = false;
+    std::string figure;  // --figure: the mirror seen from above
 };
+
+// --figure: the reflected camera of the scene's mirror for the requested eye and at, seen from
+// above (no GL needed).
+void drawMirrorFigure(const RenderRequest& request, const std::string& path) {
+    std::string sceneName = effectiveScene(request);
+    Scene scene = loadScene(sceneName);
+    if (!scene.mirror) throw UsageError("--figure: scene '" + sceneName + "' has no mirror");
+    Camera camera = scene.camera;
+    if (request.eye) camera.eye = *request.eye;
+    if (request.at) camera.at = *request.at;
+    std::string reason;
+    std::optional<Mirror> mirror = drawableMirror(*scene.mirror, &reason);
+    MirrorCamera reflected;
+    if (mirror)
+        reflected = mirrorCamera(*mirror, camera.eye, sceneReachInFront(scene, *mirror));
+    else
+        reflected.reason = reason;
+    MirrorTopView view =
+        mirrorTopView(mirror ? *mirror : *scene.mirror, camera.eye, camera.at, reflected);
+    std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
+    if (!std::filesystem::is_directory(folder))
+        throw UsageError("--figure: the folder '" + folder.string() + "' does not exist");
+    std::string err = writeMirrorFigure(path, view);
+    if (!err.empty()) throw std::runtime_error("--figure: " + err);
+    std::cout << "mirror seen from above -> " << path << "\n" << describeTopView(view);
+}
 
 int renderOnce(const RenderArgs& a) {
     RenderRequest request = toRequest(a.common);
     validateRequest(request);
+    if (!a.figure.empty()) {
+        drawMirrorFigure(request, a.figure);
+        if (a.out.empty()) return kOk;  // the figure alone
+    }
     if (a.out.empty()) throw UsageError("--out: a PNG file name is required");
     auto context = createHeadlessContext(toBackend(a.common.backend), request.tree, request.width,
                                          request.height);
@@ -69,6 +105,8 @@ Command addRenderCommand(CLI::App& app) {
     cmd->add_flag(
         "--move-light", args->moveLight,
         "step the light by half a degree every frame (the map is re-rendered each frame)");
+    cmd->add_option("--figure", args->figure,
+                    "also draw the mirror construction seen from above into this PNG (gnuplot)");
     cmd->add_option("--repeat", args->repeat, "frames timed after the first (median reported)")
         ->check(CLI::Range(0, 1000));
     return {cmd, [args] { return guarded([&] { return renderOnce(*args); }); }};

@@ -47,6 +47,55 @@ double psnrInMask(const Image& a, const Image& b, const std::vector<std::uint8_t
     return 10.0 * std::log10(255.0 * 255.0 / mse);
 }
 
+Scene idColouredScene(const Scene& scene) {
+    Scene painted = scene;
+    painted.background = idColour(0);
+    painted.material = Material{1.0f, 0.0f, 0.0f, scene.material.shininess};
+    for (std::size_t i = 0; i < painted.objects.size(); ++i)
+        painted.objects[i].color = idColour(objectId(i));
+    return painted;
+}
+
+glm::vec3 idColour(int id) {
+    if (id <= 0) return glm::vec3(0.0f);
+    // Fully saturated hue h in [0, 1): the colour wheel's six sectors.
+    float h = std::fmod(0.61803398875f * float(id), 1.0f) * 6.0f;
+    float x = 1.0f - std::fabs(std::fmod(h, 2.0f) - 1.0f);
+    switch (int(h)) {
+        case 0:
+            return {1, x, 0};
+        case 1:
+            return {x, 1, 0};
+        case 2:
+            return {0, 1, x};
+        case 3:
+            return {0, x, 1};
+        case 4:
+            return {x, 0, 1};
+        default:
+            return {1, 0, x};
+    }
+}
+
+std::vector<int> decodeIdImage(const Image& image, int maxId, float scale) {
+    std::vector<glm::vec3> palette;
+    for (int id = 0; id <= maxId; ++id) palette.push_back(idColour(id) * scale * 255.0f);
+    std::vector<int> ids(std::size_t(image.width) * image.height, 0);
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+        glm::vec3 c(image.rgba[4 * k], image.rgba[4 * k + 1], image.rgba[4 * k + 2]);
+        float best = INFINITY;
+        for (int id = 0; id <= maxId; ++id) {
+            glm::vec3 d = c - palette[std::size_t(id)];
+            float distance = glm::dot(d, d);
+            if (distance < best) {
+                best = distance;
+                ids[k] = id;
+            }
+        }
+    }
+    return ids;
+}
+
 std::vector<std::uint8_t> mirrorMask(const ReferenceImage& ref, const Scene& scene) {
     std::vector<std::uint8_t> mask(ref.pixels.size(), 0);
     const int mirror = mirrorId(scene);

@@ -24,6 +24,18 @@ double mirrorIdAgreementPct(const ReferenceImage& ref, const std::vector<int>& r
 constexpr double kPsnrIdentical = 99.0;
 double psnrInMask(const Image& a, const Image& b, const std::vector<std::uint8_t>& mask);
 
+// The object-id picture, made with the real shaders: the scene with every object painted its own
+// flat colour (ambient 1, no diffuse or specular, so any Phong shader returns objectColor
+// unchanged, shadowed or not) on a black background. Rendering it through a stage and decoding
+// the pixels gives which object each pixel shows.
+Scene idColouredScene(const Scene& scene);
+// The flat colour of object id `id` (0 = background, black): hues spread by the golden ratio so
+// that neighbouring ids differ strongly.
+glm::vec3 idColour(int id);
+// Each pixel's id: the nearest of idColour(0..maxId) * `scale` (the mirror's reflectance scales
+// what it shows). Row 0 at the top, like Image.
+std::vector<int> decodeIdImage(const Image& image, int maxId, float scale);
+
 // 1 where the reference sees the front of the mirror (objectId == mirrorId(scene) and a bounce
 // was traced), 0 elsewhere, including the mirror's back.
 std::vector<std::uint8_t> mirrorMask(const ReferenceImage& ref, const Scene& scene);

@@ -170,8 +170,6 @@ const glm::vec3& objectColor(const Scene& scene, int id) {
 
 // The mirror has no colour of its own; its back is drawn as a dull grey surface.
 const glm::vec3 kMirrorBackColor(0.3f);
-// A real mirror reflects a little less than all light.
-constexpr float kMirrorReflectance = 0.9f;
 
 }  // namespace
 

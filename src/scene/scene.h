@@ -39,6 +39,10 @@ struct Mirror {
     float height = 1.0f;  // along up
 };
 
+// A real mirror returns a little less than all light: the GL stage and the CPU reference both
+// scale what the mirror shows by this.
+constexpr float kMirrorReflectance = 0.9f;
+
 struct Camera {
     glm::vec3 eye{0.0f, 2.0f, 4.0f};
     glm::vec3 at{0.0f};

@@ -49,3 +49,10 @@ void compareWindowWithHeadless(const std::string& stage, GlslTree tree) {
 
 TEST(Window, CoreWindowMatchesHeadless) { compareWindowWithHeadless("phong", GlslTree::Core); }
 TEST(Window, LegacyWindowMatchesHeadless) { compareWindowWithHeadless("phong", GlslTree::Legacy); }
+// The mirror stage: the render-to-texture pass inside a window's frame, drawn like headless.
+TEST(Window, MirrorWindowMatchesHeadless) {
+    compareWindowWithHeadless("mirror", GlslTree::Core);
+}
+TEST(Window, LegacyMirrorWindowMatchesHeadless) {
+    compareWindowWithHeadless("mirror", GlslTree::Legacy);
+}

@@ -324,3 +324,34 @@ TEST(Metrics, WorkingRangeWithoutABreakOrWithoutAWorkingPoint) {
     EXPECT_EQ(gap.breaksAfter, 2.0);
     EXPECT_THROW(workingRange({1, 2}, {1}, 5.0), std::invalid_argument);
 }
+
+// ---- the mirror's id picture -----------------------------------------------------------------
+
+TEST(IdPicture, ColoursAreDistinctAndBackgroundIsBlack) {
+    EXPECT_EQ(idColour(0), glm::vec3(0.0f));
+    for (int a = 1; a <= 24; ++a)
+        for (int b = a + 1; b <= 24; ++b)
+            EXPECT_GT(glm::length(idColour(a) - idColour(b)), 0.05f) << a << " vs " << b;
+}
+
+TEST(IdPicture, DecodesScaledColoursToTheirIds) {
+    const int maxId = 6;
+    Image image(maxId + 1, 1);
+    for (int id = 0; id <= maxId; ++id) {
+        glm::vec3 c = idColour(id) * kMirrorReflectance * 255.0f;
+        for (int k = 0; k < 3; ++k) image.at(id, 0)[k] = std::uint8_t(c[k] + 0.5f);
+    }
+    std::vector<int> ids = decodeIdImage(image, maxId, kMirrorReflectance);
+    for (int id = 0; id <= maxId; ++id) EXPECT_EQ(ids[std::size_t(id)], id);
+}
+
+TEST(IdPicture, SceneIsFlatIdColours) {
+    Scene scene;
+    scene.objects.resize(3);
+    Scene painted = idColouredScene(scene);
+    EXPECT_EQ(painted.background, glm::vec3(0.0f));
+    EXPECT_EQ(painted.material.ambient, 1.0f);
+    EXPECT_EQ(painted.material.diffuse, 0.0f);
+    EXPECT_EQ(painted.material.specular, 0.0f);
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(painted.objects[i].color, idColour(objectId(i)));
+}
