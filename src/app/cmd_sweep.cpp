@@ -46,7 +46,7 @@ const std::vector<Axis>& axes() {
          false},
         {"offset",
          "offset-factor",
-         "glPolygonOffset factor (units kept at the stage's)",
+         "glPolygonOffset factor (units kept at each stage default)",
          {0, 0.5, 1, 2, 3, 4, 6, 8, 12, 16, 20, 30, 40},
          {0, 2, 20, 40},
          false},

@@ -19,8 +19,8 @@ MapStorage parseStorage(const std::string& t) {
 
 bool ShadowMapSettings::operator==(const ShadowMapSettings& o) const {
     return storage == o.storage && size == o.size && fit == o.fit && castersOnly == o.castersOnly &&
-           farOverNear == o.farOverNear &&
-           offsetFactor == o.offsetFactor && offsetUnits == o.offsetUnits && cullFront == o.cullFront &&
+           farOverNear == o.farOverNear && offsetFactor == o.offsetFactor &&
+           offsetUnits == o.offsetUnits && cullFront == o.cullFront && cullBack == o.cullBack &&
            depthFlipped == o.depthFlipped && compare == o.compare && linear == o.linear;
 }
 
@@ -139,12 +139,17 @@ void ShadowMap::update(FrameContext& f, const ShadowMapSettings& s, Program& pro
         // With the flipped range, nearer fragments have larger NDC z but smaller window z, so the
         // usual GL_LESS still keeps the nearest one.
         ScopedPolygonOffset offset(s.offsetFactor, s.offsetUnits);
-        ScopedCullFace cull(s.cullFront ? GL_FRONT : GL_NONE);
+        ScopedCullFace cull(s.cullFront ? GL_FRONT : s.cullBack ? GL_BACK : GL_NONE);
         glClearColor(1, 1, 1, 1);  // the far value, in colour too
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         if (!f.allLit)  // forced "everything lit": the map stays at the far value
-            drawSceneFromLight(program, f, lightViewProjection_, s.castersOnly);
+            drawSceneFromLight(program, f, lightViewProjection_, s.castersOnly,
+                               [&](Program&, std::size_t i, const glm::mat4&) {
+                                   if (!s.cullBack) return;
+                                   bool closed = f.scene.objects[i].kind != PrimitiveKind::Quad;
+                                   closed ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+                               });
     }
     ++f.stats.shadowMapRenders;
     if (f.timePasses) {

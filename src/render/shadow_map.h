@@ -19,6 +19,9 @@ struct ShadowMapSettings {
     float farOverNear = 0;  // > 1: the light's near plane forced to far / this (precision sweep)
     float offsetFactor = 0, offsetUnits = 0;  // glPolygonOffset in the shadow pass
     bool cullFront = false;                   // draw only back faces of casters into the map
+    // Skip the back faces of closed casters (boxes, spheres; quads stay two-sided): the depth test
+    // keeps the faces nearest the light anyway, so the map is the same for half the fragments.
+    bool cullBack = false;
     bool depthFlipped = false;  // projection maps near to NDC +1, with glDepthRange(1, 0)
     bool compare = false;       // GL_COMPARE_REF_TO_TEXTURE (sampler2DShadow)
     bool linear = false;        // GL_LINEAR: with compare, 2x2 percentage-closer filtering

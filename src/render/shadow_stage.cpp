@@ -117,6 +117,11 @@ void ShadowStage::describe(FrameContext& f) {
         std::snprintf(line, sizeof line, "casters only: %zu of %zu triangles drawn into the map", drawn, all);
         f.stats.notes.push_back(line);
     }
+    explainedBiasZ_ = biasZ(f.params);
+}
+
+std::string ShadowStage::explain() const {
+    const LightFrustum& lf = map_.frustum();
     std::ostringstream e;
     auto mat = [&](const char* name, const glm::mat4& m) {
         e << name << " =\n";
@@ -130,9 +135,9 @@ void ShadowStage::describe(FrameContext& f) {
     mat("V_light (lookAt)", lf.view);
     mat("P_light", lf.projection);
     e << "depth range " << (settings_.depthFlipped ? "(1, 0), projection flipped: near -> NDC z +1" : "(0, 1)") << "\n";
-    mat("bias (scale/bias)", biasMatrix(biasZ(f.params)));
-    mat("bias * P_light * V_light", biasMatrix(biasZ(f.params)) * map_.lightViewProjection());
-    explanation_ = e.str();
+    mat("bias (scale/bias)", biasMatrix(explainedBiasZ_));
+    mat("bias * P_light * V_light", biasMatrix(explainedBiasZ_) * map_.lightViewProjection());
+    return e.str();
 }
 
 }  // namespace sl

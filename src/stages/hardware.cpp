@@ -20,6 +20,7 @@ class HardwareStage : public ShadowStage {
         s.offsetFactor = static_cast<float>(p.number("offset-factor"));
         s.offsetUnits = static_cast<float>(p.number("offset-units"));
         s.cullFront = p.is("shadow-cull", "front");
+        s.cullBack = p.is("shadow-cull", "back");
         return s;
     }
 };
@@ -42,8 +43,10 @@ StageInfo hardwareStage() {
     s.params.push_back(ParamSpec::choice(
         "depth-format", {"24", "32f", "16"},
         "depth texture format (bits): 16 halves the memory the map re-render writes"));
-    s.params.push_back(ParamSpec::choice("shadow-cull", {"none", "front"},
-                                         "front: draw only casters' back faces into the map"));
+    s.params.push_back(ParamSpec::choice(
+        "shadow-cull", {"back", "none", "front"},
+        "back: skip closed casters' faces turned away from the light (same map, half the "
+        "fragments); none: draw both sides; front: draw only casters' back faces into the map"));
     s.views = shadowViews();
     s.create = [] { return std::make_unique<HardwareStage>(); };
     return s;
