@@ -93,6 +93,6 @@ set_tests_properties(check_all_egl PROPERTIES LABELS check TIMEOUT 600)
 # The mirror exercise's answer, worked by hand: eye (1, 1) reflected through the line p1 (-1, -1.5)
 # - p2 (1, -2.5) lands at (-1.8, -4.6), its foot on the mirror at (-0.4, -1.8) at distance 3.13 (near').
 add_test(NAME example_mirror_exercise
-         COMMAND sh -c "${SL_EXE} example mirror --out ${SL_CHECK_DIR}/examples && test -s ${SL_CHECK_DIR}/examples/mirror-figure.png")
+         COMMAND sh -c "${SL_EXE} example mirror --out ${SL_CHECK_DIR}/exercise && test -s ${SL_CHECK_DIR}/exercise/mirror-figure.png")
 set_tests_properties(example_mirror_exercise PROPERTIES LABELS example
                      PASS_REGULAR_EXPRESSION "eye' \\(-1.8, -4.6\\).*near' 3.13 ")
