@@ -113,8 +113,8 @@ void runResizeScript() {
     static std::size_t step = 0;
     static int waited = 0;
     const int w = g->request.width, h = g->request.height;
-    const ResizeStep steps[] = {{0, 0, true},  {w, h, true}, {16, 16, false},
-                                {0, 0, true},  {1, 1, true}, {w, h, false}};
+    const ResizeStep steps[] = {{0, 0, true}, {w, h, true}, {16, 16, false},
+                                {0, 0, true}, {1, 1, true}, {w, h, false}};
     const std::size_t count = sizeof(steps) / sizeof(steps[0]);
     if (step > count) return;
     if (step > 0) {  // wait for the previous step's size

@@ -9,8 +9,8 @@ using namespace sl::test;
 namespace {
 
 // `extra`: more window options (scripted input); `frames`: how many frames before the screenshot.
-void compareWindowWithHeadless(const std::string& stage, GlslTree tree, const std::string& extra = "",
-                               int frames = 3) {
+void compareWindowWithHeadless(const std::string& stage, GlslTree tree,
+                               const std::string& extra = "", int frames = 3) {
     std::string dir = tempDir("window");
     std::string png = dir + "/window.png";
     std::string output;
