@@ -1,7 +1,25 @@
 #!/usr/bin/env bash
-# Install what is missing, build, and run the whole test suite (unit, render, window under Xvfb).
-set -euo pipefail
+# Install what is missing, build, and run the whole test suite (unit, render, window under Xvfb,
+# the bad-input corpus), then the memory checks: AddressSanitizer + UBSan, the scene fuzzer and
+# valgrind (docs/robustness.md). Every step runs even when an earlier one failed, so one CI run
+# shows every problem; the exit code is 1 if any failed.
+set -uo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/deps.sh
-bash scripts/build.sh
-ctest --test-dir build --output-on-failure -j2
+bash scripts/deps.sh || exit 1
+bash scripts/build.sh || exit 1
+failed=()
+step() {
+  local name=$1 start=$SECONDS
+  shift
+  "$@" || failed+=("$name")
+  echo "test.sh: $name took $((SECONDS - start)) s"
+}
+step ctest ctest --test-dir build --output-on-failure -j2
+step sanitizers bash scripts/sanitizers.sh
+step fuzz bash scripts/fuzz.sh
+step valgrind bash scripts/valgrind.sh
+if [ ${#failed[@]} -gt 0 ]; then
+  echo "test.sh: FAILED: ${failed[*]}"
+  exit 1
+fi
+echo "test.sh: all passed"

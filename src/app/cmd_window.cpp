@@ -10,6 +10,9 @@ Command addWindowCommand(CLI::App& app) {
     addCommonOptions(cmd, args->common);
     cmd->add_option("--frames", args->frames, "render N frames, then exit (for tests)");
     cmd->add_option("--screenshot", args->screenshot, "save the last frame as PNG (with --frames)");
+    cmd->add_option("--keys", args->keys, "press these keys, one per frame (tests; with --frames)");
+    cmd->add_flag("--resize-test", args->resizeTest,
+                  "resize to 0x0, 1x1, 0x0 and back in the first frames (tests; with --frames)");
     return {cmd, [args] { return guarded([&] { return runWindow(*args); }); }};
 }
 

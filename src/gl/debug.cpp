@@ -18,6 +18,9 @@ void report(const std::string& message) {
 void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity,
                              GLsizei length, const GLchar* message, const void* user) {
     // Only real errors count; performance and portability notes from llvmpipe are noise here.
+    // Compile and link failures are the shader library's to report (as ShaderError, with file
+    // and line, exit 2): counted here too they printed twice and made the window exit 3.
+    if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     if (type == GL_DEBUG_TYPE_ERROR) report(message ? message : "(no message)");
 }
 

@@ -22,6 +22,9 @@ public:
     // -1 when the program has no active uniform of that name (setting it is then a no-op, as GL does).
     GLint location(const char* uniform);
     bool has(const char* uniform) { return location(uniform) >= 0; }
+    // A student's program: say once per name on stderr when a uniform the stage sets is not
+    // active in it (a typo, or unused), instead of ignoring it silently.
+    void reportMissingUniforms(bool on) { reportMissing_ = on; }
 
     void set(const char* u, int v) { glUniform1i(location(u), v); }
     void set(const char* u, float v) { glUniform1f(location(u), v); }
@@ -34,6 +37,7 @@ private:
     ProgramHandle handle_;
     std::string name_;
     std::unordered_map<std::string, GLint> locations_;
+    bool reportMissing_ = false;
 };
 
 }  // namespace sl

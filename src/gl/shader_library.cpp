@@ -150,7 +150,11 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     e.program = Program(std::move(program), stage + "/" + pass);
     e.files = vert.files;
     e.files.insert(e.files.end(), frag.files.begin(), frag.files.end());
-    for (const auto& f : e.files) e.stamps.push_back(modificationStamp(f));
+    for (const auto& f : e.files) {
+        e.stamps.push_back(modificationStamp(f));
+        if (!overlay_.empty() && f.rfind(overlay_ + "/", 0) == 0)
+            e.program.reportMissingUniforms(true);
+    }
     return e;
 }
 

@@ -35,6 +35,8 @@ struct WindowState {
     std::chrono::steady_clock::time_point lastPoll = std::chrono::steady_clock::now();
     std::chrono::steady_clock::time_point lastFrame = std::chrono::steady_clock::now();
     int dragX = -1, dragY = -1;
+    bool resizeDone = false;  // --resize-test finished
+    int resizeFrames = 0;     // frames the resize script took
 };
 WindowState* g = nullptr;
 
@@ -93,8 +95,72 @@ void savePng(const std::string& path) {
     }
 }
 
+void keyboard(unsigned char key, int, int);
+void reshape(int w, int h);
+
+// --resize-test, one step at a time: each waits (a bounded number of frames) until the size it
+// asked for has arrived, so the test does not depend on how fast the X server answers.
+// A minimised window reports 0x0 through the reshape callback; X itself cannot make a 0x0
+// window, so those steps call the callback as freeglut would. The real X resizes go to 16x16:
+// under Xvfb (no window manager) a real 1x1 window stops freeglut's redisplays altogether, so
+// 1x1 is reached through the callback too.
+struct ResizeStep {
+    int width, height;
+    bool callbackOnly;
+};
+
+void runResizeScript() {
+    static std::size_t step = 0;
+    static int waited = 0;
+    const int w = g->request.width, h = g->request.height;
+    const ResizeStep steps[] = {{0, 0, true}, {w, h, true}, {16, 16, false},
+                                {0, 0, true}, {1, 1, true}, {w, h, false}};
+    const std::size_t count = sizeof(steps) / sizeof(steps[0]);
+    if (step > count) return;
+    if (step > 0) {  // wait for the previous step's size
+        const ResizeStep& s = steps[step - 1];
+        if ((g->width != s.width || g->height != s.height) && ++waited < 500) return;
+        if (waited >= 500) {
+            std::cerr << "shadowlab: --resize-test: the window never reached " << s.width << "x"
+                      << s.height << "\n";
+            g->exitCode = kGlFailure;
+        }
+    }
+    waited = 0;
+    if (step < count) {
+        const ResizeStep& s = steps[step];
+        if (s.callbackOnly)
+            reshape(s.width, s.height);
+        else
+            glutReshapeWindow(s.width, s.height);
+    }
+    ++step;
+    g->resizeDone = step > count;
+}
+
+// The scripted input of --keys and --resize-test, applied after frame `frame` was drawn.
+void runScript(int frame) {
+    const std::string& keys = g->args.keys;
+    if (frame >= 1 && std::size_t(frame) <= keys.size())
+        keyboard(static_cast<unsigned char>(keys[std::size_t(frame) - 1]), 0, 0);
+    if (g->args.resizeTest) runResizeScript();
+}
+
+// Counts a frame and ends the loop after the last one (with --frames).
+bool finishFrame() {
+    ++g->frame;
+    if (g->args.resizeTest && !g->resizeDone) ++g->resizeFrames;
+    runScript(g->frame);
+    // The resize script's frames come on top of --frames: the last ones are drawn at full size.
+    return g->args.frames > 0 && g->frame >= g->args.frames + g->resizeFrames &&
+           (!g->args.resizeTest || g->resizeDone);
+}
+
 void display() {
-    if (g->width <= 0 || g->height <= 0) return;  // minimised or 0x0: nothing to draw
+    if (g->width <= 0 || g->height <= 0) {  // minimised or 0x0: nothing to draw, time goes on
+        if (finishFrame()) glutLeaveMainLoop();
+        return;
+    }
     auto now = std::chrono::steady_clock::now();
     if (now - g->lastPoll > std::chrono::milliseconds(500)) {  // hot reload of edited shaders
         g->lastPoll = now;
@@ -116,8 +182,8 @@ void display() {
         g->error = e.what();
         if (g->args.frames > 0) g->exitCode = kBadInput;
     }
-    ++g->frame;
-    bool last = g->args.frames > 0 && g->frame >= g->args.frames;
+    bool last = g->args.frames > 0 && g->frame + 1 >= g->args.frames + g->resizeFrames &&
+                (!g->args.resizeTest || g->resizeDone);
     if (last && !g->args.screenshot.empty()) savePng(g->args.screenshot);  // the scene, no HUD
     g->hud->draw(g->renderer->shaders(), hudLines(), g->width, g->height, g->height >= 700 ? 2.0f : 1.0f);
     glutSwapBuffers();
@@ -125,7 +191,7 @@ void display() {
     g->frameMs = 0.9 * g->frameMs + 0.1 * std::chrono::duration<double, std::milli>(now - g->lastFrame).count();
     g->lastFrame = now;
     if (glErrorCount() > 0 && g->args.frames > 0) g->exitCode = kGlFailure;
-    if (last) glutLeaveMainLoop();
+    if (finishFrame()) glutLeaveMainLoop();
 }
 
 void selectStage(std::size_t index) {
@@ -216,6 +282,10 @@ int runWindow(const WindowArgs& args) {
     validateRequest(state.request);
     if (!args.screenshot.empty() && args.frames <= 0)
         throw UsageError("--screenshot needs --frames N (the frame to save)");
+    if ((!args.keys.empty() || args.resizeTest) && args.frames <= 0)
+        throw UsageError("--keys and --resize-test need --frames N (scripted input is for tests)");
+    if (args.keys.find('\x1b') != std::string::npos)
+        throw UsageError("--keys: Esc would quit before the last frame; leave it out");
     g = &state;
 
     int argc = 1;

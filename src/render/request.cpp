@@ -2,6 +2,8 @@
 
 #include <sys/stat.h>
 
+#include <sstream>
+
 #include "scene/scene_json.h"
 
 namespace sl {
@@ -44,13 +46,34 @@ void validateRequest(const RenderRequest& r) {
     }
 }
 
+namespace {
+
+// The same rules as a scene file's light: not inside an object, not at its own target (the
+// light would have no direction to look in).
+void checkLightPosition(const Scene& scene, const glm::vec3& light) {
+    std::ostringstream where;
+    where << "--light " << light.x << "," << light.y << "," << light.z << ": ";
+    for (const Object& o : scene.objects)
+        if (pointInside(o, light))
+            throw UsageError(where.str() + "the light is inside the object '" + o.name + "'");
+    if (glm::length(scene.light.target - light) < 1e-6f)
+        throw UsageError(where.str() +
+                         "the light is at its own target (the scene's light target); "
+                         "move it");
+}
+
+}  // namespace
+
 void applyRequest(Renderer& renderer, const RenderRequest& r) {
     validateRequest(r);
     renderer.selectStage(r.stage);
     if (r.eye) renderer.camera.eye = *r.eye;
     if (r.at) renderer.camera.at = *r.at;
     if (r.fovy) renderer.camera.fovyDegrees = *r.fovy;
-    if (r.light) renderer.lightPosition = *r.light;
+    if (r.light) {
+        checkLightPosition(renderer.scene(), *r.light);
+        renderer.lightPosition = *r.light;
+    }
     if (glm::length(renderer.camera.at - renderer.camera.eye) < 1e-6f)
         throw UsageError("--eye/--at: the camera needs distinct eye and at points");
     renderer.view = r.view;

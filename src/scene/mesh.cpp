@@ -100,21 +100,47 @@ MeshPart addUnitQuad(SceneMesh& m) {
 
 }  // namespace
 
+namespace {
+
+// Vertices of a unit sphere with `segments` around (see addUnitSphere).
+std::size_t sphereVertices(int segments) {
+    return std::size_t(std::max(segments / 2, 6) + 1) * std::size_t(segments + 1);
+}
+
+}  // namespace
+
 SceneMesh tessellate(const Scene& scene, const Camera& camera, int imageHeight) {
+    std::vector<int> segments(scene.objects.size(), 0);
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].kind == PrimitiveKind::Sphere) {
+            segments[i] = sphereSegmentsForHalfPixel(scene.objects[i], camera, imageHeight);
+            total += sphereVertices(segments[i]);
+        }
+    // Many large spheres near the camera could ask for gigabytes (4096 x 512 segments); above
+    // the budget every sphere gets coarser, never below 12 segments.
+    while (total > kSphereVertexBudget) {
+        total = 0;
+        for (std::size_t i = 0; i < segments.size(); ++i)
+            if (segments[i] > 0) {
+                segments[i] = std::max(segments[i] / 2, 12);
+                total += sphereVertices(segments[i]);
+            }
+        if (std::all_of(segments.begin(), segments.end(), [](int s) { return s == 0 || s == 12; }))
+            break;
+    }
     SceneMesh mesh;
     MeshPart cube = addUnitCube(mesh);
     mesh.unitQuad = addUnitQuad(mesh);
-    for (const Object& o : scene.objects) {
-        int segments = 0;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
         MeshPart part = cube;
-        if (o.kind == PrimitiveKind::Sphere) {
-            segments = sphereSegmentsForHalfPixel(o, camera, imageHeight);
-            part = addUnitSphere(mesh, segments);
-        } else if (o.kind == PrimitiveKind::Quad) {
+        if (o.kind == PrimitiveKind::Sphere)
+            part = addUnitSphere(mesh, segments[i]);
+        else if (o.kind == PrimitiveKind::Quad)
             part = mesh.unitQuad;
-        }
         mesh.objects.push_back(part);
-        mesh.sphereSegments.push_back(segments);
+        mesh.sphereSegments.push_back(segments[i]);
     }
     return mesh;
 }

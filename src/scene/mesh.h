@@ -37,7 +37,11 @@ glm::mat4 mirrorModelMatrix(const Mirror& m);
 // a circle of R pixels is off by R (1 - cos(pi / n)) at most.
 int sphereSegmentsForHalfPixel(const Object& sphere, const Camera& camera, int imageHeight);
 
-// Tessellates every object; spheres as fine as sphereSegmentsForHalfPixel asks.
+// Sphere vertices a scene may ask for in all (about 50 MB of vertices and indices).
+constexpr std::size_t kSphereVertexBudget = 2'000'000;
+
+// Tessellates every object; spheres as fine as sphereSegmentsForHalfPixel asks, coarser for all
+// when that would exceed kSphereVertexBudget.
 SceneMesh tessellate(const Scene& scene, const Camera& camera, int imageHeight);
 
 }  // namespace sl

@@ -87,4 +87,7 @@ struct MirrorCorners {
 MirrorCorners mirrorCorners(const Mirror& m);
 glm::vec3 mirrorRight(const Mirror& m);  // cross(up, normal), unit
 
+// Whether p is strictly inside a box or sphere (quads have no inside).
+bool pointInside(const Object& o, const glm::vec3& p);
+
 }  // namespace sl

@@ -98,18 +98,6 @@ private:
     std::string origin_;
 };
 
-bool pointInside(const Object& o, const glm::vec3& p) {
-    switch (o.kind) {
-        case PrimitiveKind::Box: {
-            glm::vec3 d = glm::abs(p - o.center) - 0.5f * o.size;
-            return d.x < 0 && d.y < 0 && d.z < 0;
-        }
-        case PrimitiveKind::Sphere: return glm::length(p - o.center) < o.radius;
-        case PrimitiveKind::Quad: return false;
-    }
-    return false;
-}
-
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& origin) {
@@ -122,6 +110,13 @@ Scene parseScene(const std::string& text, const std::string& origin) {
         auto pos = what.find("parse error");
         throw SceneError(origin + ": not valid JSON: " +
                          (pos == std::string::npos ? what : what.substr(pos)));
+    } catch (const json::exception& e) {
+        // e.g. out_of_range 406 for 1e999: a number beyond double (found by the fuzzer; it used
+        // to escape as an unknown exception, exit code 3).
+        std::string what = e.what();
+        auto pos = what.find("] ");
+        throw SceneError(origin + ": not valid JSON: " +
+                         (pos == std::string::npos ? what : what.substr(pos + 2)));
     }
     Reader r(origin);
     r.allowKeys(doc, "", {"name", "description", "background", "camera", "light", "material",
@@ -222,8 +217,8 @@ Scene parseScene(const std::string& text, const std::string& origin) {
         up -= glm::dot(up, mirror.normal) * mirror.normal;
         if (glm::length(up) < 1e-4f) r.fail("/mirror/up", "must not be parallel to the normal");
         mirror.up = glm::normalize(up);
-        mirror.width = r.number(*m, "/mirror", "width", std::nullopt, 0.0f, 1e4f);
-        mirror.height = r.number(*m, "/mirror", "height", std::nullopt, 0.0f, 1e4f);
+        mirror.width = r.number(*m, "/mirror", "width", std::nullopt, 1e-4f, 1e4f);
+        mirror.height = r.number(*m, "/mirror", "height", std::nullopt, 1e-4f, 1e4f);
         s.mirror = mirror;
     }
     return s;

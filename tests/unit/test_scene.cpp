@@ -95,3 +95,44 @@ TEST(Params, SetValidatesAndSuggests) {
     EXPECT_EQ(p.choice("filter"), "nearest");
     EXPECT_GT(p.generation(), g);
 }
+
+TEST(Tessellation, ManyLargeSpheresStayWithinTheVertexBudget) {
+    // 4000 spheres that each fill most of the view would ask for 100+ segments (5000+ vertices)
+    // apiece, 20M vertices in all (and 512 segments, 2 GB, closer up): the budget coarsens all.
+    Scene s = loadScene("slides");
+    s.objects.clear();
+    Object sphere;
+    sphere.kind = PrimitiveKind::Sphere;
+    sphere.radius = 5.0f;
+    for (int k = 0; k < 4000; ++k) {
+        sphere.center = glm::vec3(0.001f * k, 0, 0);
+        s.objects.push_back(sphere);
+    }
+    s.camera.eye = glm::vec3(0, 8, 8);
+    ASSERT_GE(sphereSegmentsForHalfPixel(s.objects[0], s.camera, 1080), 100);
+    SceneMesh mesh = tessellate(s, s.camera, 1080);
+    EXPECT_LE(mesh.vertices.size(), kSphereVertexBudget + 100);
+    ASSERT_EQ(mesh.sphereSegments.size(), s.objects.size());
+    for (int n : mesh.sphereSegments) EXPECT_GE(n, 12);
+}
+
+TEST(Tessellation, FewSpheresKeepTheirHalfPixelSegments) {
+    Scene s = loadScene("slides");
+    SceneMesh mesh = tessellate(s, s.camera, 480);
+    EXPECT_EQ(mesh.sphereSegments[3], sphereSegmentsForHalfPixel(s.objects[3], s.camera, 480));
+}
+
+TEST(Scene, NumberBeyondDoubleIsASceneError) {
+    // nlohmann throws out_of_range (not parse_error) for 1e999; found by the fuzzer.
+    std::string e = errorOf(R"({"camera": {"eye": [0, 1e999, 4], "at": [0, 0, 0]}})");
+    EXPECT_NE(e.find("t.json: not valid JSON: number overflow parsing '1e999'"), std::string::npos)
+        << e;
+}
+
+TEST(Scene, MirrorOfZeroSizeIsRejected) {
+    std::string e = errorOf(R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]},
+      "light": {"position": [2, 1, 0]},
+      "objects": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.5}],
+      "mirror": {"center": [0, 0.5, -1], "width": 0, "height": 1}})");
+    EXPECT_NE(e.find("/mirror/width: must be a number in"), std::string::npos) << e;
+}

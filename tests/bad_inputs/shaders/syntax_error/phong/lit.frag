@@ -1,0 +1,8 @@
+#version 330 core
+in vec3 worldPosition;
+in vec3 worldNormal;
+out vec4 fragColor;
+void main()
+{
+    fragColor = vec4(1.0) +;
+}
