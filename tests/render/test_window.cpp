@@ -50,8 +50,12 @@ void compareWindowWithHeadless(const std::string& stage, GlslTree tree,
 
 }  // namespace
 
-TEST(Window, CoreWindowMatchesHeadless) { compareWindowWithHeadless("phong", GlslTree::Core); }
-TEST(Window, LegacyWindowMatchesHeadless) { compareWindowWithHeadless("phong", GlslTree::Legacy); }
+TEST(Window, CoreWindowMatchesHeadless) {
+    compareWindowWithHeadless("phong", GlslTree::Core);
+}
+TEST(Window, LegacyWindowMatchesHeadless) {
+    compareWindowWithHeadless("phong", GlslTree::Legacy);
+}
 // The mirror stage: the render-to-texture pass inside a window's frame, drawn like headless.
 TEST(Window, MirrorWindowMatchesHeadless) {
     compareWindowWithHeadless("mirror", GlslTree::Core);
@@ -74,25 +78,26 @@ std::string keysForEveryStage() {
     return keys;
 }
 
-}  // namespace
-
-TEST(Window, SurvivesEveryKeyInEveryStageLegacy) {
+// Presses every key in every stage in a real window of the tree; the run must end normally.
+void pressEveryKeyInEveryStage(GlslTree tree) {
     std::string keys = keysForEveryStage();
     std::string output;
-    int code = runShadowlab("window --glsl legacy --size 200x150 --frames " +
-                                std::to_string(keys.size() + 2) + " --keys '" + keys + "'",
-                            &output);
+    int code =
+        runShadowlab(std::string("window --glsl ") + treeName(tree) + " --size 200x150 --frames " +
+                         std::to_string(keys.size() + 2) + " --keys '" + keys + "'",
+                     &output);
     EXPECT_EQ(code, 0) << output;
 }
 
+}  // namespace
+
+TEST(Window, SurvivesEveryKeyInEveryStageLegacy) {
+    pressEveryKeyInEveryStage(GlslTree::Legacy);
+}
+
+// Key 6 (fixed) is legacy-only: the core window shows why and stays on the stage it had.
 TEST(Window, SurvivesEveryKeyInEveryStageCore) {
-    // Key 6 (fixed) is legacy-only: the core window shows why and stays on the stage it had.
-    std::string keys = keysForEveryStage();
-    std::string output;
-    int code = runShadowlab("window --glsl core --size 200x150 --frames " +
-                                std::to_string(keys.size() + 2) + " --keys '" + keys + "'",
-                            &output);
-    EXPECT_EQ(code, 0) << output;
+    pressEveryKeyInEveryStage(GlslTree::Core);
 }
 
 // Minimised (0x0), 1x1, 0x0 and back: the last frame is the same picture as before.
