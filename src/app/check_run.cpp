@@ -107,6 +107,12 @@ CheckResult runCheck(BenchRig& rig, const RenderRequest& request, const std::str
     if (!SL_CHECK_GL())
         throw std::runtime_error("the check of stage " + r.stage +
                                  " raised a GL error: " + lastGlError());
+    if (!r.expectation.entry) {  // a stage or tree the data file does not cover: nothing to judge
+        r.judgement = {Verdict::Skip,
+                       "no entry in " + expectationsPath() + " for this stage and tree"};
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return r;
+    }
     r.judgement = judge(*r.expectation.entry, r.figureMap());
     if (!r.expectation.exact)
         r.judgement.message += " [no entry for these settings: judged by the defaults' lesson]";
