@@ -34,26 +34,8 @@ Renderer& BenchRig::prepare(const BenchConfig& c, const std::optional<glm::vec3>
     request.sets = c.sets;
     request.scene = c.sceneName();
     request.sceneGiven = true;
-    validateRequest(request);
-    std::string scene = request.scene;
-    std::ostringstream key;
-    key << static_cast<int>(c.tree) << "/" << scene << "/" << c.width << "x" << c.height;
-    if (key.str() != key_) {  // a new context: drop the renderer (and its GL objects) first
-        idRenderer_.reset();
-        renderer_.reset();
-        context_.reset();
-        context_ = createHeadlessContext(backend_, c.tree, c.width, c.height);
-        renderer_ = makeRenderer(request);
-        sceneLight_ = renderer_->lightPosition;
-        key_ = key.str();
-    }
-    renderer_->selectStage(c.stage);
-    renderer_->params() = ParamSet(renderer_->stage().params);  // defaults, then the config's
-    for (const auto& [name, value] : c.sets) renderer_->params().set(name, value);
-    renderer_->lightPosition = light ? *light : sceneLight_;
-    renderer_->allLit = false;
-    renderer_->view = ViewMode::Final;
-    return *renderer_;
+    request.light = light;
+    return prepare(request);
 }
 
 glm::vec3 steppedLight(const glm::vec3& home, const glm::vec3& target, int k) {
@@ -185,9 +167,7 @@ Accuracy shadowAccuracy(const ShadowFigures& f) {
 }
 
 Accuracy BenchRig::accuracy() {
-    Renderer& r = *renderer_;
-    reference();
-    if (r.stage().id == "mirror") return mirrorAccuracy();
+    if (renderer_->stage().id == "mirror") return mirrorAccuracy();
     return shadowAccuracy(shadowEvidence().figures);
 }
 
@@ -213,7 +193,8 @@ ShadowEvidence BenchRig::shadowEvidence() {
 Accuracy BenchRig::mirrorAccuracy() {
     Renderer& r = *renderer_;
     int w = context_->width(), h = context_->height();
-    std::vector<std::uint8_t> mask = mirrorMask(reference_, r.scene());
+    const ReferenceImage& ref = reference();
+    std::vector<std::uint8_t> mask = mirrorMask(ref, r.scene());
     r.allLit = false;
     r.render(context_->framebuffer(), w, h);
     Image shown = context_->read();
@@ -240,7 +221,7 @@ Accuracy BenchRig::mirrorAccuracy() {
         decodeIdImage(context_->read(), mirrorId(r.scene()) - 1, kMirrorReflectance);
 
     Accuracy a;
-    a.mirrorIdPct = mirrorIdAgreementPct(reference_, seen);
+    a.mirrorIdPct = mirrorIdAgreementPct(ref, seen);
     a.mirrorPsnrDb = psnrInMask(shown, exact, mask);
     a.errorPct = 100.0 - a.mirrorIdPct;
     return a;

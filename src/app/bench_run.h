@@ -75,7 +75,8 @@ class BenchRig {
   public:
     explicit BenchRig(Backend backend) : backend_(backend) {}
     // Selects the stage and its parameters (defaults + sets) on a renderer for the config's
-    // tree, the stage's default scene and size. The light goes back to the scene's.
+    // tree, the stage's default scene and size: the request below, built from the config. The
+    // light is `light` (checked like --light) or else the scene's.
     Renderer& prepare(const BenchConfig& c, const std::optional<glm::vec3>& light = std::nullopt);
     // The same for a whole request (`check`): its student overlay and camera are part of the
     // context key; parameters start from the defaults, then the request's camera, light, view

@@ -9,7 +9,8 @@ namespace sl {
 
 glm::mat4 modelMatrix(const Object& o) {
     switch (o.kind) {
-        case PrimitiveKind::Box: return glm::scale(glm::translate(glm::mat4(1), o.center), o.size);
+        case PrimitiveKind::Box:
+            return glm::scale(glm::translate(glm::mat4(1), o.center), o.size);
         case PrimitiveKind::Sphere:
             return glm::scale(glm::translate(glm::mat4(1), o.center), glm::vec3(o.radius));
         case PrimitiveKind::Quad: {
@@ -97,10 +98,6 @@ MeshPart addUnitQuad(SceneMesh& m) {
     part.indexCount = 6;
     return part;
 }
-
-}  // namespace
-
-namespace {
 
 // Vertices of a unit sphere with `segments` around (see addUnitSphere).
 std::size_t sphereVertices(int segments) {

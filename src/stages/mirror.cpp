@@ -21,7 +21,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr float kReflectance = kMirrorReflectance;  // scene.h: the reference uses the same
 // The back of the mirror: a dull dark grey, lit like any surface (as in the reference).
 const glm::vec3 kBackColour(0.3f);
 
@@ -193,7 +192,7 @@ class MirrorStage : public Stage {
         Viewer main = cameraViewer(f);
         drawLit(f, main, false);
         if (reflect)  // the texture on the mirror, at each corner's place in the reflected image
-            drawSurface(f, *mirror, main, mc.cornerUv, true, glm::vec4(1.0f), kReflectance);
+            drawSurface(f, *mirror, main, mc.cornerUv, true, glm::vec4(1.0f), kMirrorReflectance);
         else if (mirror && !mc.valid)  // seen from behind or edge-on: its dark back
             drawBack(f, *mirror);
         endTiming(f, start, false);
@@ -244,7 +243,8 @@ class MirrorStage : public Stage {
         {  // 4. the mirror returns 90%: multiply, and put the mirror's own depth back
             ScopedDepthFunc always(GL_ALWAYS);
             ScopedBlend multiply(GL_ZERO, GL_SRC_COLOR);
-            drawSurface(f, m, main, noUv, false, glm::vec4(glm::vec3(kReflectance), 1.0f), 1.0f);
+            drawSurface(f, m, main, noUv, false, glm::vec4(glm::vec3(kMirrorReflectance), 1.0f),
+                        1.0f);
         }
         endTiming(f, start, true);
     }
