@@ -13,6 +13,11 @@ out vec4 fragColor;
 
 void main()
 {
-    float visibility = shadowCoord.w > 0.0 ? textureProj(shadowMap, shadowCoord) : 1.0;
+    // A fixed-point depth texture clamps the reference to [0, 1]; a float one (depth-format=32f)
+    // does not, and a receiver beyond the light's far plane would fail the compare against the
+    // cleared map. Clamp it here so both formats agree: beyond the far plane only a caster in
+    // the map can shadow.
+    vec4 coord = vec4(shadowCoord.xy, min(shadowCoord.z, shadowCoord.w), shadowCoord.w);
+    float visibility = shadowCoord.w > 0.0 ? textureProj(shadowMap, coord) : 1.0;
     fragColor = shade(worldPosition, worldNormal, visibility, shadowCoord.z / shadowCoord.w);
 }

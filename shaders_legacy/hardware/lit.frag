@@ -12,6 +12,11 @@ uniform sampler2DShadow shadowMap;
 
 void main()
 {
-    float visibility = shadowCoord.w > 0.0 ? shadow2DProj(shadowMap, shadowCoord).r : 1.0;
+    // A fixed-point depth texture clamps the reference to [0, 1]; a float one (depth-format=32f)
+    // does not, and a receiver beyond the light's far plane would fail the compare against the
+    // cleared map. Clamp it here so both formats agree: beyond the far plane only a caster in
+    // the map can shadow.
+    vec4 coord = vec4(shadowCoord.xy, min(shadowCoord.z, shadowCoord.w), shadowCoord.w);
+    float visibility = shadowCoord.w > 0.0 ? shadow2DProj(shadowMap, coord).r : 1.0;
     gl_FragColor = shade(worldPosition, worldNormal, visibility, shadowCoord.z / shadowCoord.w);
 }

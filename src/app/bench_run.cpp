@@ -4,9 +4,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <sstream>
 
-#include "metrics/mirror_metrics.h"
-#include "metrics/shadow_metrics.h"
-
 namespace sl {
 
 std::string BenchConfig::setsText() const {
@@ -74,7 +71,7 @@ BenchRig::Paired BenchRig::timeBesidePhong(const BenchConfig& c, int frames, int
 }
 
 PassSamples BenchRig::time(int warmup, int frames, bool movingLight) {
-    Renderer& r = *renderer_;
+    Renderer& r = renderer();
     const glm::vec3 home = r.lightPosition;
     const glm::vec3 target = r.scene().light.target;
     auto lightFor = [&](int k) { return movingLight ? steppedLight(home, target, k) : home; };
@@ -86,7 +83,7 @@ PassSamples BenchRig::time(int warmup, int frames, bool movingLight) {
         r.lightPosition = lightFor(k);
         glFinish();
         auto start = std::chrono::steady_clock::now();
-        r.render(context_->framebuffer(), context_->width(), context_->height());
+        r.render(context().framebuffer(), context().width(), context().height());
         glFinish();
         double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -100,131 +97,6 @@ PassSamples BenchRig::time(int warmup, int frames, bool movingLight) {
     r.timePasses = false;
     r.lightPosition = home;
     return {frame, shadow, lit, mirror, r.stats.shadowMapRenders - rendersBefore};
-}
-
-Renderer& BenchRig::prepare(const RenderRequest& request) {
-    validateRequest(request);
-    RenderRequest r = request;
-    r.scene = effectiveScene(request);
-    r.sceneGiven = true;
-    // The camera is part of the key: spheres are tessellated for the camera they are seen from.
-    auto vec = [](const std::optional<glm::vec3>& v) {
-        std::ostringstream t;
-        if (v) t << v->x << "," << v->y << "," << v->z;
-        return t.str();
-    };
-    std::ostringstream key;
-    key << static_cast<int>(r.tree) << "/" << r.scene << "/" << r.width << "x" << r.height
-        << "/overlay=" << r.overlay << "/eye=" << vec(r.eye) << "/at=" << vec(r.at)
-        << "/fovy=" << (r.fovy ? std::to_string(*r.fovy) : "");
-    if (key.str() != key_) {
-        reset();
-        context_ = createHeadlessContext(backend_, r.tree, r.width, r.height);
-        renderer_ = makeRenderer(r);
-        sceneLight_ = renderer_->scene().light.position;
-        key_ = key.str();
-    }
-    renderer_->selectStage(r.stage);
-    renderer_->params() = ParamSet(renderer_->stage().params);
-    renderer_->lightPosition = sceneLight_;
-    renderer_->allLit = false;
-    applyRequest(*renderer_, r);
-    return *renderer_;
-}
-
-void BenchRig::reset() {
-    idRenderer_.reset();  // the renderers' GL objects go before the context
-    renderer_.reset();
-    context_.reset();
-    key_.clear();
-    referenceKey_.clear();
-}
-
-const ReferenceImage& BenchRig::reference() {
-    Renderer& r = *renderer_;
-    std::ostringstream key;
-    auto put = [&](const glm::vec3& v) { key << "/" << v.x << "," << v.y << "," << v.z; };
-    key << key_ << "/" << r.camera.fovyDegrees;
-    for (const glm::vec3& v : {r.lightPosition, r.camera.eye, r.camera.at}) put(v);
-    if (key.str() != referenceKey_) {
-        reference_ = traceReference(r.scene(), r.camera, r.lightPosition, context_->width(),
-                                    context_->height());
-        referenceKey_ = key.str();
-    }
-    return reference_;
-}
-
-Accuracy shadowAccuracy(const ShadowFigures& f) {
-    Accuracy a;
-    a.falseShadowPct = f.falseShadowPct;
-    a.falseLitPct = f.falseLitPct;
-    a.falseShadowBandPct = f.falseShadowBandPct;
-    a.falseLitBandPct = f.falseLitBandPct;
-    a.edgeMeanPx = f.edgeDefined ? f.edgeMeanPx : NAN;
-    a.edgeP95Px = f.edgeDefined ? f.edgeP95Px : NAN;
-    a.errorPct = 0.5 * (f.falseShadowPct + f.falseLitPct);
-    return a;
-}
-
-Accuracy BenchRig::accuracy() {
-    if (renderer_->stage().id == "mirror") return mirrorAccuracy();
-    return shadowAccuracy(shadowEvidence().figures);
-}
-
-ShadowEvidence BenchRig::shadowEvidence() {
-    Renderer& r = *renderer_;
-    int w = context_->width(), h = context_->height();
-    const ReferenceImage& ref = reference();
-    ShadowEvidence e;
-    r.allLit = false;
-    r.render(context_->framebuffer(), w, h);
-    e.withShadows = context_->read();
-    r.allLit = true;
-    r.render(context_->framebuffer(), w, h);
-    e.allLit = context_->read();
-    r.allLit = false;
-    e.shadowed = classifyShadowed(e.withShadows, e.allLit);
-    e.figures = shadowFigures(ref, e.shadowed);
-    return e;
-}
-
-// The mirror (GUIDE section 4): which object each mirror pixel shows, against the reference's
-// bounce, and how close the picture is to the exact stencil method, over the mirror's front.
-Accuracy BenchRig::mirrorAccuracy() {
-    Renderer& r = *renderer_;
-    int w = context_->width(), h = context_->height();
-    const ReferenceImage& ref = reference();
-    std::vector<std::uint8_t> mask = mirrorMask(ref, r.scene());
-    r.allLit = false;
-    r.render(context_->framebuffer(), w, h);
-    Image shown = context_->read();
-    const std::string method = r.params().text("mirror-method");
-    r.params().set("mirror-method", "stencil");
-    r.render(context_->framebuffer(), w, h);
-    Image exact = context_->read();
-    r.params().set("mirror-method", method);
-
-    if (!idRenderer_)  // same shaders (a student's overlay too), the scene painted in id colours
-        idRenderer_ = std::make_unique<Renderer>(
-            idColouredScene(r.scene()),
-            ShaderLibrary(r.shaders().tree(), shaderTreeRoot(r.shaders().tree()),
-                          r.shaders().overlay()),
-            h);
-    Renderer& ids = *idRenderer_;
-    ids.selectStage(r.stage().id);
-    ids.params() = r.params();
-    ids.camera = r.camera;
-    ids.lightPosition = r.lightPosition;
-    ids.view = ViewMode::Final;
-    ids.render(context_->framebuffer(), w, h);
-    std::vector<int> seen =
-        decodeIdImage(context_->read(), mirrorId(r.scene()) - 1, kMirrorReflectance);
-
-    Accuracy a;
-    a.mirrorIdPct = mirrorIdAgreementPct(ref, seen);
-    a.mirrorPsnrDb = psnrInMask(shown, exact, mask);
-    a.errorPct = 100.0 - a.mirrorIdPct;
-    return a;
 }
 
 }  // namespace sl

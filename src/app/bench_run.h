@@ -9,11 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "metrics/shadow_metrics.h"
+#include "eval/evaluator.h"
 #include "metrics/timing.h"
-#include "platform/headless.h"
-#include "reference/raytracer.h"
-#include "render/request.h"
 
 namespace sl {
 
@@ -48,44 +45,16 @@ struct PassSamples {
     PassTimes summary() const;
 };
 
-// The accuracy figures of one render (GUIDE section 4). Non-applicable ones stay NaN.
-struct Accuracy {
-    double falseShadowPct = NAN, falseLitPct = NAN;
-    double falseShadowBandPct = NAN, falseLitBandPct = NAN;
-    double edgeMeanPx = NAN, edgeP95Px = NAN;
-    double mirrorIdPct = NAN, mirrorPsnrDb = NAN;
-    // One number for charts: shadow stages the balanced error (false shadow % + false lit %) / 2
-    // outside the edge band; the mirror 100 - id agreement %.
-    double errorPct = NAN;
-};
-
-// The Accuracy of a shadow stage from its figures (edge figures NaN when undefined).
-Accuracy shadowAccuracy(const ShadowFigures& f);
-
-// The two renders and the classification behind a shadow stage's figures (diff images use them).
-struct ShadowEvidence {
-    Image withShadows, allLit;
-    std::vector<std::uint8_t> shadowed;  // classifyShadowed(withShadows, allLit)
-    ShadowFigures figures;
-};
-
-// Holds a context and renderer for the current (backend, tree, scene, size) and rebuilds them only
-// when one of those changes, so a run compiles each stage's shaders once per context.
-class BenchRig {
+// The Evaluator with a clock: configurations timed alone or beside phong. Contexts, renderers
+// and the figures are the Evaluator's.
+class BenchRig : public Evaluator {
   public:
-    explicit BenchRig(Backend backend) : backend_(backend) {}
+    using Evaluator::Evaluator;
+    using Evaluator::prepare;
     // Selects the stage and its parameters (defaults + sets) on a renderer for the config's
     // tree, the stage's default scene and size: the request below, built from the config. The
     // light is `light` (checked like --light) or else the scene's.
     Renderer& prepare(const BenchConfig& c, const std::optional<glm::vec3>& light = std::nullopt);
-    // The same for a whole request (`check`): its student overlay and camera are part of the
-    // context key; parameters start from the defaults, then the request's camera, light, view
-    // and --set values apply.
-    Renderer& prepare(const RenderRequest& request);
-    // Drops the context and renderer, e.g. after a shader error left the GL state unknown.
-    void reset();
-    HeadlessContext& context() { return *context_; }
-    Renderer& renderer() { return *renderer_; }
 
     // `warmup` untimed frames, then `frames` timed ones (glFinish + steady clock). With
     // `movingLight` the light steps around its target every frame, so each frame re-renders
@@ -100,24 +69,6 @@ class BenchRig {
         PassTimes config, phong;
     };
     Paired timeBesidePhong(const BenchConfig& c, int frames, int rounds, bool movingLight);
-    // Renders the current configuration with and without its shadow map and compares both with
-    // the reference (traced once per camera, light and size, then reused).
-    Accuracy accuracy();
-    // The reference for the current camera, light and size (traced once, then reused).
-    const ReferenceImage& reference();
-    // The shadow stages' half of accuracy(): both renders, the classification and the figures.
-    ShadowEvidence shadowEvidence();
-
-  private:
-    Accuracy mirrorAccuracy();
-    Backend backend_;
-    std::string key_;
-    std::unique_ptr<HeadlessContext> context_;
-    std::unique_ptr<Renderer> renderer_;
-    std::unique_ptr<Renderer> idRenderer_;  // the same scene in id colours (mirror figures)
-    glm::vec3 sceneLight_{0};
-    std::string referenceKey_;
-    ReferenceImage reference_;
 };
 
 }  // namespace sl

@@ -1,5 +1,6 @@
 #include "app/check_run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -47,6 +48,74 @@ std::string errorLine(const std::string& text) {
 
 }  // namespace
 
+std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool customView) {
+    std::vector<std::pair<RenderRequest, std::string>> lessons;  // request, lesson label
+    if (narrowed) {
+        lessons.emplace_back(base, "");
+    } else {
+        for (const Expectation* e : lessonsOf(expectations(), base.stage, treeName(base.tree))) {
+            RenderRequest r = base;
+            r.sets = e->set;
+            if (!e->scene.empty()) {
+                r.scene = e->scene;
+                r.sceneGiven = true;
+            }
+            lessons.emplace_back(r, e->label());
+        }
+        if (lessons.empty()) lessons.emplace_back(base, "");  // no entry: judged as a SKIP
+    }
+    std::vector<CheckCase> cases;
+    // View by view, so lessons seen from the same camera share a context and a reference.
+    std::vector<std::string> scenes;
+    for (const auto& [request, label] : lessons) {
+        std::string scene = effectiveScene(request);
+        if (std::find(scenes.begin(), scenes.end(), scene) == scenes.end()) scenes.push_back(scene);
+    }
+    for (const std::string& scene : scenes) {
+        std::vector<GradingView> views = gradingViews(scene);
+        if (customView) views = {{"custom", {}, {}, {}, {}, ""}};
+        for (const GradingView& view : views)
+            for (const auto& [request, label] : lessons) {
+                if (effectiveScene(request) != scene) continue;
+                RenderRequest r = request;
+                if (!customView) {
+                    r.eye = view.eye;
+                    r.at = view.at;
+                    r.light = view.light;
+                    r.fovy = view.fovy;
+                }
+                cases.push_back({r, view.name, label});
+            }
+    }
+    return cases;
+}
+
+std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCase>& cases,
+                                       const std::function<std::string(const CheckCase&)>& diffPath,
+                                       const std::function<void(const CheckResult&)>& progress) {
+    std::vector<CheckResult> results;
+    for (const CheckCase& c : cases) {
+        CheckResult r = runCheck(rig, c.request, diffPath(c));
+        r.view = c.view;
+        r.lesson =
+            c.lesson.empty() && r.expectation.entry ? r.expectation.entry->label() : c.lesson;
+        progress(r);
+        results.push_back(std::move(r));
+        // A shader that does not build fails the same way under every lesson and view: once is
+        // enough to report it.
+        if (results.back().error) break;
+    }
+    return results;
+}
+
+std::string checkTestName(const CheckResult& r) {
+    std::string name = r.stage + "/" + r.tree + "/" + (r.view.empty() ? "scene" : r.view);
+    std::string lesson = r.lesson;
+    if (lesson.rfind(r.stage, 0) == 0) lesson = lesson.substr(r.stage.size());
+    while (!lesson.empty() && lesson[0] == ' ') lesson.erase(0, 1);
+    return lesson.empty() ? name : name + " " + lesson;
+}
+
 std::map<std::string, double> CheckResult::figureMap() const {
     return {{"false_shadow_pct", figures.falseShadowPct},
             {"false_lit_pct", figures.falseLitPct},
@@ -54,11 +123,13 @@ std::map<std::string, double> CheckResult::figureMap() const {
             {"false_lit_band_pct", figures.falseLitBandPct},
             {"edge_mean_px", figures.edgeMeanPx},
             {"edge_p95_px", figures.edgeP95Px},
+            {"dark_without_caster_pct", figures.darkWithoutCasterPct},
+            {"false_shadow_speckle_pct", figures.falseShadowSpecklePct},
             {"mirror_id_pct", figures.mirrorIdPct},
             {"mirror_psnr_db", figures.mirrorPsnrDb}};
 }
 
-CheckResult runCheck(BenchRig& rig, const RenderRequest& request, const std::string& diffPath) {
+CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath) {
     if (request.view != ViewMode::Final)
         throw UsageError("--view " + std::string(viewName(request.view)) +
                          ": check judges the final picture; use --view final (or leave it out)");
@@ -89,8 +160,8 @@ CheckResult runCheck(BenchRig& rig, const RenderRequest& request, const std::str
             r.truthLit = e.figures.truthLit;
             r.truthShadow = e.figures.truthShadow;
             if (!diffPath.empty()) {
-                std::string err =
-                    writePng(diffPath, diffImage(rig.reference(), e.shadowed, e.withShadows));
+                std::string err = writePng(
+                    diffPath, diffImage(rig.reference(), e.shadowed, e.withShadows, e.renderedIds));
                 if (!err.empty()) throw UsageError("--diff: " + err);
                 r.diffFile = diffPath;
             }
@@ -121,19 +192,19 @@ CheckResult runCheck(BenchRig& rig, const RenderRequest& request, const std::str
 }
 
 std::string checkTableHeader() {
-    return "stage     tree    false-shadow %  false-lit %  band fs/fl %   edge mean/p95 px  "
-           "mirror id % / dB  verdict\n";
+    return "stage/tree/view lesson                    false-shadow %  false-lit %  band fs/fl %   "
+           "edge mean/p95 px  mirror id % / dB  verdict\n";
 }
 
 std::string checkTableLine(const CheckResult& r) {
     const Accuracy& a = r.figures;
-    std::string line =
-        padded(r.stage, 10) + padded(r.tree, 7) + fixed(a.falseShadowPct, 9, 2) + "     " +
-        fixed(a.falseLitPct, 9, 2) + "    " + fixed(a.falseShadowBandPct, 6, 1) + "/" +
-        padded(fixed(a.falseLitBandPct, 5, 1), 6) + "  " + fixed(a.edgeMeanPx, 6, 2) + "/" +
-        padded(fixed(a.edgeP95Px, 5, 1), 8) + "  " + fixed(a.mirrorIdPct, 7, 2) + "/" +
-        padded(fixed(a.mirrorPsnrDb, 5, 1), 6) + "   " + padded(r.verdict(), 6) +
-        r.judgement.message;
+    std::string line = padded(checkTestName(r), 40) + fixed(a.falseShadowPct, 9, 2) + "     " +
+                       fixed(a.falseLitPct, 9, 2) + "    " + fixed(a.falseShadowBandPct, 6, 1) +
+                       "/" + padded(fixed(a.falseLitBandPct, 5, 1), 6) + "  " +
+                       fixed(a.edgeMeanPx, 6, 2) + "/" + padded(fixed(a.edgeP95Px, 5, 1), 8) +
+                       "  " + fixed(a.mirrorIdPct, 7, 2) + "/" +
+                       padded(fixed(a.mirrorPsnrDb, 5, 1), 6) + "   " + padded(r.verdict(), 6) +
+                       r.judgement.message;
     return line + "\n";
 }
 
@@ -157,6 +228,9 @@ nlohmann::json checkJson(const CheckResult& r) {
     return {
         {"stage", r.stage},
         {"tree", r.tree},
+        {"view", r.view},
+        {"lesson", r.lesson},
+        {"name", checkTestName(r)},
         {"scene", r.scene},
         {"shaders", r.overlay.empty() ? nlohmann::json() : nlohmann::json(r.overlay)},
         {"size", {r.width, r.height}},

@@ -1,18 +1,21 @@
 // One check: a stage rendered at a request's settings, its figures measured against the
-// reference (through BenchRig, as bench and sweep measure them), and judged against the
+// reference (through the Evaluator, as bench and sweep measure them), and judged against the
 // stage's entry in src/stages/expectations.json. Shared by `check` and `example`.
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "app/bench_run.h"
+#include "eval/evaluator.h"
 #include "stages/expectations.h"
 
 namespace sl {
 
 struct CheckResult {
     std::string stage, tree, scene, overlay;
+    std::string view;    // the grading view's name (expectations.json "views"), or "custom"
+    std::string lesson;  // the expectation entry's label, e.g. "margin margin-kind=slope"
     int width = 0, height = 0;
     ParamSet parameters;  // every parameter's value used
     Camera camera;
@@ -35,7 +38,30 @@ struct CheckResult {
 // when not empty (shadow stages only). A shader that does not build is caught: the result is an
 // ERROR with the compiler's first line, the full message goes to stderr and the rig is reset.
 // Other failures propagate (bad input: UsageError; GL: std::runtime_error).
-CheckResult runCheck(BenchRig& rig, const RenderRequest& request, const std::string& diffPath);
+CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath);
+
+// One thing a (stage, tree) check judges: a lesson entry's settings seen from one view.
+struct CheckCase {
+    RenderRequest request;
+    std::string view, lesson;
+};
+
+// What `check` runs for one stage and tree (`base`): every lesson entry of expectations.json
+// that applies, each under its own scene and settings, unless the user narrowed it (`--set`,
+// `--scene`: the base request alone); and each from every view of its scene, unless the user
+// gave a camera or light (`--eye`, `--at`, `--fovy`, `--light`: one view named "custom").
+std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool customView);
+
+// Runs the cases of one stage and tree in order on `rig`, reporting each result to `progress` as
+// it finishes. `diffPath(case)` names a case's diff image ("" for none).
+std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCase>& cases,
+                                       const std::function<std::string(const CheckCase&)>& diffPath,
+                                       const std::function<void(const CheckResult&)>& progress);
+
+// "margin/core/lecture margin-kind=slope": the stage, tree and view, and the lesson's settings
+// when they are not the defaults (one test per stage, tree, view and lesson in the graders'
+// formats).
+std::string checkTestName(const CheckResult& r);
 
 // The fixed-width table a check prints: a header, then one line per result.
 std::string checkTableHeader();

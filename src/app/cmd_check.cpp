@@ -141,27 +141,58 @@ int runCheckCommand(const CheckArgs& a) {
     for (const auto& n : notes) std::cerr << "shadowlab: note: " << n << "\n";
 
     auto start = std::chrono::steady_clock::now();
-    BenchRig rig(toBackend(a.common.backend));
+    Evaluator rig(toBackend(a.common.backend));
     std::vector<CheckResult> results;
     std::string machine, backend;
     std::cout << "check against " << expectationsPath() << ", " << base.width << "x" << base.height
               << (base.overlay.empty() ? "" : ", shaders " + base.overlay) << "\n"
               << "        " << checkTableHeader();
-    for (std::size_t k = 0; k < requests.size(); ++k) {
-        const RenderRequest& r = requests[k];
-        std::string diff = a.diff;
-        if (!a.diffDir.empty() && r.stage != "mirror")
-            diff = a.diffDir + "/" + r.stage + "-" + treeName(r.tree) + ".png";
-        CheckResult result = runCheck(rig, r, diff);
-        if (machine.empty()) {
-            machine = result.machine;
-            backend = result.backend;
+    // Every (stage, tree) with its lessons and views, planned before any GL work.
+    const bool narrowed = !base.sets.empty() || base.sceneGiven;
+    const bool customView = base.eye || base.at || base.light || base.fovy;
+    std::vector<std::vector<CheckCase>> plan;
+    std::size_t total = 0;
+    for (const RenderRequest& r : requests) {
+        plan.push_back(checkCases(r, narrowed, customView));
+        total += plan.back().size();
+    }
+    for (const auto& cases : plan)
+        for (const CheckCase& c : cases) validateRequest(c.request);
+    auto diffPath = [&](const CheckCase& c) -> std::string {
+        if (c.request.stage == "mirror") return a.diff;
+        std::string slug = c.view;
+        for (const auto& [name, value] : c.request.sets) slug += "-" + name + "=" + value;
+        if (c.request.sceneGiven && c.request.scene != base.scene) slug += "-" + c.request.scene;
+        for (char& ch : slug)
+            if (ch == '/' || ch == ' ' || ch == '+') ch = '_';
+        if (!a.diffDir.empty())
+            return a.diffDir + "/" + c.request.stage + "-" + treeName(c.request.tree) + "-" + slug +
+                   ".png";
+        if (a.diff.empty() || (&c == &plan.front().front())) return a.diff;
+        std::string stem = a.diff, ext;
+        std::size_t dot = stem.rfind('.');
+        if (dot != std::string::npos && dot > stem.rfind('/')) {
+            ext = stem.substr(dot);
+            stem.resize(dot);
         }
-        char counter[32];
-        std::snprintf(counter, sizeof counter, "[%2zu/%zu] ", k + 1, requests.size());
-        std::cout << counter << checkTableLine(result) << std::flush;
-        if (!result.note.empty()) std::cerr << "shadowlab: note: " << result.note << "\n";
-        results.push_back(std::move(result));
+        return stem + "-" + slug + ext;
+    };
+    std::size_t done = 0;
+    for (const auto& cases : plan) {
+        std::vector<CheckResult> stageResults =
+            runCheckCases(rig, cases, diffPath, [&](const CheckResult& result) {
+                char counter[32];
+                std::snprintf(counter, sizeof counter, "[%3zu/%zu] ", ++done, total);
+                std::cout << counter << checkTableLine(result) << std::flush;
+                if (!result.note.empty()) std::cerr << "shadowlab: note: " << result.note << "\n";
+            });
+        for (auto& result : stageResults) {
+            if (machine.empty()) {
+                machine = result.machine;
+                backend = result.backend;
+            }
+            results.push_back(std::move(result));
+        }
     }
     int exitCode = kOk;
     for (const auto& r : results)

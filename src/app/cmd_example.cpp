@@ -217,7 +217,7 @@ int runExample(const ExampleArgs& a) {
     if (j.contains("figure")) figure = practiceFigure(j["figure"], origin);
     if (j.contains("see") && j["see"].is_string())
         std::cout << "see also: " << j["see"].get<std::string>() << "\n";
-    BenchRig rig(toBackend(a.backend));
+    Evaluator rig(toBackend(a.backend));
     int exitCode = kOk;
     for (const auto& er : renders) {
         std::string stem = a.out + "/" + base + (er.label.empty() ? "" : "-" + er.label);

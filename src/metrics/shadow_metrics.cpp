@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 namespace sl {
@@ -117,76 +118,162 @@ std::vector<float> distanceToFeatures(const std::vector<std::uint8_t>& feature, 
     return distance;
 }
 
-ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed) {
+std::vector<float> mapTexelOnScreen(const ReferenceImage& ref, const Camera& camera,
+                                    const glm::mat4& lightViewProjection, int mapSize) {
+    const int w = ref.width, h = ref.height;
+    std::vector<float> band(ref.pixels.size(), 1.0f);
+    if (mapSize <= 0) return band;
+    auto texel = [&](const glm::vec3& p) {  // map coordinates in texels
+        glm::vec4 c = lightViewProjection * glm::vec4(p, 1.0f);
+        return (glm::vec2(c) / c.w * 0.5f + 0.5f) * float(mapSize);
+    };
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const ReferencePixel& p = ref.at(i, j);
+            if (!isEvaluated(ref, p)) continue;
+            // The surface's tangent plane under the rays of the next pixel across and down.
+            glm::vec2 steps[2];
+            bool ok = true;
+            for (int axis = 0; axis < 2 && ok; ++axis) {
+                Ray ray = pixelRay(camera, i + (axis == 0), j + (axis == 1), w, h);
+                float facing = glm::dot(ray.direction, p.normal);
+                if (std::abs(facing) < 1e-6f) {
+                    ok = false;
+                    break;
+                }
+                float t = glm::dot(p.position - ray.origin, p.normal) / facing;
+                steps[axis] = texel(ray.origin + t * ray.direction) - texel(p.position);
+            }
+            if (!ok) continue;
+            // J maps a screen step to a map step; one texel covers 1 / (its smallest singular
+            // value) pixels at most.
+            double a = steps[0].x, b = steps[1].x, c = steps[0].y, d = steps[1].y;
+            double sumSq = a * a + b * b + c * c + d * d, det = a * d - b * c;
+            double disc = std::sqrt(std::max(0.0, sumSq * sumSq - 4.0 * det * det));
+            double smallest = std::sqrt(std::max(0.0, 0.5 * (sumSq - disc)));
+            if (smallest > 1e-9)
+                band[std::size_t(j) * w + i] = float(std::max(1.0, 1.0 / smallest));
+        }
+    return band;
+}
+
+std::vector<std::uint8_t> evaluatedPixels(const ReferenceImage& ref,
+                                          const std::vector<int>& renderedIds) {
+    if (!renderedIds.empty()) requireSize(ref, renderedIds.size(), "evaluatedPixels");
+    std::vector<std::uint8_t> evaluated(ref.pixels.size());
+    for (std::size_t k = 0; k < ref.pixels.size(); ++k)
+        evaluated[k] = isEvaluated(ref, ref.pixels[k]) &&
+                       (renderedIds.empty() || renderedIds[k] == ref.pixels[k].objectId);
+    return evaluated;
+}
+
+ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed,
+                            const ShadowFigureInputs& inputs) {
     requireSize(ref, shadowed.size(), "shadowFigures");
+    if (!inputs.darkWithoutCaster.empty())
+        requireSize(ref, inputs.darkWithoutCaster.size(), "shadowFigures");
+    if (!inputs.bandPx.empty()) requireSize(ref, inputs.bandPx.size(), "shadowFigures");
     const int w = ref.width, h = ref.height;
     auto index = [w](int i, int j) { return std::size_t(j) * w + i; };
 
-    std::vector<std::uint8_t> evaluated(ref.pixels.size()), truth(ref.pixels.size());
-    for (std::size_t k = 0; k < ref.pixels.size(); ++k) {
-        evaluated[k] = isEvaluated(ref, ref.pixels[k]);
-        truth[k] = ref.pixels[k].blocked;
-    }
+    const std::vector<std::uint8_t> evaluated = evaluatedPixels(ref, inputs.renderedIds);
+    auto object = [&](std::size_t k) { return ref.pixels[k].objectId; };
+    auto truth = [&](std::size_t k) -> std::uint8_t { return ref.pixels[k].blocked ? 1 : 0; };
     auto rendered = [&](std::size_t k) -> std::uint8_t { return shadowed[k] ? 1 : 0; };
+    auto band = [&](std::size_t k) { return inputs.bandPx.empty() ? 1.0f : inputs.bandPx[k]; };
 
-    // Does evaluated pixel (i, j) have an evaluated neighbour whose state differs? `diagonal`
-    // chooses the 8-neighbourhood (edge band) or the 4-neighbourhood (boundary).
-    auto hasOtherNeighbour = [&](int i, int j, bool diagonal, auto state) {
-        for (int dj = -1; dj <= 1; ++dj)
-            for (int di = -1; di <= 1; ++di) {
-                if ((di == 0 && dj == 0) || (!diagonal && di != 0 && dj != 0)) continue;
-                int ni = i + di, nj = j + dj;
-                if (ni < 0 || nj < 0 || ni >= w || nj >= h) continue;
-                std::size_t n = index(ni, nj);
-                if (evaluated[n] && state(n) != state(index(i, j))) return true;
-            }
+    // Does evaluated pixel (i, j) have a 4-neighbour of the same object, evaluated, whose state
+    // differs?
+    auto hasOtherNeighbour = [&](int i, int j, auto state) {
+        const std::size_t k = index(i, j);
+        const int offsets[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+        for (const auto& o : offsets) {
+            int ni = i + o[0], nj = j + o[1];
+            if (ni < 0 || nj < 0 || ni >= w || nj >= h) continue;
+            std::size_t n = index(ni, nj);
+            if (evaluated[n] && object(n) == object(k) && state(n) != state(k)) return true;
+        }
         return false;
     };
-    auto truthState = [&](std::size_t k) { return truth[k]; };
 
+    // Per object, the distance of each pixel to the nearest pixel of `mask` on that object.
+    auto distanceWithinObjects = [&](const std::vector<std::uint8_t>& mask) {
+        std::map<int, std::vector<std::uint8_t>> perObject;
+        for (std::size_t k = 0; k < mask.size(); ++k) {
+            if (!mask[k]) continue;
+            auto& m = perObject[object(k)];
+            if (m.empty()) m.assign(mask.size(), 0);
+            m[k] = 1;
+        }
+        std::map<int, std::vector<float>> distance;
+        for (const auto& [id, m] : perObject) distance[id] = distanceToFeatures(m, w, h);
+        return distance;
+    };
+    auto lookUp = [&](const std::map<int, std::vector<float>>& distance, std::size_t k) {
+        auto found = distance.find(object(k));
+        return found == distance.end() ? std::numeric_limits<float>::infinity() : found->second[k];
+    };
+
+    // The true edge and the rendered one. At a silhouette the render cannot show the other
+    // side, so a marked silhouette pixel the render gets right counts as a rendered edge too.
     ShadowFigures figures;
-    long litOut = 0, litOutWrong = 0, litIn = 0, litInWrong = 0;
-    long shadowOut = 0, shadowOutWrong = 0, shadowIn = 0, shadowInWrong = 0;
-    std::vector<std::uint8_t> trueBoundary(ref.pixels.size(), 0);
-    std::vector<std::size_t> renderedBoundary;
+    std::vector<std::uint8_t> trueEdge(ref.pixels.size(), 0), renderedEdge(ref.pixels.size(), 0);
+    std::vector<std::uint8_t> straddling(ref.pixels.size(), 0);  // both sides of the true edge
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            std::size_t k = index(i, j);
+            if (!evaluated[k]) continue;
+            const bool atSilhouette = ref.pixels[k].shadowEdgeAtSilhouette;
+            const bool acrossTruth = hasOtherNeighbour(i, j, truth);
+            trueEdge[k] = atSilhouette || (truth(k) && acrossTruth);
+            straddling[k] = atSilhouette || acrossTruth;
+            renderedEdge[k] = (rendered(k) && hasOtherNeighbour(i, j, rendered)) ||
+                              (atSilhouette && rendered(k) == truth(k));
+            figures.trueBoundary += trueEdge[k];
+            figures.renderedBoundary += renderedEdge[k];
+        }
+    const auto toStraddling = distanceWithinObjects(straddling);
+    const auto toRenderedEdge = distanceWithinObjects(renderedEdge);
+
+    long litOut = 0, litOutWrong = 0, litIn = 0, litInWrong = 0, litWrongSpeckled = 0;
+    long shadowOut = 0, shadowOutWrong = 0, shadowIn = 0, shadowInWrong = 0, darkUnlit = 0;
+    std::vector<double> distances;
+    double sum = 0.0;
+    const double diagonal = std::hypot(double(w), double(h));
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
             std::size_t k = index(i, j);
             if (!evaluated[k]) continue;
             ++figures.evaluated;
-            bool inBand = hasOtherNeighbour(i, j, true, truthState);
-            bool wrong = rendered(k) != truth[k];
-            if (truth[k]) {
+            const bool inBand = lookUp(toStraddling, k) < band(k);
+            const bool wrong = rendered(k) != truth(k);
+            if (truth(k)) {
                 ++figures.truthShadow;
                 (inBand ? shadowIn : shadowOut)++;
                 if (wrong) (inBand ? shadowInWrong : shadowOutWrong)++;
-                if (hasOtherNeighbour(i, j, false, truthState)) {
-                    trueBoundary[k] = 1;
-                    ++figures.trueBoundary;
-                }
             } else {
                 ++figures.truthLit;
                 (inBand ? litIn : litOut)++;
                 if (wrong) (inBand ? litInWrong : litOutWrong)++;
+                if (wrong && !inBand && hasOtherNeighbour(i, j, rendered)) ++litWrongSpeckled;
+                if (!inputs.darkWithoutCaster.empty() && inputs.darkWithoutCaster[k]) ++darkUnlit;
             }
-            if (rendered(k) && hasOtherNeighbour(i, j, false, rendered))
-                renderedBoundary.push_back(k);
+            if (trueEdge[k]) {
+                // How far the render puts this piece of the true edge, beyond the tolerance.
+                double d = std::min(double(lookUp(toRenderedEdge, k)), diagonal);
+                d = std::max(0.0, d - std::max(0.0, double(band(k)) - 1.0));
+                distances.push_back(d);
+                sum += d;
+            }
         }
     figures.falseShadowPct = percent(litOutWrong, litOut);
     figures.falseLitPct = percent(shadowOutWrong, shadowOut);
     figures.falseShadowBandPct = percent(litInWrong, litIn);
     figures.falseLitBandPct = percent(shadowInWrong, shadowIn);
-    figures.renderedBoundary = long(renderedBoundary.size());
+    figures.darkWithoutCasterPct = percent(darkUnlit, figures.truthLit);
+    figures.falseShadowSpecklePct = percent(litWrongSpeckled, litOutWrong);
 
     if (figures.trueBoundary == 0 || figures.renderedBoundary == 0) return figures;
-    std::vector<float> distance = distanceToFeatures(trueBoundary, w, h);
-    std::vector<double> distances;
-    distances.reserve(renderedBoundary.size());
-    double sum = 0.0;
-    for (std::size_t k : renderedBoundary) {
-        distances.push_back(distance[k]);
-        sum += distance[k];
-    }
     std::sort(distances.begin(), distances.end());
     figures.edgeMeanPx = sum / double(distances.size());
     figures.edgeP95Px = percentile(distances, 0.95);
@@ -195,8 +282,9 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
 }
 
 Image diffImage(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed,
-                const Image& withShadows) {
+                const Image& withShadows, const std::vector<int>& renderedIds) {
     requireSize(ref, shadowed.size(), "diffImage");
+    const std::vector<std::uint8_t> evaluated = evaluatedPixels(ref, renderedIds);
     if (withShadows.width != ref.width || withShadows.height != ref.height)
         throw std::invalid_argument("diffImage: the render does not match the reference size");
     Image diff(ref.width, ref.height);
@@ -212,7 +300,7 @@ Image diffImage(const ReferenceImage& ref, const std::vector<std::uint8_t>& shad
                 out[3] = 255;
             };
             bool renderedShadow = shadowed[k] != 0;
-            if (!isEvaluated(ref, p)) {
+            if (!evaluated[k]) {
                 paint(255, 255, 255);
             } else if (renderedShadow && !p.blocked) {
                 paint(220, 40, 40);  // false shadow

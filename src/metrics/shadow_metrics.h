@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "math/camera.h"
 #include "metrics/image.h"
 #include "reference/raytracer.h"
 
@@ -23,15 +24,28 @@ struct ClassifyOptions {
 std::vector<std::uint8_t> classifyShadowed(const Image& withShadows, const Image& allLit,
                                            const ClassifyOptions& options = {});
 
-// Definitions (all on the reference image grid):
-//   evaluated   a pixel on an object (objectId != 0), not the mirror, facing the light.
+// Definitions (all on the reference image grid; GUIDE section 4, pictures in docs/check.md):
+//   evaluated   the reference sees a light-facing, non-mirror object there and the render shows
+//               the same object (`renderedIds`, when given: a pixel the rasterizer gives to the
+//               background or a neighbour is a silhouette difference, not a shadow).
+//   neighbours  only evaluated pixels of the same object are neighbours: a boundary against the
+//               background, another object or a face turned away is no shadow edge.
 //   truth       shadowed when the reference says `blocked`.
-//   edge band   evaluated pixels with an evaluated 8-neighbour of the other truth: one pixel on
-//               each side of the true shadow edge, where a one-pixel slip is forgivable.
-//   boundary    an evaluated pixel in shadow with an evaluated 4-neighbour that is lit. Only
-//               the shadow side counts, so a shadow shifted by d pixels gives distances of d.
+//   true edge   a truth-shadowed pixel with a truth-lit neighbour, plus every pixel the shadow
+//               boundary runs along at a silhouette (ReferencePixel::shadowEdgeAtSilhouette).
+//   edge band   the pixels on both sides of the true edge (a neighbour of the other truth, or a
+//               marked silhouette pixel), widened to those closer than `bandPx` (per pixel; at
+//               least 1): where the map's finite resolution may put the rendered edge. The
+//               tolerance is one shadow-map texel as it lands on screen (mapTexelOnScreen), so a
+//               correct method's one-texel slip at a grazing receiver is forgiven and a larger
+//               slip is not.
+//   rendered    a rendered-shadowed pixel with a rendered-lit neighbour, plus a marked
+//   edge        silhouette pixel the render gets right (it cannot show the other side).
+//   edge error  for each true edge pixel, the distance to the nearest rendered edge pixel of the
+//               same object: how far the render puts each piece of the true edge. Acne specks
+//               far from any true edge are false shadow, not edge error.
 struct ShadowFigures {
-    long evaluated = 0;  // pixels facing the light on a non-mirror object
+    long evaluated = 0;  // pixels counted (see above)
     long truthLit = 0, truthShadow = 0;
     // Of the truth-lit evaluated pixels outside the band: % rendered shadowed.
     double falseShadowPct = 0;
@@ -39,23 +53,52 @@ struct ShadowFigures {
     double falseLitPct = 0;
     // The same two inside the band.
     double falseShadowBandPct = 0, falseLitBandPct = 0;
-    // Euclidean distance in pixels from each rendered boundary pixel to the nearest true boundary
-    // pixel: the mean and the 95th percentile (nearest rank). When either boundary set is empty
-    // the distance is undefined: both are -1 and edgeDefined is false.
+    // Of the truth-lit evaluated pixels: % dark even with the map forced to "everything lit"
+    // (darkWithoutCaster, counted in falseShadow too).
+    double darkWithoutCasterPct = 0;
+    // Of the truth-lit evaluated pixels rendered shadowed outside the band: % that touch a
+    // rendered-lit neighbour. Acne is specks and stripes (high); a map that darkens whole
+    // surfaces leaves solid regions (low). NaN-free: 0 when nothing is falsely shadowed.
+    double falseShadowSpecklePct = 0;
+    // Distance in pixels from each true edge pixel to the nearest rendered edge pixel of the same
+    // object (the image's diagonal when there is none), less that pixel's tolerance beyond one
+    // pixel (bandPx - 1, never below 0): the mean and the 95th percentile (nearest rank). When
+    // either set is empty the distance is undefined: both are -1 and edgeDefined is false.
     double edgeMeanPx = -1, edgeP95Px = -1;
     bool edgeDefined = false;
     long renderedBoundary = 0, trueBoundary = 0;
 };
 
+// The inputs beyond the reference and the classification. Every vector is per pixel, row-major,
+// and empty when not known.
+struct ShadowFigureInputs {
+    std::vector<int> renderedIds;                 // the object the render shows (0 background)
+    std::vector<std::uint8_t> darkWithoutCaster;  // dark with the map forced "everything lit"
+    std::vector<float> bandPx;                    // edge tolerance in pixels (>= 1)
+};
+
 // `shadowed` comes from classifyShadowed (one byte per pixel, non-zero = shadowed) and must match
-// the reference size (std::invalid_argument otherwise). Percentages are 0 when nothing is counted.
-ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed);
+// the reference size (std::invalid_argument otherwise), as must every non-empty input.
+// Percentages are 0 when nothing is counted.
+ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed,
+                            const ShadowFigureInputs& inputs = {});
+
+// How many screen pixels one texel of a shadow map (size x size texels over the clip square of
+// `lightViewProjection`) spans on each evaluated surface, at least 1: the largest on-screen step
+// a one-texel move in the map makes, found from the surface's tangent plane under the
+// neighbouring pixels' rays. 1 where not evaluated or mapSize <= 0.
+std::vector<float> mapTexelOnScreen(const ReferenceImage& ref, const Camera& camera,
+                                    const glm::mat4& lightViewProjection, int mapSize);
+
+// Which pixels the figures count (the `evaluated` definition above).
+std::vector<std::uint8_t> evaluatedPixels(const ReferenceImage& ref,
+                                          const std::vector<int>& renderedIds);
 
 // A picture of the disagreement: red (220,40,40) false shadow, blue (40,80,230) false lit, grey
 // where render and reference agree (the luma of withShadows squeezed into 60..200 so it never
-// reads as red or blue), white where the pixel is not evaluated.
+// reads as red or blue), white where the pixel is not evaluated (evaluatedPixels).
 Image diffImage(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed,
-                const Image& withShadows);
+                const Image& withShadows, const std::vector<int>& renderedIds = {});
 
 // Exact Euclidean distance transform: for every pixel of a width x height grid, the distance in
 // pixels to the nearest pixel with feature[k] != 0 (+infinity when there is none).

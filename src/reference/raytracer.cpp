@@ -217,6 +217,49 @@ bool shadowRayBlocked(const Scene& scene, const glm::vec3& position, const glm::
     return false;
 }
 
+namespace {
+
+// Does the surface of pixel k, continued under the ray of pixel (i, j) along its tangent plane,
+// change shadow state there? The continuation must stay within a few pixels' width of the hit
+// point (at a sphere's limb the tangent plane runs off almost parallel to the ray).
+bool shadowChangesBeyond(const Scene& scene, const Camera& camera, const glm::vec3& light,
+                         const ReferencePixel& p, int i, int j, int width, int height) {
+    Ray ray = pixelRay(camera, i, j, width, height);
+    float facing = glm::dot(ray.direction, p.normal);
+    if (std::abs(facing) < 1e-6f) return false;
+    float t = glm::dot(p.position - ray.origin, p.normal) / facing;
+    if (t <= 0.0f) return false;
+    glm::vec3 beyond = ray.origin + t * ray.direction;
+    float pixelWidth = glm::length(p.position - camera.eye) * 2.0f *
+                       std::tan(glm::radians(camera.fovyDegrees) * 0.5f) / float(height);
+    if (glm::length(beyond - p.position) > 4.0f * pixelWidth) return false;
+    if (glm::dot(p.normal, light - beyond) <= 0.0f) return false;  // continued past the terminator
+    return shadowRayBlocked(scene, beyond, p.normal, light) != p.blocked;
+}
+
+}  // namespace
+
+void markSilhouetteShadowEdges(const Scene& scene, const Camera& camera,
+                               const glm::vec3& lightPosition, ReferenceImage& image) {
+    const int w = image.width, h = image.height;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            ReferencePixel& p = image.pixels[std::size_t(j) * w + i];
+            if (p.objectId == 0 || p.objectId == image.mirrorObjectId || !p.facesLight) continue;
+            const int offsets[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+            for (const auto& o : offsets) {
+                int ni = i + o[0], nj = j + o[1];
+                if (ni < 0 || nj < 0 || ni >= w || nj >= h) continue;
+                const ReferencePixel& n = image.pixels[std::size_t(nj) * w + ni];
+                if (n.objectId == p.objectId && n.facesLight) continue;  // not a silhouette
+                if (shadowChangesBeyond(scene, camera, lightPosition, p, ni, nj, w, h)) {
+                    p.shadowEdgeAtSilhouette = true;
+                    break;
+                }
+            }
+        }
+}
+
 ReferenceImage traceReference(const Scene& scene, const Camera& camera,
                               const glm::vec3& lightPosition, int width, int height, int threads) {
     if (width <= 0 || height <= 0) throw std::invalid_argument("traceReference: empty image");
@@ -241,6 +284,7 @@ ReferenceImage traceReference(const Scene& scene, const Camera& camera,
     for (int k = 1; k < threads; ++k) workers.emplace_back(traceRows, k);
     traceRows(0);
     for (std::thread& w : workers) w.join();
+    markSilhouetteShadowEdges(scene, camera, lightPosition, image);
     return image;
 }
 

@@ -22,6 +22,11 @@ struct ReferencePixel {
     glm::vec3 normal{0.0f};
     bool facesLight = false;  // dot(normal, light - position) > 0
     bool blocked = false;     // the segment position -> light hits a shadow-casting object
+    // The true shadow boundary runs along this pixel's silhouette: a 4-neighbour shows something
+    // else (background, another object, a face turned away), and the same surface continued
+    // under that neighbour's ray (its tangent plane) has the other shadow state. Such a boundary
+    // is a shadow edge though no evaluated pixel lies on its other side.
+    bool shadowEdgeAtSilhouette = false;
 
     // Mirror pixels seen from the front only; otherwise bounceObjectId stays -1.
     int bounceObjectId = -1;  // object seen in the mirror (0 = background)
@@ -68,12 +73,17 @@ bool intersectScene(const Scene& scene, const Ray& ray, float tMax, bool include
 bool shadowRayBlocked(const Scene& scene, const glm::vec3& position, const glm::vec3& normal,
                       const glm::vec3& lightPosition);
 
-// Traces one ray per pixel centre (pixelRay, the same conventions as the GL path). Rows are
-// split across `threads` std::threads (0 = hardware concurrency); the result does not depend on
-// the thread count.
+// Traces one ray per pixel centre (pixelRay, the same conventions as the GL path), then marks
+// the silhouette pixels a shadow boundary runs along (shadowEdgeAtSilhouette). Rows are split
+// across `threads` std::threads (0 = hardware concurrency); the result does not depend on the
+// thread count.
 ReferenceImage traceReference(const Scene& scene, const Camera& camera,
                               const glm::vec3& lightPosition, int width, int height,
                               int threads = 0);
+
+// The second pass of traceReference: sets shadowEdgeAtSilhouette on every pixel of `image`.
+void markSilhouetteShadowEdges(const Scene& scene, const Camera& camera,
+                               const glm::vec3& lightPosition, ReferenceImage& image);
 
 // A Phong picture of the reference: ambient + diffuse + specular with scene.material and white
 // light; diffuse and specular are dropped where the point is blocked or faces away. Mirror

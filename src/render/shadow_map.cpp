@@ -27,10 +27,14 @@ bool ShadowMapSettings::operator==(const ShadowMapSettings& o) const {
 std::size_t ShadowMap::bytes() const {
     std::size_t texels = std::size_t(settings_.size) * settings_.size;
     switch (settings_.storage) {
-        case MapStorage::Rgb8: return texels * (3 + 4);  // colour + depth renderbuffer
-        case MapStorage::Depth16: return texels * 2;
-        case MapStorage::Depth24: return texels * 4;
-        case MapStorage::Depth32F: return texels * 4;
+        case MapStorage::Rgb8:
+            return texels * (3 + 4);  // colour + depth renderbuffer
+        case MapStorage::Depth16:
+            return texels * 2;
+        case MapStorage::Depth24:
+            return texels * 4;
+        case MapStorage::Depth32F:
+            return texels * 4;
     }
     return 0;
 }
@@ -40,7 +44,8 @@ void ShadowMap::allocate(const ShadowMapSettings& s) {
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (s.size < 16 || s.size > maxSize)
         throw std::invalid_argument("map-size " + std::to_string(s.size) + " is outside 16 to " +
-                                    std::to_string(maxSize) + " (this driver's GL_MAX_TEXTURE_SIZE)");
+                                    std::to_string(maxSize) +
+                                    " (this driver's GL_MAX_TEXTURE_SIZE)");
     map_ = Texture::create();
     extraColour_.reset();
     depth_.reset();
@@ -63,19 +68,22 @@ void ShadowMap::allocate(const ShadowMapSettings& s) {
 
     ScopedFramebuffer bind(fbo_.id(), s.size, s.size);
     if (s.storage == MapStorage::Rgb8) {
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, s.size, s.size, 0, GL_RGB, GL_UNSIGNED_BYTE, nullptr);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, s.size, s.size, 0, GL_RGB, GL_UNSIGNED_BYTE,
+                     nullptr);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, map_.id(), 0);
         depth_ = Renderbuffer::create();
         glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
         glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, s.size, s.size);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  depth_.id());
         glDrawBuffer(GL_COLOR_ATTACHMENT0);
     } else {
         GLenum format = s.storage == MapStorage::Depth16   ? GL_DEPTH_COMPONENT16
                         : s.storage == MapStorage::Depth24 ? GL_DEPTH_COMPONENT24
                                                            : GL_DEPTH_COMPONENT32F;
         GLenum type = s.storage == MapStorage::Depth32F ? GL_FLOAT : GL_UNSIGNED_INT;
-        glTexImage2D(GL_TEXTURE_2D, 0, format, s.size, s.size, 0, GL_DEPTH_COMPONENT, type, nullptr);
+        glTexImage2D(GL_TEXTURE_2D, 0, format, s.size, s.size, 0, GL_DEPTH_COMPONENT, type,
+                     nullptr);
         if (s.compare) {
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
@@ -88,7 +96,8 @@ void ShadowMap::allocate(const ShadowMapSettings& s) {
             extraColour_ = Texture::create();
             glBindTexture(GL_TEXTURE_2D, extraColour_.id());
             glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, s.size, s.size, 0, GL_RED, GL_FLOAT, nullptr);
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, extraColour_.id(), 0);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                   extraColour_.id(), 0);
             glDrawBuffer(GL_COLOR_ATTACHMENT0);
             addedColour_ = true;
         }
@@ -124,14 +133,19 @@ void ShadowMap::update(FrameContext& f, const ShadowMapSettings& s, Program& pro
                       s.compare != settings_.compare || s.linear != settings_.linear;
     if (reallocate) allocate(s);
     settings_ = s;
-    bool stale = reallocate || f.lightPosition != renderedLight_ || f.sceneGeneration != renderedScene_ ||
-                 f.allLit != renderedAllLit_ || program.id() != renderedProgram_ || s != renderedSettings_;
+    f.stats.mapSize = s.size;
+    f.stats.lightViewProjection = lightViewProjection_;
+    bool stale = reallocate || f.lightPosition != renderedLight_ ||
+                 f.sceneGeneration != renderedScene_ || f.allLit != renderedAllLit_ ||
+                 program.id() != renderedProgram_ || s != renderedSettings_;
     if (!stale) return;
 
     auto start = std::chrono::steady_clock::now();
-    frustum_ = fitLightFrustum(f.lightPosition, f.scene.light.target, boundsInMap(f, s.castersOnly), s.fit);
+    frustum_ = fitLightFrustum(f.lightPosition, f.scene.light.target, boundsInMap(f, s.castersOnly),
+                               s.fit);
     frustum_ = withFarOverNear(frustum_, s.farOverNear);
-    glm::mat4 projection = s.depthFlipped ? depthFlippedProjection(frustum_.projection) : frustum_.projection;
+    glm::mat4 projection =
+        s.depthFlipped ? depthFlippedProjection(frustum_.projection) : frustum_.projection;
     lightViewProjection_ = projection * frustum_.view;
     {
         ScopedFramebuffer bind(fbo_.id(), s.size, s.size);
@@ -152,9 +166,12 @@ void ShadowMap::update(FrameContext& f, const ShadowMapSettings& s, Program& pro
                                });
     }
     ++f.stats.shadowMapRenders;
+    f.stats.lightViewProjection = lightViewProjection_;
     if (f.timePasses) {
         glFinish();
-        f.stats.shadowMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        f.stats.shadowMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
     }
     renderedLight_ = f.lightPosition;
     renderedScene_ = f.sceneGeneration;
@@ -173,7 +190,8 @@ void ShadowMap::bind(int unit) const {
 void ShadowMap::bindPlain(int unit) const {
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_2D, map_.id());
-    glBindSampler(unit, plain_.id());  // compare mode off: sampling a compare texture as plain is undefined
+    glBindSampler(
+        unit, plain_.id());  // compare mode off: sampling a compare texture as plain is undefined
     glActiveTexture(GL_TEXTURE0);
 }
 

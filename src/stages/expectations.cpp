@@ -20,11 +20,6 @@ std::string number(double v) {
     return text;
 }
 
-std::string defaultSceneOf(const std::string& stage) {
-    const StageInfo* info = findStage(stage);
-    return info && !info->defaultScene.empty() ? info->defaultScene : "slides";
-}
-
 std::vector<std::string> treesOf(const StageInfo& info) {
     if (info.legacyOnly) return {"legacy"};
     return {"core", "legacy"};
@@ -125,7 +120,91 @@ Expectation parseEntry(const json& j, const std::string& where) {
     return e;
 }
 
+std::optional<glm::vec3> vec3Of(const json& view, const char* key, const std::string& where) {
+    if (!view.contains(key)) return std::nullopt;
+    const json& v = view[key];
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() ||
+        !v[2].is_number())
+        throw ExpectationError(where + ": \"" + key + "\" must be [x, y, z]");
+    return glm::vec3(v[0].get<float>(), v[1].get<float>(), v[2].get<float>());
+}
+
+std::string readExpectationsText() {
+    std::ifstream in(expectationsPath());
+    if (!in)
+        throw ExpectationError(expectationsPath() + ": cannot be read (set SHADOWLAB_DATA_DIR?)");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
 }  // namespace
+
+std::string defaultSceneOf(const std::string& stage) {
+    const StageInfo* info = findStage(stage);
+    return info && !info->defaultScene.empty() ? info->defaultScene : "slides";
+}
+
+std::vector<GradingView> parseViews(const std::string& text, const std::string& origin,
+                                    const std::string& scene) {
+    json doc = json::parse(text, nullptr, false);
+    std::vector<GradingView> views;
+    if (doc.is_object() && doc.contains("views")) {
+        if (!doc["views"].is_object())
+            throw ExpectationError(origin + ": \"views\" must be an object SCENE: [views]");
+        if (doc["views"].contains(scene)) {
+            const json& list = doc["views"][scene];
+            if (!list.is_array() || list.empty())
+                throw ExpectationError(origin + ": views." + scene + " must be a non-empty list");
+            for (std::size_t k = 0; k < list.size(); ++k) {
+                std::string where = origin + ": views." + scene + "[" + std::to_string(k) + "]";
+                const json& v = list[k];
+                if (!v.is_object() || !v.contains("name") || !v["name"].is_string())
+                    throw ExpectationError(where + ": needs a \"name\"");
+                for (const auto& [key, value] : v.items())
+                    if (key != "name" && key != "eye" && key != "at" && key != "light" &&
+                        key != "fovy" && key != "why")
+                        throw ExpectationError(where + ": unknown field '" + key + "'");
+                GradingView view;
+                view.name = v["name"].get<std::string>();
+                view.eye = vec3Of(v, "eye", where);
+                view.at = vec3Of(v, "at", where);
+                view.light = vec3Of(v, "light", where);
+                if (v.contains("fovy")) {
+                    if (!v["fovy"].is_number())
+                        throw ExpectationError(where + ": \"fovy\" must be a number");
+                    view.fovy = v["fovy"].get<float>();
+                }
+                if (v.contains("why") && v["why"].is_string()) view.why = v["why"];
+                for (const auto& other : views)
+                    if (other.name == view.name)
+                        throw ExpectationError(where + ": the name '" + view.name + "' is taken");
+                views.push_back(view);
+            }
+        }
+    }
+    if (views.empty()) views.push_back({"scene", {}, {}, {}, {}, "the scene's own camera"});
+    return views;
+}
+
+const std::vector<GradingView>& gradingViews(const std::string& scene) {
+    static std::map<std::string, std::vector<GradingView>> cache;
+    auto found = cache.find(scene);
+    if (found == cache.end())
+        found = cache.emplace(scene, parseViews(readExpectationsText(), expectationsPath(), scene))
+                    .first;
+    return found->second;
+}
+
+std::vector<const Expectation*> lessonsOf(const std::vector<Expectation>& book,
+                                          const std::string& stage, const std::string& tree) {
+    std::vector<const Expectation*> lessons;
+    for (const auto& e : book)
+        if (e.stage == stage && coversTree(e, tree) && isDefaultsEntry(e)) lessons.push_back(&e);
+    for (const auto& e : book)
+        if (e.stage == stage && coversTree(e, tree) && !isDefaultsEntry(e)) lessons.push_back(&e);
+    return lessons;
+}
 
 std::string Limit::bound() const {
     if (!std::isnan(min) && !std::isnan(max))
@@ -143,8 +222,10 @@ std::string Expectation::label() const {
 
 const std::vector<std::string>& figureNames() {
     static const std::vector<std::string> names = {
-        "false_shadow_pct", "false_lit_pct", "false_shadow_band_pct", "false_lit_band_pct",
-        "edge_mean_px",     "edge_p95_px",   "mirror_id_pct",         "mirror_psnr_db"};
+        "false_shadow_pct",        "false_lit_pct",  "false_shadow_band_pct",
+        "false_lit_band_pct",      "edge_mean_px",   "edge_p95_px",
+        "mirror_id_pct",           "mirror_psnr_db", "dark_without_caster_pct",
+        "false_shadow_speckle_pct"};
     return names;
 }
 
@@ -180,15 +261,8 @@ std::string expectationsPath() {
 }
 
 const std::vector<Expectation>& expectations() {
-    static const std::vector<Expectation> book = [] {
-        std::ifstream in(expectationsPath());
-        if (!in)
-            throw ExpectationError(expectationsPath() +
-                                   ": cannot be read (set SHADOWLAB_DATA_DIR?)");
-        std::stringstream text;
-        text << in.rdbuf();
-        return parseExpectations(text.str(), expectationsPath());
-    }();
+    static const std::vector<Expectation> book =
+        parseExpectations(readExpectationsText(), expectationsPath());
     return book;
 }
 

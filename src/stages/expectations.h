@@ -5,7 +5,9 @@
 #pragma once
 
 #include <cmath>
+#include <glm/glm.hpp>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -41,8 +43,21 @@ struct Expectation {
     std::string label() const;
 };
 
+// A view a stage is graded from: a camera and, if useful, a light (GUIDE section 4). Views live
+// in the data file per scene, chosen so that every object receives a cast shadow somewhere in
+// one of them and one is near grazing; unset fields keep the scene's own.
+struct GradingView {
+    std::string name;
+    std::optional<glm::vec3> eye, at, light;
+    std::optional<float> fovy;
+    std::string why;
+};
+
 // The figures names a limit may use, in report order.
 const std::vector<std::string>& figureNames();
+
+// The stage's own default scene ("slides" unless it names one).
+std::string defaultSceneOf(const std::string& stage);
 
 // Parses the data file's text; `origin` names it in errors. Checks every entry against the
 // stage registry (stage, scene, parameter names and values) and that each stage has exactly one
@@ -51,6 +66,14 @@ std::vector<Expectation> parseExpectations(const std::string& text, const std::s
 // <data dir>/src/stages/expectations.json, loaded once.
 std::string expectationsPath();
 const std::vector<Expectation>& expectations();
+// The views of a scene from the same file (parsed with it); a scene it does not list is graded
+// from its own camera alone (one view named "scene").
+std::vector<GradingView> parseViews(const std::string& text, const std::string& origin,
+                                    const std::string& scene);
+const std::vector<GradingView>& gradingViews(const std::string& scene);
+// Every entry of `stage` for `tree`, the defaults' entry first, then in file order.
+std::vector<const Expectation*> lessonsOf(const std::vector<Expectation>& book,
+                                          const std::string& stage, const std::string& tree);
 
 // The entry for what is being checked: the one whose scene, tree and settings match exactly
 // (every parameter equal, compared through ParamSet so 0.01 == 0.010); else the stage's defaults

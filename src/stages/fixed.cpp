@@ -28,6 +28,8 @@ class FixedStage : public Stage {
         auto start = std::chrono::steady_clock::now();
         unsigned before = f.stats.shadowMapRenders;
         updateMap(f, size, factor, units);
+        f.stats.mapSize = size;
+        f.stats.lightViewProjection = lightViewProjection_;
         if (f.timePasses && f.stats.shadowMapRenders != before) {
             glFinish();
             f.stats.shadowMs = msSince(start);
@@ -225,6 +227,7 @@ StageInfo fixedStage() {
         ParamSpec::number("offset-units", 4.0, 0.0, 100.0, 1.0, "glPolygonOffset units"),
     };
     s.legacyOnly = true;
+    s.unshadowedStage = "";  // its Gouraud lighting is its own: judged against its all-lit render
     s.views = {ViewMode::Final};
     s.create = [] { return std::make_unique<FixedStage>(); };
     return s;

@@ -25,6 +25,10 @@ struct RenderStats {
     unsigned shadowMapRenders = 0;  // cumulative: the map is re-rendered only when inputs change
     double shadowMs = 0, litMs = 0, mirrorMs = 0;
     std::vector<std::string> notes;  // shown in the HUD and by `render --explain`
+    // The shadow map the frame looked up (mapSize 0: none), so the figures can tell how large one
+    // of its texels lands on screen.
+    glm::mat4 lightViewProjection{1.0f};
+    int mapSize = 0;
 };
 
 // Everything a stage may use to draw one frame. The stage draws into `target`.
@@ -65,6 +69,10 @@ struct StageInfo {
     std::string defaultScene;
     bool needsMirror = false;
     std::vector<ViewMode> views;
+    // The stage whose picture is this one's lighting without shadows, drawn with our shaders:
+    // `check` finds "dark without a caster" against it. Empty: the stage's own all-lit render
+    // (the fixed-function stage, whose lighting no shader of ours reproduces).
+    std::string unshadowedStage = "phong";
     std::function<std::unique_ptr<Stage>()> create;
 };
 

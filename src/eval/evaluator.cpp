@@ -1,0 +1,172 @@
+#include "eval/evaluator.h"
+
+#include <sstream>
+
+#include "metrics/mirror_metrics.h"
+#include "metrics/shadow_metrics.h"
+
+namespace sl {
+
+Renderer& Evaluator::prepare(const RenderRequest& request) {
+    validateRequest(request);
+    RenderRequest r = request;
+    r.scene = effectiveScene(request);
+    r.sceneGiven = true;
+    // The camera is part of the key: spheres are tessellated for the camera they are seen from.
+    auto vec = [](const std::optional<glm::vec3>& v) {
+        std::ostringstream t;
+        if (v) t << v->x << "," << v->y << "," << v->z;
+        return t.str();
+    };
+    std::ostringstream key;
+    key << static_cast<int>(r.tree) << "/" << r.scene << "/" << r.width << "x" << r.height
+        << "/overlay=" << r.overlay << "/eye=" << vec(r.eye) << "/at=" << vec(r.at)
+        << "/fovy=" << (r.fovy ? std::to_string(*r.fovy) : "");
+    if (key.str() != key_) {
+        reset();
+        context_ = createHeadlessContext(backend_, r.tree, r.width, r.height);
+        renderer_ = makeRenderer(r);
+        sceneLight_ = renderer_->scene().light.position;
+        key_ = key.str();
+    }
+    renderer_->selectStage(r.stage);
+    renderer_->params() = ParamSet(renderer_->stage().params);
+    renderer_->lightPosition = sceneLight_;
+    renderer_->allLit = false;
+    applyRequest(*renderer_, r);
+    return *renderer_;
+}
+
+void Evaluator::reset() {
+    idRenderer_.reset();  // the renderers' GL objects go before the context
+    shippedRenderer_.reset();
+    shippedIdRenderer_.reset();
+    renderer_.reset();
+    context_.reset();
+    key_.clear();
+    referenceKey_.clear();
+}
+
+const ReferenceImage& Evaluator::reference() {
+    Renderer& r = *renderer_;
+    std::ostringstream key;
+    auto put = [&](const glm::vec3& v) { key << "/" << v.x << "," << v.y << "," << v.z; };
+    key << key_ << "/" << r.camera.fovyDegrees;
+    for (const glm::vec3& v : {r.lightPosition, r.camera.eye, r.camera.at}) put(v);
+    if (key.str() != referenceKey_) {
+        reference_ = traceReference(r.scene(), r.camera, r.lightPosition, context_->width(),
+                                    context_->height());
+        referenceKey_ = key.str();
+    }
+    return reference_;
+}
+
+Accuracy shadowAccuracy(const ShadowFigures& f) {
+    Accuracy a;
+    a.falseShadowPct = f.falseShadowPct;
+    a.falseLitPct = f.falseLitPct;
+    a.falseShadowBandPct = f.falseShadowBandPct;
+    a.falseLitBandPct = f.falseLitBandPct;
+    a.edgeMeanPx = f.edgeDefined ? f.edgeMeanPx : NAN;
+    a.edgeP95Px = f.edgeDefined ? f.edgeP95Px : NAN;
+    a.darkWithoutCasterPct = f.darkWithoutCasterPct;
+    a.falseShadowSpecklePct = f.falseShadowSpecklePct;
+    a.errorPct = 0.5 * (f.falseShadowPct + f.falseLitPct);
+    return a;
+}
+
+Accuracy Evaluator::accuracy() {
+    if (renderer_->stage().id == "mirror") return mirrorAccuracy();
+    return shadowAccuracy(shadowEvidence().figures);
+}
+
+ShadowEvidence Evaluator::shadowEvidence() {
+    Renderer& r = *renderer_;
+    int w = context_->width(), h = context_->height();
+    const ReferenceImage& ref = reference();
+    ShadowEvidence e;
+    r.allLit = false;
+    r.render(context_->framebuffer(), w, h);
+    e.withShadows = context_->read();
+    r.allLit = true;
+    r.render(context_->framebuffer(), w, h);
+    e.allLit = context_->read();
+    r.allLit = false;
+    const std::string& unshadowed = r.stage().unshadowedStage;
+    e.baseline = unshadowed.empty() ? e.allLit : renderWith(shippedRenderer(false), unshadowed);
+    e.renderedIds = decodeIdImage(renderWith(shippedRenderer(true), "phong"),
+                                  int(r.scene().objects.size()), 1.0f);
+    ShadowFigureInputs inputs;
+    inputs.renderedIds = e.renderedIds;
+    inputs.bandPx = mapTexelOnScreen(ref, r.camera, r.stats.lightViewProjection, r.stats.mapSize);
+    inputs.darkWithoutCaster = classifyShadowed(e.allLit, e.baseline);
+    e.shadowed = classifyShadowed(e.withShadows, e.allLit);
+    for (std::size_t k = 0; k < e.shadowed.size(); ++k)
+        e.shadowed[k] = e.shadowed[k] || inputs.darkWithoutCaster[k];
+    e.figures = shadowFigures(ref, e.shadowed, inputs);
+    return e;
+}
+
+Renderer& Evaluator::shippedRenderer(bool idColours) {
+    std::unique_ptr<Renderer>& slot = idColours ? shippedIdRenderer_ : shippedRenderer_;
+    if (!slot) {
+        Renderer& r = *renderer_;
+        GlslTree tree = r.shaders().tree();
+        slot = std::make_unique<Renderer>(idColours ? idColouredScene(r.scene()) : r.scene(),
+                                          ShaderLibrary(tree, shaderTreeRoot(tree), ""),
+                                          context_->height());
+    }
+    return *slot;
+}
+
+Image Evaluator::renderWith(Renderer& other, const std::string& stage) {
+    const Renderer& r = *renderer_;
+    other.selectStage(stage);
+    other.camera = r.camera;
+    other.lightPosition = r.lightPosition;
+    other.view = ViewMode::Final;
+    other.allLit = false;
+    other.render(context_->framebuffer(), context_->width(), context_->height());
+    return context_->read();
+}
+
+// The mirror (GUIDE section 4): which object each mirror pixel shows, against the reference's
+// bounce, and how close the picture is to the exact stencil method, over the mirror's front.
+Accuracy Evaluator::mirrorAccuracy() {
+    Renderer& r = *renderer_;
+    int w = context_->width(), h = context_->height();
+    const ReferenceImage& ref = reference();
+    std::vector<std::uint8_t> mask = mirrorMask(ref, r.scene());
+    r.allLit = false;
+    r.render(context_->framebuffer(), w, h);
+    Image shown = context_->read();
+    const std::string method = r.params().text("mirror-method");
+    r.params().set("mirror-method", "stencil");
+    r.render(context_->framebuffer(), w, h);
+    Image exact = context_->read();
+    r.params().set("mirror-method", method);
+
+    if (!idRenderer_)  // same shaders (a student's overlay too), the scene painted in id colours
+        idRenderer_ = std::make_unique<Renderer>(
+            idColouredScene(r.scene()),
+            ShaderLibrary(r.shaders().tree(), shaderTreeRoot(r.shaders().tree()),
+                          r.shaders().overlay()),
+            h);
+    Renderer& ids = *idRenderer_;
+    ids.selectStage(r.stage().id);
+    ids.params() = r.params();
+    ids.camera = r.camera;
+    ids.lightPosition = r.lightPosition;
+    ids.view = ViewMode::Final;
+    ids.render(context_->framebuffer(), w, h);
+    std::vector<int> seen =
+        decodeIdImage(context_->read(), mirrorId(r.scene()) - 1, kMirrorReflectance);
+
+    Accuracy a;
+    a.mirrorIdPct = mirrorIdAgreementPct(ref, seen);
+    a.mirrorPsnrDb = psnrInMask(shown, exact, mask);
+    a.errorPct = 100.0 - a.mirrorIdPct;
+    return a;
+}
+
+}  // namespace sl

@@ -1,0 +1,89 @@
+// The one evaluation path (GUIDE sections 4 and 6): a headless context and a renderer for a
+// request, the reference traced for its camera and light, and the figures that compare them.
+// `check`, `bench`, `sweep` and `example` all measure through an Evaluator, so a figure means
+// the same thing wherever it is printed.
+#pragma once
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "metrics/shadow_metrics.h"
+#include "platform/headless.h"
+#include "reference/raytracer.h"
+#include "render/request.h"
+
+namespace sl {
+
+// The accuracy figures of one render (GUIDE section 4). Non-applicable ones stay NaN.
+struct Accuracy {
+    double falseShadowPct = NAN, falseLitPct = NAN;
+    double falseShadowBandPct = NAN, falseLitBandPct = NAN;
+    double edgeMeanPx = NAN, edgeP95Px = NAN;
+    double darkWithoutCasterPct = NAN, falseShadowSpecklePct = NAN;
+    double mirrorIdPct = NAN, mirrorPsnrDb = NAN;
+    // One number for charts: shadow stages the balanced error (false shadow % + false lit %) / 2
+    // outside the edge band; the mirror 100 - id agreement %.
+    double errorPct = NAN;
+};
+
+// The Accuracy of a shadow stage from its figures (edge figures NaN when undefined).
+Accuracy shadowAccuracy(const ShadowFigures& f);
+
+// The two renders and the classification behind a shadow stage's figures (diff images use them).
+struct ShadowEvidence {
+    Image withShadows, allLit;
+    Image baseline;                      // our own phong stage: the lighting without shadows
+    std::vector<std::uint8_t> shadowed;  // see Evaluator::shadowEvidence
+    std::vector<int> renderedIds;        // the object each pixel of the render shows
+    ShadowFigures figures;
+};
+
+// Holds a context and renderer for the current (backend, tree, scene, size, overlay, camera) and
+// rebuilds them only when one of those changes, so a run compiles each stage's shaders once per
+// context.
+class Evaluator {
+  public:
+    explicit Evaluator(Backend backend) : backend_(backend) {}
+    virtual ~Evaluator() = default;
+    // Selects the request's stage on a renderer for its tree, scene, size, overlay and camera:
+    // parameters start from the defaults, then the request's camera, light, view and --set
+    // values apply.
+    Renderer& prepare(const RenderRequest& request);
+    // Drops the context and renderers, e.g. after a shader error left the GL state unknown.
+    void reset();
+    HeadlessContext& context() { return *context_; }
+    Renderer& renderer() { return *renderer_; }
+
+    // Renders the current configuration and compares it with the reference: the shadow stages'
+    // figures, or the mirror's.
+    Accuracy accuracy();
+    // The reference for the current camera, light and size (traced once, then reused).
+    const ReferenceImage& reference();
+    // The shadow stages' half of accuracy(): the render with its map and with the map forced to
+    // "everything lit", our own unshadowed lighting (phong) and an id render for coverage. A
+    // pixel is shadowed where the render is clearly darker than the all-lit one, or the all-lit
+    // one clearly darker than our lighting (dark without a caster).
+    ShadowEvidence shadowEvidence();
+
+  private:
+    Accuracy mirrorAccuracy();
+    // A renderer over the current scene (or its id-coloured twin) with our shipped shaders only:
+    // what the stage's picture is measured against, whatever the overlay does.
+    Renderer& shippedRenderer(bool idColours);
+    Image renderWith(Renderer& r, const std::string& stage);
+
+    Backend backend_;
+    std::string key_;
+    std::unique_ptr<HeadlessContext> context_;
+    std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<Renderer> idRenderer_;         // the overlay's shaders, id colours (mirror)
+    std::unique_ptr<Renderer> shippedRenderer_;    // our shaders, the scene's colours
+    std::unique_ptr<Renderer> shippedIdRenderer_;  // our shaders, id colours
+    glm::vec3 sceneLight_{0};
+    std::string referenceKey_;
+    ReferenceImage reference_;
+};
+
+}  // namespace sl
