@@ -233,6 +233,7 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
             figures.renderedBoundary += renderedEdge[k];
         }
     const auto toStraddling = distanceWithinObjects(straddling);
+    figures.band.assign(ref.pixels.size(), 0);
     const auto toRenderedEdge = distanceWithinObjects(renderedEdge);
 
     long litOut = 0, litOutWrong = 0, litIn = 0, litInWrong = 0, litWrongSpeckled = 0;
@@ -246,6 +247,7 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
             if (!evaluated[k]) continue;
             ++figures.evaluated;
             const bool inBand = lookUp(toStraddling, k) < band(k);
+            figures.band[k] = inBand;
             const bool wrong = rendered(k) != truth(k);
             if (truth(k)) {
                 ++figures.truthShadow;
@@ -282,9 +284,11 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
 }
 
 Image diffImage(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed,
-                const Image& withShadows, const std::vector<int>& renderedIds) {
+                const Image& withShadows, const std::vector<int>& renderedIds,
+                const std::vector<std::uint8_t>& band) {
     requireSize(ref, shadowed.size(), "diffImage");
     const std::vector<std::uint8_t> evaluated = evaluatedPixels(ref, renderedIds);
+    if (!band.empty()) requireSize(ref, band.size(), "diffImage");
     if (withShadows.width != ref.width || withShadows.height != ref.height)
         throw std::invalid_argument("diffImage: the render does not match the reference size");
     Image diff(ref.width, ref.height);
@@ -302,10 +306,12 @@ Image diffImage(const ReferenceImage& ref, const std::vector<std::uint8_t>& shad
             bool renderedShadow = shadowed[k] != 0;
             if (!evaluated[k]) {
                 paint(255, 255, 255);
-            } else if (renderedShadow && !p.blocked) {
-                paint(220, 40, 40);  // false shadow
-            } else if (!renderedShadow && p.blocked) {
-                paint(40, 80, 230);  // false lit
+            } else if (renderedShadow != p.blocked) {
+                const bool forgiven = !band.empty() && band[k];
+                if (renderedShadow)
+                    forgiven ? paint(240, 170, 170) : paint(220, 40, 40);  // false shadow
+                else
+                    forgiven ? paint(170, 190, 240) : paint(40, 80, 230);  // false lit
             } else {
                 int grey = int(std::lround(60.0 + withShadows.luma(i, j) / 255.0 * 140.0));
                 grey = std::clamp(grey, 60, 200);

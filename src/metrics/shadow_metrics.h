@@ -67,6 +67,7 @@ struct ShadowFigures {
     double edgeMeanPx = -1, edgeP95Px = -1;
     bool edgeDefined = false;
     long renderedBoundary = 0, trueBoundary = 0;
+    std::vector<std::uint8_t> band;  // per pixel, 1 inside the edge band (for the diff image)
 };
 
 // The inputs beyond the reference and the classification. Every vector is per pixel, row-major,
@@ -94,11 +95,14 @@ std::vector<float> mapTexelOnScreen(const ReferenceImage& ref, const Camera& cam
 std::vector<std::uint8_t> evaluatedPixels(const ReferenceImage& ref,
                                           const std::vector<int>& renderedIds);
 
-// A picture of the disagreement: red (220,40,40) false shadow, blue (40,80,230) false lit, grey
-// where render and reference agree (the luma of withShadows squeezed into 60..200 so it never
-// reads as red or blue), white where the pixel is not evaluated (evaluatedPixels).
+// A picture of the disagreement: red (220,40,40) false shadow, blue (40,80,230) false lit, their
+// pale versions (240,170,170) and (170,190,240) for a disagreement inside the edge band `band`
+// (forgiven: within a map texel of the true edge), grey where render and reference agree (the
+// luma of withShadows squeezed into 60..200 so it never reads as a colour), white where the
+// pixel is not evaluated (evaluatedPixels).
 Image diffImage(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed,
-                const Image& withShadows, const std::vector<int>& renderedIds = {});
+                const Image& withShadows, const std::vector<int>& renderedIds = {},
+                const std::vector<std::uint8_t>& band = {});
 
 // Exact Euclidean distance transform: for every pixel of a width x height grid, the distance in
 // pixels to the nearest pixel with feature[k] != 0 (+infinity when there is none).

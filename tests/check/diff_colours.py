@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Counts the colours of a check diff image (red false shadow, blue false lit, grey agreement,
-white not evaluated; src/metrics/shadow_metrics.h) and checks them against the report's pixel
+"""Counts the colours of a check diff image (red false shadow, blue false lit, their pale versions
+inside the edge band, grey agreement, white not evaluated; src/metrics/shadow_metrics.h) and checks them against the report's pixel
 counts for that stage.
 
 usage: diff_colours.py DIFF.png REPORT.json STAGE TREE MIN_BLUE_OF_SHADOW MAX_RED_OF_EVALUATED
@@ -26,6 +26,7 @@ def main():
     red = sum(1 for p in pixels if p == RED)
     blue = sum(1 for p in pixels if p == BLUE)
     white = sum(1 for p in pixels if p == WHITE)
+    pale = sum(1 for p in pixels if p in ((240, 170, 170), (170, 190, 240)))
     grey = sum(1 for p in pixels if p[0] == p[1] == p[2] and 60 <= p[0] <= 200)
     with open(report) as f:
         results = [r for r in json.load(f)["results"] if r["stage"] == stage and r["tree"] == tree]
@@ -35,8 +36,8 @@ def main():
     print(f"red {red}  blue {blue}  grey {grey}  white {white}  of {len(pixels)}; "
           f"report: evaluated {counts['evaluated']}, truly shadowed {counts['truth_shadow']}")
     problems = []
-    if red + blue + grey + white != len(pixels):
-        problems.append(f"{len(pixels) - red - blue - grey - white} pixels of another colour")
+    if red + blue + pale + grey + white != len(pixels):
+        problems.append(f"{len(pixels) - red - blue - pale - grey - white} pixels of another colour")
     if blue < min_blue * counts["truth_shadow"]:
         problems.append(f"blue {blue} < {min_blue} x truly shadowed {counts['truth_shadow']}")
     if blue > max_blue * counts["truth_shadow"]:
