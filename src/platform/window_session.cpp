@@ -350,7 +350,8 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         for (const auto& h : windowHelp()) top.lines.push_back({h, white});
     else
         top.lines.push_back({"h: every key", grey});
-    top.maxLines = std::max(3, rows * 11 / 20);
+    top.maxLines =
+        std::max(3, showHelp_ ? rows - 3 : rows * 11 / 20);  // help asked for: room for it
     blocks.push_back(top);
 
     std::string legend = viewLegend(s, r.view);
@@ -372,8 +373,10 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
     if (!errors.empty()) {
         HudBlock b;
         b.bottom = true;
-        b.lines.push_back(
-            {"shader error (the last good program keeps drawing):", {1, 0.7f, 0.6f, 1}});
+        b.lines.push_back({renderError_.empty()
+                               ? "shader error (the last good program keeps drawing):"
+                               : "shader error (no good program for this stage yet):",
+                           {1, 0.7f, 0.6f, 1}});
         for (const auto& e : errors) {
             std::istringstream in(e);
             std::string line;
