@@ -172,10 +172,11 @@ class LiveWindow {
   public:
     LiveWindow(const std::string& args, const std::string& dir) : dir_(dir) {
         fs::create_directories(dir + "/x");
-        xserver_ = spawn(std::string(XVFB_RUN) +
-                             " -a -s '-ac -screen 0 1280x1024x24' sh -c 'echo $DISPLAY > display.txt; "
-                             "exec sleep 600'",
-                         dir + "/x");
+        xserver_ =
+            spawn(std::string(XVFB_RUN) +
+                      " -a -s '-ac -screen 0 1280x1024x24' sh -c 'echo $DISPLAY > display.txt; "
+                      "exec sleep 600'",
+                  dir + "/x");
         if (!waitUntil([&] { return !readText(dir + "/x/display.txt").empty(); }, 30)) return;
         display_ = readText(dir + "/x/display.txt");
         display_.erase(display_.find_last_not_of("\n ") + 1);
@@ -376,4 +377,34 @@ TEST(LiveWindow, IdleWindowCostsNextToNoCpu) {
     double used = w.cpuSeconds() - before;
     EXPECT_LT(used, 0.3) << "CPU seconds used in 3 s of idling";
     EXPECT_EQ(w.quit(), 0);
+}
+
+// `p` into a folder that cannot be written: said on stderr (one line) and on screen, and the
+// session still ends with 0.
+TEST(Window, FailedShotKeepsTheExitCode) {
+    std::string dir = tempDir("shots-fail");
+    std::string blocker = dir + "/not-a-folder";
+    std::ofstream(blocker) << "x";
+    std::string output;
+    int code = runShadowlab(
+        "window --size 200x150 --frames 4 --keys p --shots " + blocker + "/shots", &output);
+    EXPECT_EQ(code, 0) << output;
+    EXPECT_NE(output.find("shadowlab: p: could not save into '" + blocker + "/shots'"),
+              std::string::npos)
+        << output;
+}
+
+// `p` in a scripted run: the absolute path on stdout, the file there, its name the stage's.
+TEST(Window, ShotGoesToTheShotsFolder) {
+    std::string dir = tempDir("shots-ok");
+    std::string output;
+    int code = runShadowlab(
+        "window --stage mirror --size 200x150 --frames 4 --keys vp --shots " + dir, &output);
+    ASSERT_EQ(code, 0) << output;
+    std::size_t at = output.find("saved " + dir + "/mirror-core-mirror-texture-");
+    ASSERT_NE(at, std::string::npos) << output;
+    std::string path = output.substr(at + 6, output.find('\n', at) - at - 6);
+    Image shot;
+    EXPECT_EQ(readPng(path, shot), "");
+    EXPECT_EQ(shot.width, 200);
 }
