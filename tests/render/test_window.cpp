@@ -408,3 +408,34 @@ TEST(Window, ShotGoesToTheShotsFolder) {
     EXPECT_EQ(readPng(path, shot), "");
     EXPECT_EQ(shot.width, 200);
 }
+
+namespace {
+// The HUD's state after a scripted run with these keys.
+nlohmann::json stateAfterKeys(const std::string& keys) {
+    std::string dir = tempDir("state");
+    std::string output;
+    int code = runShadowlab("window --size 200x150 --frames " + std::to_string(keys.size() + 2) +
+                                " --keys '" + keys + "' --state " + dir + "/state.json",
+                            &output);
+    EXPECT_EQ(code, 0) << output;
+    return nlohmann::json::parse(readText(dir + "/state.json"), nullptr, false);
+}
+}  // namespace
+
+// In the default scene (no mirror) the mirror stage brings its scene, and leaving it brings
+// the session's back; fixed runs on the legacy tree in a core session, and the HUD says which.
+TEST(Window, MirrorBringsItsSceneAndFixedRunsLegacy) {
+    auto mirror = stateAfterKeys("7");
+    EXPECT_EQ(mirror["stage"], "mirror");
+    EXPECT_EQ(mirror["scene"], "mirror");
+    auto back = stateAfterKeys("70");
+    EXPECT_EQ(back["stage"], "phong");
+    EXPECT_EQ(back["scene"], "slides");
+    auto fixed = stateAfterKeys("6");
+    EXPECT_EQ(fixed["stage"], "fixed");
+    EXPECT_EQ(fixed["tree"], "legacy");
+    EXPECT_EQ(fixed["sessionTree"], "core");
+    auto legacy = stateAfterKeys("g5");
+    EXPECT_EQ(legacy["stage"], "hardware");
+    EXPECT_EQ(legacy["tree"], "legacy");
+}
