@@ -1,102 +1,55 @@
 #include "platform/glut_window.h"
 
-#include "gl/gl.h"  // before freeglut, which would pull in GL/gl.h
 #include <GL/freeglut.h>
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
-#include <sstream>
 
+#include "gl/gl.h"  // before freeglut, which would pull in GL/gl.h
 #include "gl/loader.h"
-#include "render/hud.h"
+#include "platform/window_session.h"
+#include "platform/x11_keys.h"
 
 namespace sl {
 
 namespace {
 
+constexpr int kPollMs = 125;  // shader files and on-screen messages, 8 times a second
+
 // freeglut's callbacks are plain functions, so the window's state lives here.
 struct WindowState {
     WindowArgs args;
-    RenderRequest request;
-    std::unique_ptr<Renderer> renderer;
-    std::unique_ptr<Hud> hud;
+    std::unique_ptr<WindowSession> session;
     int width = 0, height = 0;
+    int startWidth = 0, startHeight = 0;  // --size
     int frame = 0;
     int exitCode = kOk;
-    std::size_t selectedParam = 0;
-    bool showHelp = false;
-    bool animateLight = false;
-    float lightAngle = 0;
-    std::string error;  // last shader error, shown until a reload succeeds
-    double frameMs = 0;
-    std::chrono::steady_clock::time_point lastPoll = std::chrono::steady_clock::now();
-    std::chrono::steady_clock::time_point lastFrame = std::chrono::steady_clock::now();
     int dragX = -1, dragY = -1;
     bool resizeDone = false;  // --resize-test finished
     int resizeFrames = 0;     // frames the resize script took
+    std::string writtenState;
 };
 WindowState* g = nullptr;
 
-const char* kHelp[] = {
-    "0-9 stage   [ ] previous/next stage   Tab parameter   + - change it",
-    "v view   l animate light   left-drag orbit   r reload shaders   p save PNG",
-    "h help   Esc quit",
-};
-
-void reportShaderErrors(const std::vector<std::string>& errors) {
-    for (const auto& e : errors) std::cerr << "shadowlab: shader error (keeping the last good program):\n" << e;
-    if (!errors.empty()) g->error = errors.front();
+void reshape(int w, int h) {
+    g->width = w;
+    g->height = h;
+    glutPostRedisplay();
 }
 
-std::vector<HudLine> hudLines() {
-    Renderer& r = *g->renderer;
-    const StageInfo& s = r.stage();
-    std::vector<HudLine> lines;
-    std::ostringstream title;
-    title << r.stageIndex() << " " << s.id << ": " << s.title << "   [" << treeName(r.shaders().tree())
-          << ", view " << viewName(r.view) << "]   " << static_cast<int>(g->frameMs * 10) / 10.0 << " ms/frame";
-    lines.push_back({title.str(), {1, 1, 0.6f, 1}});
-    const auto& specs = r.params().specs();
-    for (std::size_t i = 0; i < specs.size(); ++i) {
-        bool selected = i == g->selectedParam;
-        lines.push_back({std::string(selected ? "> " : "  ") + specs[i].name + " = " +
-                             r.params().text(specs[i].name),
-                         selected ? glm::vec4(0.5f, 1, 0.5f, 1) : glm::vec4(0.9f, 0.9f, 0.9f, 1)});
+// Every key, from X or from --keys: Esc quits, the rest is the session's.
+void pressKey(unsigned char key, bool shift) {
+    if (key == 27) {
+        glutLeaveMainLoop();
+        return;
     }
-    for (const auto& n : r.stats.notes) lines.push_back({n, {0.7f, 0.8f, 1, 1}});
-    if (g->showHelp)
-        for (const char* h : kHelp) lines.push_back({h, {1, 1, 1, 1}});
-    if (!g->error.empty()) {
-        std::istringstream in(g->error);
-        std::string line;
-        for (int k = 0; k < 6 && std::getline(in, line); ++k) lines.push_back({line, {1, 0.4f, 0.4f, 1}});
-    }
-    return lines;
+    if (g->session->key(key, shift)) glutPostRedisplay();
 }
 
-void savePng(const std::string& path) {
-    Image img(g->width, g->height);
-    std::vector<std::uint8_t> bottomUp(img.rgba.size());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadBuffer(GL_BACK);
-    glReadPixels(0, 0, g->width, g->height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
-    std::size_t row = std::size_t(g->width) * 4;
-    for (int j = 0; j < g->height; ++j)
-        std::copy_n(&bottomUp[std::size_t(g->height - 1 - j) * row], row, &img.rgba[std::size_t(j) * row]);
-    std::string err = writePng(path, img);
-    if (!err.empty()) {
-        std::cerr << "shadowlab: " << err << "\n";
-        g->exitCode = kBadInput;
-    } else {
-        std::cout << "saved " << path << "\n";
-    }
+void keyboard(unsigned char key, int, int) {
+    pressKey(key, (glutGetModifiers() & GLUT_ACTIVE_SHIFT) != 0);
 }
-
-void keyboard(unsigned char key, int, int);
-void reshape(int w, int h);
 
 // --resize-test, one step at a time: each waits (a bounded number of frames) until the size it
 // asked for has arrived, so the test does not depend on how fast the X server answers.
@@ -112,7 +65,7 @@ struct ResizeStep {
 void runResizeScript() {
     static std::size_t step = 0;
     static int waited = 0;
-    const int w = g->request.width, h = g->request.height;
+    const int w = g->startWidth, h = g->startHeight;
     const ResizeStep steps[] = {{0, 0, true}, {w, h, true}, {16, 16, false},
                                 {0, 0, true}, {1, 1, true}, {w, h, false}};
     const std::size_t count = sizeof(steps) / sizeof(steps[0]);
@@ -122,7 +75,7 @@ void runResizeScript() {
         if ((g->width != s.width || g->height != s.height) && ++waited < 500) return;
         if (waited >= 500) {
             std::cerr << "shadowlab: --resize-test: the window never reached " << s.width << "x"
-                      << s.height << "\n";
+                      << s.height << std::endl;
             g->exitCode = kGlFailure;
         }
     }
@@ -138,15 +91,18 @@ void runResizeScript() {
     g->resizeDone = step > count;
 }
 
-// The scripted input of --keys and --resize-test, applied after frame `frame` was drawn.
+// The scripted input of --keys and --resize-test, applied after frame `frame` was drawn. A
+// scripted `+` or `_` is Shift with = or -, as on the keyboard.
 void runScript(int frame) {
     const std::string& keys = g->args.keys;
-    if (frame >= 1 && std::size_t(frame) <= keys.size())
-        keyboard(static_cast<unsigned char>(keys[std::size_t(frame) - 1]), 0, 0);
+    if (frame >= 1 && std::size_t(frame) <= keys.size()) {
+        char k = keys[std::size_t(frame) - 1];
+        pressKey(static_cast<unsigned char>(k), k == '+' || k == '_');
+    }
     if (g->args.resizeTest) runResizeScript();
 }
 
-// Counts a frame and ends the loop after the last one (with --frames).
+// Counts a frame and says whether the loop ends after it (with --frames).
 bool finishFrame() {
     ++g->frame;
     if (g->args.resizeTest && !g->resizeDone) ++g->resizeFrames;
@@ -156,102 +112,44 @@ bool finishFrame() {
            (!g->args.resizeTest || g->resizeDone);
 }
 
+void writeState() {
+    if (g->args.stateFile.empty()) return;
+    std::string state = g->session->stateJson();
+    if (state == g->writtenState) return;
+    g->writtenState = state;
+    std::string tmp = g->args.stateFile + ".tmp";
+    { std::ofstream(tmp) << state << "\n"; }
+    std::rename(tmp.c_str(), g->args.stateFile.c_str());  // readers never see half a file
+}
+
 void display() {
-    if (g->width <= 0 || g->height <= 0) {  // minimised or 0x0: nothing to draw, time goes on
-        if (finishFrame()) glutLeaveMainLoop();
+    bool testRun = g->args.frames > 0;
+    if (g->width > 0 && g->height > 0) {  // minimised or 0x0: nothing to draw, time goes on
+        bool last = testRun && g->frame + 1 >= g->args.frames + g->resizeFrames &&
+                    (!g->args.resizeTest || g->resizeDone);
+        std::string shot = last ? g->args.screenshot : "";
+        std::string err = g->session->draw(g->width, g->height, shot, g->args.screenshotHud);
+        if (!err.empty()) {
+            std::cerr << "shadowlab: --screenshot: " << err << std::endl;
+            g->exitCode = kBadInput;
+        }
+        glutSwapBuffers();
+        if (testRun && g->session->shaderFailed()) g->exitCode = kBadInput;
+        if (testRun && glErrorCount() > 0) g->exitCode = kGlFailure;
+        writeState();
+    }
+    if (finishFrame()) {
+        glutLeaveMainLoop();
         return;
     }
-    auto now = std::chrono::steady_clock::now();
-    if (now - g->lastPoll > std::chrono::milliseconds(500)) {  // hot reload of edited shaders
-        g->lastPoll = now;
-        auto errors = g->renderer->reloadShaders(false);
-        reportShaderErrors(errors);
-    }
-    if (g->animateLight) {
-        glm::vec3 p = g->renderer->scene().light.position;
-        float radius = std::hypot(p.x, p.z);
-        g->lightAngle += 0.02f;
-        g->renderer->lightPosition = {radius * std::cos(g->lightAngle), p.y, radius * std::sin(g->lightAngle)};
-    }
-    try {
-        g->renderer->render(0, g->width, g->height);
-    } catch (const ShaderError& e) {  // no good program yet for this stage: show why
-        glClearColor(0.2f, 0, 0, 1);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        if (g->error != e.what()) std::cerr << "shadowlab: shader error:\n" << e.what();
-        g->error = e.what();
-        if (g->args.frames > 0) g->exitCode = kBadInput;
-    }
-    bool last = g->args.frames > 0 && g->frame + 1 >= g->args.frames + g->resizeFrames &&
-                (!g->args.resizeTest || g->resizeDone);
-    if (last && !g->args.screenshot.empty()) savePng(g->args.screenshot);  // the scene, no HUD
-    g->hud->draw(g->renderer->shaders(), hudLines(), g->width, g->height, g->height >= 700 ? 2.0f : 1.0f);
-    glutSwapBuffers();
-    now = std::chrono::steady_clock::now();
-    g->frameMs = 0.9 * g->frameMs + 0.1 * std::chrono::duration<double, std::milli>(now - g->lastFrame).count();
-    g->lastFrame = now;
-    if (glErrorCount() > 0 && g->args.frames > 0) g->exitCode = kGlFailure;
-    if (finishFrame()) glutLeaveMainLoop();
+    // Idle costs nothing: the next frame comes from input, a reload, or a running animation
+    // (test runs draw continuously through the idle callback).
+    if (g->session->animating()) glutPostRedisplay();
 }
 
-void selectStage(std::size_t index) {
-    if (index >= stageRegistry().size()) return;
-    const StageInfo& s = stageRegistry()[index];
-    if (s.legacyOnly && g->renderer->shaders().tree() == GlslTree::Core) {
-        g->error = "stage '" + s.id + "' needs the compatibility profile: start with --glsl legacy";
-        return;
-    }
-    g->error.clear();
-    g->renderer->selectStage(index);
-    g->selectedParam = 0;
-    bool viewOk = false;
-    for (ViewMode v : s.views) viewOk = viewOk || v == g->renderer->view;
-    if (!viewOk) g->renderer->view = ViewMode::Final;
-}
-
-void keyboard(unsigned char key, int, int) {
-    Renderer& r = *g->renderer;
-    const auto& specs = r.params().specs();
-    switch (key) {
-        case 27: glutLeaveMainLoop(); return;
-        case '[': selectStage((r.stageIndex() + stageRegistry().size() - 1) % stageRegistry().size()); break;
-        case ']': selectStage((r.stageIndex() + 1) % stageRegistry().size()); break;
-        case '\t':
-            if (!specs.empty()) g->selectedParam = (g->selectedParam + 1) % specs.size();
-            break;
-        case '+': case '=': case '-': case '_':
-            if (!specs.empty()) r.params().step(specs[g->selectedParam].name, (key == '+' || key == '=') ? 1 : -1);
-            break;
-        case 'r': {
-            auto errors = r.reloadShaders(true);
-            if (errors.empty()) g->error.clear();
-            reportShaderErrors(errors);
-            break;
-        }
-        case 'p': {
-            std::string name = "shadowlab-" + r.stage().id + "-" + std::to_string(g->frame) + ".png";
-            r.render(0, g->width, g->height);
-            savePng(name);
-            break;
-        }
-        case 'h': g->showHelp = !g->showHelp; break;
-        case 'l': g->animateLight = !g->animateLight; break;
-        case 'v': {
-            const auto& views = r.stage().views;
-            std::size_t i = 0;
-            while (i < views.size() && views[i] != r.view) ++i;
-            r.view = views[(i + 1) % views.size()];
-            break;
-        }
-        default:
-            if (key >= '0' && key <= '9') selectStage(static_cast<std::size_t>(key - '0'));
-    }
-    glutPostRedisplay();
-}
-
-void reshape(int w, int h) {
-    g->width = w;
-    g->height = h;
+void tick(int) {
+    if (g->session->tick(std::chrono::steady_clock::now())) glutPostRedisplay();
+    glutTimerFunc(kPollMs, tick, 0);
 }
 
 void mouse(int button, int state, int x, int y) {
@@ -262,15 +160,19 @@ void mouse(int button, int state, int x, int y) {
 
 void motion(int x, int y) {  // orbit the camera around its target
     if (g->dragX < 0) return;
-    Camera& c = g->renderer->camera;
-    glm::vec3 d = c.eye - c.at;
-    float radius = glm::length(d);
-    float yaw = std::atan2(d.x, d.z) - (x - g->dragX) * 0.01f;
-    float pitch = std::asin(glm::clamp(d.y / radius, -1.0f, 1.0f)) + (y - g->dragY) * 0.01f;
-    pitch = glm::clamp(pitch, -1.5f, 1.5f);
-    c.eye = c.at + radius * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+    if (g->session->drag(x - g->dragX, y - g->dragY)) glutPostRedisplay();
     g->dragX = x;
     g->dragY = y;
+}
+
+// The window's context is a compatibility one (it runs both trees); the core tree needs 3.3.
+void requireGl33() {
+    int major = 0, minor = 0;
+    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    if (!version || std::sscanf(version, "%d.%d", &major, &minor) != 2 || major * 10 + minor < 33)
+        throw std::runtime_error(std::string("the window's GL context is ") +
+                                 (version ? version : "?") +
+                                 "; shadowlab needs OpenGL 3.3 in the compatibility profile");
 }
 
 }  // namespace
@@ -278,14 +180,14 @@ void motion(int x, int y) {  // orbit the camera around its target
 int runWindow(const WindowArgs& args) {
     WindowState state;
     state.args = args;
-    state.request = toRequest(args.common);
-    validateRequest(state.request);
+    RenderRequest request = toRequest(args.common);
     if (!args.screenshot.empty() && args.frames <= 0)
         throw UsageError("--screenshot needs --frames N (the frame to save)");
     if ((!args.keys.empty() || args.resizeTest) && args.frames <= 0)
         throw UsageError("--keys and --resize-test need --frames N (scripted input is for tests)");
     if (args.keys.find('\x1b') != std::string::npos)
         throw UsageError("--keys: Esc would quit before the last frame; leave it out");
+    if (args.shots.empty()) throw UsageError("--shots: give a folder (it is created if missing)");
     g = &state;
 
     int argc = 1;
@@ -294,30 +196,29 @@ int runWindow(const WindowArgs& args) {
     glutInit(&argc, argv);
     glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
     glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL);
-    glutInitWindowSize(state.request.width, state.request.height);
-    if (state.request.tree == GlslTree::Core) {
-        glutInitContextVersion(3, 3);
-        glutInitContextProfile(GLUT_CORE_PROFILE);
-    }
+    glutInitWindowSize(request.width, request.height);
+    // No profile asked for: Mesa then gives its newest compatibility context, which runs the
+    // fixed-function stage and GLSL 1.20 as well as the 3.30 core shaders.
     glutCreateWindow("shadowlab");
     if (!loadGl(reinterpret_cast<GlProcLoader>(&glutGetProcAddress)))
         throw std::runtime_error("could not load GL entry points through glutGetProcAddress");
+    requireGl33();
+    passShiftTabAsTab();
     installGlDebugOutput();
-    state.width = state.request.width;
-    state.height = state.request.height;
-    state.renderer = makeRenderer(state.request);
-    state.hud = std::make_unique<Hud>();
+    state.width = state.startWidth = request.width;
+    state.height = state.startHeight = request.height;
+    state.session = std::make_unique<WindowSession>(args);
 
     glutDisplayFunc(display);
-    glutIdleFunc(glutPostRedisplay);
     glutReshapeFunc(reshape);
     glutKeyboardFunc(keyboard);
     glutMouseFunc(mouse);
     glutMotionFunc(motion);
+    glutTimerFunc(kPollMs, tick, 0);
+    if (args.frames > 0) glutIdleFunc(glutPostRedisplay);  // --frames: frame after frame
     glutMainLoop();
     int code = state.exitCode;
-    state.hud.reset();
-    state.renderer.reset();
+    state.session.reset();
     g = nullptr;
     return code;
 }

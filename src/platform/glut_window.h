@@ -1,5 +1,6 @@
 // The interactive window (freeglut). It owns the context and turns input into actions on the
-// renderer; all drawing is the renderer's.
+// renderers; all drawing is theirs. One compatibility-profile context runs both shader trees,
+// so every stage is one key away in one session.
 #pragma once
 
 #include "app/options.h"
@@ -8,13 +9,16 @@ namespace sl {
 
 struct WindowArgs {
     CommonOptions common;
-    int frames = 0;          // > 0: render this many frames, then exit (tests)
-    std::string screenshot;  // with frames: save the last frame here
+    int frames = 0;              // > 0: render this many frames, then exit (tests)
+    std::string screenshot;      // with frames: save the last frame here
+    bool screenshotHud = false;  // the screenshot includes the HUD (for the README)
     // Scripted input for tests: keys[k] is pressed after frame k + 1 (Esc is not allowed), and
     // resizeTest drives the window through 0x0, 1x1 and back to its size first (those frames
     // come on top of --frames).
     std::string keys;
     bool resizeTest = false;
+    std::string shots = "shots";  // where `p` saves
+    std::string stateFile;        // "": none; else the HUD's state as JSON, rewritten on change
 };
 
 int runWindow(const WindowArgs& args);

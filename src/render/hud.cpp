@@ -2,49 +2,122 @@
 
 #include <stb_easy_font.h>
 
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/state.h"
 
 namespace sl {
 
+namespace {
+
+float textWidth(const std::string& s) {
+    return static_cast<float>(stb_easy_font_width(const_cast<char*>(s.c_str())));
+}
+
+}  // namespace
+
+float hudScale(int width, int height) {
+    return std::clamp(std::min(width, height) / 360.0f, 1.0f, 4.0f);
+}
+
+std::vector<HudLine> wrapHudLines(const std::vector<HudLine>& lines, float maxPixels) {
+    std::vector<HudLine> out;
+    for (const HudLine& line : lines) {
+        std::string rest = line.text;
+        // Every piece takes at least one character, so this ends even in a 1-pixel window.
+        while (textWidth(rest) > maxPixels && rest.size() > 1) {
+            // The longest prefix that fits, ended at a space when there is one.
+            std::size_t fit = 1;
+            while (fit < rest.size() && textWidth(rest.substr(0, fit + 1)) <= maxPixels) ++fit;
+            std::size_t cut = rest.rfind(' ', fit);
+            if (cut == std::string::npos || cut == 0) cut = fit;
+            out.push_back({rest.substr(0, cut), line.color});
+            std::size_t start = rest.find_first_not_of(' ', cut);
+            rest = start == std::string::npos ? "" : rest.substr(start);
+        }
+        if (!rest.empty() || line.text.empty()) out.push_back({rest, line.color});
+    }
+    return out;
+}
+
+std::vector<HudLine> layoutHudBlock(const HudBlock& block, float maxPixels) {
+    std::vector<HudLine> lines = wrapHudLines(block.lines, maxPixels);
+    if (block.maxLines > 0 && static_cast<int>(lines.size()) > block.maxLines) {
+        std::size_t keep = static_cast<std::size_t>(std::max(block.maxLines - 1, 0));
+        std::size_t more = lines.size() - keep;
+        glm::vec4 colour = lines[keep].color;
+        lines.resize(keep);
+        lines.push_back({"(" + std::to_string(more) + " more lines)", colour});
+    }
+    return lines;
+}
+
 Hud::Hud() : vao_(VertexArray::create()), buffer_(Buffer::create()) {}
 
-void Hud::draw(ShaderLibrary& shaders, const std::vector<HudLine>& lines, int width, int height,
+void Hud::drawRect(Program& program, float x0, float y0, float x1, float y1,
+                   const glm::vec4& color) {
+    const float v[] = {x0, y0, 0, 0, x1, y0, 0, 0, x1, y1, 0, 0,
+                       x0, y0, 0, 0, x1, y1, 0, 0, x0, y1, 0, 0};
+    glBufferData(GL_ARRAY_BUFFER, sizeof v, v, GL_STREAM_DRAW);
+    program.set("textColor", color);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+}
+
+void Hud::drawText(Program& program, const HudLine& line, float x, float y) {
+    quads_.assign(line.text.size() * 270 + 64, 0);
+    int n = stb_easy_font_print(x, y, const_cast<char*>(line.text.c_str()), nullptr, quads_.data(),
+                                static_cast<int>(quads_.size()));
+    triangles_.clear();
+    const float* v = reinterpret_cast<const float*>(quads_.data());
+    for (int q = 0; q < n; ++q)  // each quad -> two triangles (core profiles have no quads)
+        for (int k : {0, 1, 2, 0, 2, 3}) {
+            const float* p = v + (q * 4 + k) * 4;
+            triangles_.insert(triangles_.end(), {p[0], p[1], p[2], 0.0f});
+        }
+    if (triangles_.empty()) return;
+    glBufferData(GL_ARRAY_BUFFER, triangles_.size() * sizeof(float), triangles_.data(),
+                 GL_STREAM_DRAW);
+    program.set("textColor", line.color);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles_.size() / 4));
+}
+
+void Hud::draw(ShaderLibrary& shaders, const std::vector<HudBlock>& blocks, int width, int height,
                float scale) {
+    if (width <= 0 || height <= 0) return;
     Program& program = shaders.program("hud", "text");
     ScopedEnable noDepth(GL_DEPTH_TEST, false);
     ScopedEnable blend(GL_BLEND, true);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     program.use();
-    program.set("projection", glm::ortho(0.0f, width / scale, height / scale, 0.0f));
+    const float w = width / scale, h = height / scale;  // the HUD's own (unscaled) pixels
+    program.set("projection", glm::ortho(0.0f, w, h, 0.0f));
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_ARRAY_BUFFER, buffer_.id());
     glEnableVertexAttribArray(kPositionAttribute);
     // stb_easy_font writes 16-byte vertices: x, y, z as floats, then 4 colour bytes.
     glVertexAttribPointer(kPositionAttribute, 3, GL_FLOAT, GL_FALSE, 16, nullptr);
-    float y = 6;
-    std::vector<char> quads;
-    std::vector<float> triangles;
-    for (const HudLine& line : lines) {
-        for (int pass = 0; pass < 2; ++pass) {  // a dark shadow first, then the text, for contrast
-            quads.assign(line.text.size() * 270 + 64, 0);
-            float offset = pass == 0 ? 1.0f : 0.0f;
-            int n = stb_easy_font_print(6 + offset, y + offset, const_cast<char*>(line.text.c_str()),
-                                        nullptr, quads.data(), static_cast<int>(quads.size()));
-            triangles.clear();
-            const float* v = reinterpret_cast<const float*>(quads.data());
-            for (int q = 0; q < n; ++q)  // each quad -> two triangles (core profiles have no quads)
-                for (int k : {0, 1, 2, 0, 2, 3}) {
-                    const float* p = v + (q * 4 + k) * 4;
-                    triangles.insert(triangles.end(), {p[0], p[1], p[2], 0.0f});
-                }
-            glBufferData(GL_ARRAY_BUFFER, triangles.size() * sizeof(float), triangles.data(), GL_STREAM_DRAW);
-            program.set("textColor", pass == 0 ? glm::vec4(0, 0, 0, 0.8f) : line.color);
-            glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.size() / 4));
+    const float margin = 3, maxText = std::max(w - 2 * (margin + kPad), 8.0f);
+    float top = margin, bottom = h - margin;
+    for (const HudBlock& block : blocks) {
+        std::vector<HudLine> lines = layoutHudBlock(block, maxText);
+        if (lines.empty()) continue;
+        float textW = 0;
+        for (const auto& l : lines) textW = std::max(textW, textWidth(l.text));
+        float panelH = lines.size() * kLineHeight + 2 * kPad - 3;
+        float y0 = block.bottom ? bottom - panelH : top;
+        drawRect(program, margin, y0, margin + textW + 2 * kPad, y0 + panelH, block.panel);
+        float y = y0 + kPad;
+        for (const HudLine& line : lines) {
+            drawText(program, line, margin + kPad, y);
+            y += kLineHeight;
         }
-        y += 11;
+        if (block.bottom)
+            bottom = y0 - margin;
+        else
+            top = y0 + panelH + margin;
     }
+    glDisableVertexAttribArray(kPositionAttribute);
     glBindVertexArray(0);
 }
 

@@ -1,5 +1,5 @@
-// On-screen text for the window (stage, parameters, ms per frame, errors), drawn with
-// stb_easy_font's quads.
+// On-screen text for the window (stage, parameters, notes, legends, errors), drawn with
+// stb_easy_font's quads on translucent panels so it stays readable over any picture.
 #pragma once
 
 #include <string>
@@ -14,15 +14,43 @@ struct HudLine {
     glm::vec4 color{1.0f};
 };
 
-class Hud {
-public:
-    Hud();
-    // Draws the lines from the top-left corner of a width x height framebuffer.
-    void draw(ShaderLibrary& shaders, const std::vector<HudLine>& lines, int width, int height, float scale);
+// Lines drawn together on one panel, from the top-left corner or up from the bottom-left.
+struct HudBlock {
+    std::vector<HudLine> lines;
+    bool bottom = false;
+    int maxLines = 0;  // wrapped lines beyond this become one "(N more lines)" line; 0: no limit
+    glm::vec4 panel{0.0f, 0.0f, 0.0f, 0.6f};
+};
 
-private:
+// Text size for a width x height window: from its smaller side, so a projector's 1080 lines
+// get large text and a 320x240 window small text; at least 1.
+float hudScale(int width, int height);
+
+// Splits lines wider than `maxPixels` (stb_easy_font's unscaled pixels) at spaces (or anywhere
+// in a word longer than a line). Colours carry over to the pieces.
+std::vector<HudLine> wrapHudLines(const std::vector<HudLine>& lines, float maxPixels);
+
+// Wraps a block's lines for `maxPixels` and cuts them to its maxLines, the last line saying
+// how many more there are.
+std::vector<HudLine> layoutHudBlock(const HudBlock& block, float maxPixels);
+
+class Hud {
+  public:
+    Hud();
+    // Draws the blocks on a width x height framebuffer (top blocks downward, bottom ones upward).
+    void draw(ShaderLibrary& shaders, const std::vector<HudBlock>& blocks, int width, int height,
+              float scale);
+
+    static constexpr float kLineHeight = 11;  // stb_easy_font's glyphs are 7 high, plus spacing
+    static constexpr float kPad = 4;
+
+  private:
+    void drawRect(Program& program, float x0, float y0, float x1, float y1, const glm::vec4& color);
+    void drawText(Program& program, const HudLine& line, float x, float y);
     VertexArray vao_;
     Buffer buffer_;
+    std::vector<char> quads_;
+    std::vector<float> triangles_;
 };
 
 }  // namespace sl

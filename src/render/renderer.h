@@ -6,7 +6,7 @@
 #include <map>
 #include <memory>
 
-#include "stages/stage.h"
+#include "render/stage_interface.h"
 
 namespace sl {
 

@@ -3,7 +3,7 @@
 
 #include <functional>
 
-#include "stages/stage.h"
+#include "render/stage_interface.h"
 
 namespace sl {
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "math/shadow_math.h"
-#include "stages/stage.h"
+#include "render/stage_interface.h"
 
 namespace sl {
 

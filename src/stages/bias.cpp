@@ -1,6 +1,6 @@
 // Stage 3: the scale/bias matrix built by hand. The slides use -0.5 on z, which is right only
 // when the light's projection maps near to NDC +1 and the depth range is reversed.
-#include "render/shadow_stage.h"
+#include "stages/shadow_stage.h"
 
 namespace sl {
 

@@ -1,6 +1,6 @@
 // Stage 2: a depth-component texture written through gl_FragDepth: more precision than 8 bits,
 // the same manual comparison.
-#include "render/shadow_stage.h"
+#include "stages/shadow_stage.h"
 
 namespace sl {
 

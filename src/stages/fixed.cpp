@@ -7,7 +7,7 @@
 
 #include "gl/state.h"
 #include "render/scene_pass.h"
-#include "render/shadow_stage.h"
+#include "stages/shadow_stage.h"
 #include "scene/mesh.h"
 
 namespace sl {

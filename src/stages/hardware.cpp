@@ -1,7 +1,7 @@
 // Stage 5: the hardware does the comparison: a depth texture with compare mode, sampled through
 // sampler2DShadow; polygon offset in the shadow pass instead of a margin; linear filtering
 // averages four compares (PCF).
-#include "render/shadow_stage.h"
+#include "stages/shadow_stage.h"
 
 namespace sl {
 

@@ -1,6 +1,6 @@
 // Stage 4: the margin fix for acne, constant (the slides' 0.01, the notes' 1/256 for 8 bits) or
 // scaled with the slope between N and L.
-#include "render/shadow_stage.h"
+#include "stages/shadow_stage.h"
 
 namespace sl {
 

@@ -1,6 +1,6 @@
 // Stage 1: render-to-texture. gl_FragCoord.z written into an 8-bit RGB colour texture and
 // compared with no margin: the acne of the slides.
-#include "render/shadow_stage.h"
+#include "stages/shadow_stage.h"
 
 namespace sl {
 

@@ -1,5 +1,18 @@
 // A real freeglut window under Xvfb renders the same picture as the headless path.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <thread>
 
 #include "render_fixture.h"
 
@@ -66,14 +79,15 @@ TEST(Window, LegacyMirrorWindowMatchesHeadless) {
 
 namespace {
 
-// Every key the window knows (but p, which saves into the working folder, and Esc) pressed in
-// every stage: digits select the stage, then views, parameters, light, help and reload.
+// Every key the window knows (but p, which saves, and Esc) pressed in every stage: digits
+// select the stage, then views, parameters, light, help, reload, resets, HUD modes, trees.
 std::string keysForEveryStage() {
     std::string keys;
     for (char stage = '0'; stage <= '9'; ++stage) {
         keys += stage;
-        keys += "vvvvv\t+\t-++--\t\t+lhlhr";
+        keys += "vvvvv\t+\t-++--\t\t+=_lhlhrxcii";
     }
+    keys += "g]]]]]]]]g[[[[[[[[i";
     keys += "]]][[[]][[";
     return keys;
 }
@@ -95,7 +109,7 @@ TEST(Window, SurvivesEveryKeyInEveryStageLegacy) {
     pressEveryKeyInEveryStage(GlslTree::Legacy);
 }
 
-// Key 6 (fixed) is legacy-only: the core window shows why and stays on the stage it had.
+// Key 6 (fixed) is legacy-only: a core session runs it on the legacy tree.
 TEST(Window, SurvivesEveryKeyInEveryStageCore) {
     pressEveryKeyInEveryStage(GlslTree::Core);
 }
@@ -109,4 +123,319 @@ TEST(Window, SurvivesResizeTo0x0AndBackHardware) {
 }
 TEST(Window, SurvivesResizeTo0x0AndBackMirror) {
     compareWindowWithHeadless("mirror", GlslTree::Core, "--resize-test", 14);
+}
+
+// ---- live sessions: a window on its own virtual X server, driven by real X key events -------
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+bool waitUntil(const std::function<bool()>& done, double seconds) {
+    auto end = Clock::now() + std::chrono::duration<double>(seconds);
+    while (Clock::now() < end) {
+        if (done()) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return done();
+}
+
+// Starts `command` through sh in its own process group, in `dir`, output to files there.
+pid_t spawn(const std::string& command, const std::string& dir, const std::string& display = "") {
+    pid_t pid = ::fork();
+    if (pid == 0) {
+        ::setpgid(0, 0);
+        if (::chdir(dir.c_str()) != 0) ::_exit(127);
+        if (!display.empty()) ::setenv("DISPLAY", display.c_str(), 1);
+        int out = ::open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int err = ::open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        ::dup2(out, 1);
+        ::dup2(err, 2);
+        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    return pid;
+}
+
+// One window session as a user has it: `shadowlab window ARGS` on a display of its own
+// (xvfb-run -a: parallel tests never share one; -ac: no cookie to pass to the window), keys
+// sent with xdotool as real X events.
+class LiveWindow {
+  public:
+    LiveWindow(const std::string& args, const std::string& dir) : dir_(dir) {
+        fs::create_directories(dir + "/x");
+        xserver_ =
+            spawn(std::string(XVFB_RUN) +
+                      " -a -s '-ac -screen 0 1280x1024x24' sh -c 'echo $DISPLAY > display.txt; "
+                      "exec sleep 600'",
+                  dir + "/x");
+        if (!waitUntil([&] { return !readText(dir + "/x/display.txt").empty(); }, 30)) return;
+        display_ = readText(dir + "/x/display.txt");
+        display_.erase(display_.find_last_not_of("\n ") + 1);
+        window_ = spawn("exec " + std::string(SHADOWLAB_BIN) + " window " + args, dir, display_);
+        // The window exists once xdotool finds it; it gets the keyboard focus (no window manager).
+        std::string id;
+        waitUntil(
+            [&] {
+                id = capture("xdotool search --name '^shadowlab$' 2>/dev/null | head -1");
+                return !id.empty() || !alive();
+            },
+            60);
+        id_ = id;
+        if (!id_.empty()) xdo("windowfocus --sync " + id_);
+    }
+    ~LiveWindow() {
+        if (alive()) {
+            ::kill(window_, SIGKILL);
+            ::waitpid(window_, nullptr, 0);
+        }
+        if (xserver_ > 0) {
+            ::kill(-xserver_, SIGTERM);
+            ::waitpid(xserver_, nullptr, 0);
+        }
+    }
+    bool ready() const { return !id_.empty(); }
+    bool alive() {
+        if (window_ <= 0 || reaped_) return false;
+        if (::waitpid(window_, &exitStatus_, WNOHANG) != window_) return true;
+        reaped_ = true;
+        return false;
+    }
+    // Real key presses (xdotool key names: bracketright, shift+Tab, Escape...).
+    bool keys(const std::string& names) { return xdo("key --delay 40 " + names) == 0; }
+    int xdo(const std::string& what) {
+        return std::system(("DISPLAY=" + display_ + " xdotool " + what).c_str());
+    }
+    std::string capture(const std::string& command) {
+        std::string text;
+        if (FILE* p = ::popen(("DISPLAY=" + display_ + " " + command).c_str(), "r")) {
+            char buffer[256];
+            while (std::fgets(buffer, sizeof buffer, p)) text += buffer;
+            ::pclose(p);
+        }
+        while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+        return text;
+    }
+    nlohmann::json state() {
+        std::string text = readText(dir_ + "/state.json");
+        return nlohmann::json::parse(text, nullptr, false);
+    }
+    bool waitState(const std::function<bool(const nlohmann::json&)>& ok, double seconds) {
+        return waitUntil(
+            [&] {
+                auto s = state();
+                return !s.is_discarded() && ok(s);
+            },
+            seconds);
+    }
+    // CPU seconds the window's process has used (user + system).
+    double cpuSeconds() const {
+        std::string stat = readText("/proc/" + std::to_string(window_) + "/stat");
+        std::istringstream in(stat.substr(stat.rfind(')') + 2));
+        std::string field;
+        long long utime = 0, stime = 0;
+        for (int k = 3; k <= 15 && in >> field; ++k) {
+            if (k == 14) utime = std::stoll(field);
+            if (k == 15) stime = std::stoll(field);
+        }
+        return double(utime + stime) / ::sysconf(_SC_CLK_TCK);
+    }
+    // Esc, then the exit code (-1 when it did not end within the time).
+    int quit() {
+        keys("Escape");
+        waitUntil([&] { return !alive(); }, 30);
+        return reaped_ && WIFEXITED(exitStatus_) ? WEXITSTATUS(exitStatus_) : -1;
+    }
+    std::string out() const { return readText(dir_ + "/stdout.txt"); }
+    std::string err() const { return readText(dir_ + "/stderr.txt"); }
+
+  private:
+    std::string dir_, display_, id_;
+    pid_t xserver_ = -1, window_ = -1;
+    int exitStatus_ = 0;
+    bool reaped_ = false;
+};
+
+int countLines(const std::string& text, const std::string& start) {
+    int n = 0;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) n += line.rfind(start, 0) == 0;
+    return n;
+}
+
+}  // namespace
+
+// The "done when": one session started with no options; `]` through all eight stages
+// and `p` at each, then the other tree with `g`, `[` back through all eight and `p` at each.
+TEST(LiveWindow, EveryStageInOneSessionBothTreesWithShots) {
+    std::string dir = tempDir("live-stages");
+    LiveWindow w("", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    std::string forward = "p", backward = "p";
+    for (int k = 0; k < 7; ++k) forward += " bracketright p", backward += " bracketleft p";
+    ASSERT_TRUE(w.keys(forward + " g " + backward));
+    ASSERT_TRUE(waitUntil([&] { return countLines(w.out(), "saved ") >= 16; }, 90))
+        << w.out() << w.err();
+    EXPECT_EQ(w.quit(), 0) << w.err();
+    // Every shot is in ./shots, named <stage>-<tree>-<view>-<time>.png, announced with its
+    // absolute path on a line of its own.
+    std::set<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir + "/shots"))
+        names.insert(e.path().filename().string());
+    EXPECT_EQ(names.size(), 16u);
+    for (const std::string& stage : stageIds()) {
+        bool legacyOnly = findStage(stage)->legacyOnly;
+        for (const char* tree : {"core", "legacy"}) {
+            std::string ran = legacyOnly ? "legacy" : tree;  // fixed runs legacy in both passes
+            int found = 0;
+            for (const auto& n : names) found += n.rfind(stage + "-" + ran + "-final-", 0) == 0;
+            EXPECT_GE(found, legacyOnly ? 2 : 1) << stage << " " << tree;
+        }
+        EXPECT_NE(w.out().find("saved " + fs::canonical(dir).string() + "/shots/" + stage + "-"),
+                  std::string::npos)
+            << stage;
+    }
+    Image shot;
+    ASSERT_EQ(readPng(dir + "/shots/" + *names.begin(), shot), "");
+    EXPECT_EQ(shot.width, 640);
+}
+
+// A student breaks the shader while the window runs, then repairs it the way `cp` does
+// (truncate, a pause, the rest): the error comes, then goes without any key, and the
+// half-written file is never compiled.
+TEST(LiveWindow, RepairedShaderClearsTheError) {
+    std::string dir = tempDir("live-repair");
+    fs::create_directories(dir + "/mine/phong");
+    std::string good = readText(std::string(SHADOWLAB_SOURCE_DIR) + "/shaders_core/phong/lit.frag");
+    std::string file = dir + "/mine/phong/lit.frag";
+    std::ofstream(file) << good;
+    LiveWindow w("--shaders mine --state state.json --size 320x240", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(
+        w.waitState([](const auto& s) { return s["stage"] == "phong" && s["errors"] == 0; }, 30));
+    std::ofstream(file) << "#version 330 core\nvoid main() { this is not GLSL }\n";
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["errors"].template get<int>() > 0; }, 15))
+        << w.err();
+    {
+        std::ofstream half(file, std::ios::trunc);
+        half << good.substr(0, good.size() / 3);
+        half.flush();
+        std::this_thread::sleep_for(std::chrono::milliseconds(80));
+        half << good.substr(good.size() / 3);
+    }
+    EXPECT_TRUE(w.waitState([](const auto& s) { return s["errors"] == 0 && s["error"] == ""; }, 15))
+        << w.state().dump() << "\n"
+        << w.err();
+    EXPECT_EQ(w.quit(), 0);
+    std::string err = w.err();
+    EXPECT_EQ(err.find("empty"), std::string::npos) << err;
+    EXPECT_EQ(countLines(err, "shadowlab: shader error"), 1) << err;  // one event, one line
+    EXPECT_TRUE(!err.empty() && err.back() == '\n');
+    EXPECT_NE(w.out().find("every program builds again\n"), std::string::npos) << w.out();
+}
+
+// `i` cycles the HUD: full, one line, hidden, full; `h` shows the help.
+TEST(LiveWindow, HudToggles) {
+    std::string dir = tempDir("live-hud");
+    LiveWindow w("--state state.json --size 320x240", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["hud"] == "full"; }, 30));
+    for (const char* expected : {"compact", "hidden", "full"}) {
+        ASSERT_TRUE(w.keys("i"));
+        EXPECT_TRUE(w.waitState([&](const auto& s) { return s["hud"] == expected; }, 10))
+            << expected;
+    }
+    ASSERT_TRUE(w.keys("h"));
+    EXPECT_TRUE(w.waitState([](const auto& s) { return s["help"] == true; }, 10));
+    // Shift-Tab goes back: two Tabs forward and one back is the second parameter.
+    ASSERT_TRUE(w.keys("5 Tab Tab shift+Tab"));
+    EXPECT_TRUE(w.waitState(
+        [](const auto& s) { return s["stage"] == "hardware" && s["param"] == "light-fit"; }, 10))
+        << w.state().dump();
+    EXPECT_EQ(w.quit(), 0);
+}
+
+// A window nobody touches draws nothing: over 3 s it uses next to no CPU (it used to redraw
+// continuously at about 70 % of a core). A bound with a wide margin: this is not a speed test.
+TEST(LiveWindow, IdleWindowCostsNextToNoCpu) {
+    std::string dir = tempDir("live-idle");
+    LiveWindow w("--state state.json", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["stage"] == "phong"; }, 30));
+    std::this_thread::sleep_for(std::chrono::seconds(1));  // the first frames and programs
+    double before = w.cpuSeconds();
+    std::this_thread::sleep_for(std::chrono::seconds(3));
+    double used = w.cpuSeconds() - before;
+    EXPECT_LT(used, 0.3) << "CPU seconds used in 3 s of idling";
+    EXPECT_EQ(w.quit(), 0);
+}
+
+// `p` into a folder that cannot be written: said on stderr (one line) and on screen, and the
+// session still ends with 0.
+TEST(Window, FailedShotKeepsTheExitCode) {
+    std::string dir = tempDir("shots-fail");
+    std::string blocker = dir + "/not-a-folder";
+    std::ofstream(blocker) << "x";
+    std::string output;
+    int code = runShadowlab(
+        "window --size 200x150 --frames 4 --keys p --shots " + blocker + "/shots", &output);
+    EXPECT_EQ(code, 0) << output;
+    EXPECT_NE(output.find("shadowlab: p: could not save into '" + blocker + "/shots'"),
+              std::string::npos)
+        << output;
+}
+
+// `p` in a scripted run: the absolute path on stdout, the file there, its name the stage's.
+TEST(Window, ShotGoesToTheShotsFolder) {
+    std::string dir = tempDir("shots-ok");
+    std::string output;
+    int code = runShadowlab(
+        "window --stage mirror --size 200x150 --frames 4 --keys vp --shots " + dir, &output);
+    ASSERT_EQ(code, 0) << output;
+    std::size_t at = output.find("saved " + dir + "/mirror-core-mirror-texture-");
+    ASSERT_NE(at, std::string::npos) << output;
+    std::string path = output.substr(at + 6, output.find('\n', at) - at - 6);
+    Image shot;
+    EXPECT_EQ(readPng(path, shot), "");
+    EXPECT_EQ(shot.width, 200);
+}
+
+namespace {
+// The HUD's state after a scripted run with these keys.
+nlohmann::json stateAfterKeys(const std::string& keys) {
+    std::string dir = tempDir("state");
+    std::string output;
+    int code = runShadowlab("window --size 200x150 --frames " + std::to_string(keys.size() + 2) +
+                                " --keys '" + keys + "' --state " + dir + "/state.json",
+                            &output);
+    EXPECT_EQ(code, 0) << output;
+    return nlohmann::json::parse(readText(dir + "/state.json"), nullptr, false);
+}
+}  // namespace
+
+// In the default scene (no mirror) the mirror stage brings its scene, and leaving it brings
+// the session's back; fixed runs on the legacy tree in a core session, and the HUD says which.
+TEST(Window, MirrorBringsItsSceneAndFixedRunsLegacy) {
+    auto mirror = stateAfterKeys("7");
+    EXPECT_EQ(mirror["stage"], "mirror");
+    EXPECT_EQ(mirror["scene"], "mirror");
+    auto back = stateAfterKeys("70");
+    EXPECT_EQ(back["stage"], "phong");
+    EXPECT_EQ(back["scene"], "slides");
+    auto fixed = stateAfterKeys("6");
+    EXPECT_EQ(fixed["stage"], "fixed");
+    EXPECT_EQ(fixed["tree"], "legacy");
+    EXPECT_EQ(fixed["sessionTree"], "core");
+    auto legacy = stateAfterKeys("g5");
+    EXPECT_EQ(legacy["stage"], "hardware");
+    EXPECT_EQ(legacy["tree"], "legacy");
 }

@@ -1,4 +1,4 @@
-#include "stages/params.h"
+#include "render/stage_params.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "render/shadow_stage.h"
+#include "stages/shadow_stage.h"
 
 #include <chrono>
 #include <cstdio>

@@ -1,0 +1,48 @@
+#include "math/orbit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sl {
+
+float sceneFloorHeight(const Scene& scene) {
+    float lowest = std::numeric_limits<float>::infinity();
+    for (const Object& o : scene.objects) {
+        float y = o.center.y;
+        if (o.kind == PrimitiveKind::Box) y -= 0.5f * o.size.y;
+        if (o.kind == PrimitiveKind::Sphere) y -= o.radius;
+        if (o.kind == PrimitiveKind::Quad) {  // half its extent along the world's y
+            glm::vec3 right = glm::normalize(glm::cross(o.up, o.normal));
+            y -= 0.5f * (std::abs(o.up.y) * o.height + std::abs(right.y) * o.width);
+        }
+        lowest = std::min(lowest, y);
+    }
+    return std::isfinite(lowest) ? lowest : 0.0f;
+}
+
+Camera orbitCamera(const Camera& c, float yaw, float pitch, float floorY, float clearance) {
+    glm::vec3 d = c.eye - c.at;
+    float radius = glm::length(d);
+    if (radius < 1e-6f) return c;
+    float currentYaw = std::atan2(d.x, d.z) + yaw;
+    float currentPitch = std::asin(glm::clamp(d.y / radius, -1.0f, 1.0f)) + pitch;
+    // eye.y = at.y + radius * sin(pitch) must stay above the floor plus the clearance.
+    float lowestSin = (floorY + clearance - c.at.y) / radius;
+    float lowest = lowestSin >= 1.0f ? 1.5f : lowestSin <= -1.0f ? -1.5f : std::asin(lowestSin);
+    currentPitch = glm::clamp(currentPitch, std::min(lowest, 1.5f), 1.5f);
+    Camera out = c;
+    out.eye = c.at + radius * glm::vec3(std::cos(currentPitch) * std::sin(currentYaw),
+                                        std::sin(currentPitch),
+                                        std::cos(currentPitch) * std::cos(currentYaw));
+    return out;
+}
+
+glm::vec3 circlingLight(const glm::vec3& start, float radiansPerSecond, double seconds) {
+    float radius = std::hypot(start.x, start.z);
+    double angle = std::atan2(start.z, start.x) + radiansPerSecond * seconds;
+    return {radius * static_cast<float>(std::cos(angle)), start.y,
+            radius * static_cast<float>(std::sin(angle))};
+}
+
+}  // namespace sl

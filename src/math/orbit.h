@@ -1,0 +1,20 @@
+// The window's camera and light motion as plain functions: orbiting the camera around its
+// target without going under the floor, and turning the light at a speed in radians per second.
+#pragma once
+
+#include "scene/scene.h"
+
+namespace sl {
+
+// The lowest point of the scene's objects (the floor's height in the lecture scenes).
+float sceneFloorHeight(const Scene& scene);
+
+// Turns the camera around `at` by yaw and pitch (radians); the eye stays at least `clearance`
+// above `floorY` and short of straight up, whatever the drag.
+Camera orbitCamera(const Camera& c, float yaw, float pitch, float floorY, float clearance = 0.05f);
+
+// The light on its circle around the y axis after `seconds` at `radiansPerSecond`, starting
+// from `start` (height and radius kept).
+glm::vec3 circlingLight(const glm::vec3& start, float radiansPerSecond, double seconds);
+
+}  // namespace sl

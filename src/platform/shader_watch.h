@@ -1,0 +1,36 @@
+// Notices edited shader files for the window's hot reload, debounced: a change counts once the
+// folders have stayed the same (every file's size and modification time) for `settle`, so an
+// editor's or `cp`'s half-written file is never compiled.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+class ShaderWatch {
+  public:
+    using Clock = std::chrono::steady_clock;
+    // `folders`: our tree and the student's overlay (bounded walk: a few levels, a few thousand
+    // files, so a huge overlay cannot stall the window).
+    explicit ShaderWatch(std::vector<std::string> folders,
+                         std::chrono::milliseconds settle = std::chrono::milliseconds(250));
+
+    // Call a few times a second: true once per settled change.
+    bool poll(Clock::time_point now);
+    // True while a change has been seen but has not settled yet.
+    bool pending() const { return pending_; }
+
+  private:
+    std::uint64_t fingerprint() const;
+
+    std::vector<std::string> folders_;
+    std::chrono::milliseconds settle_;
+    std::uint64_t last_;
+    Clock::time_point changedAt_{};
+    bool pending_ = false;
+};
+
+}  // namespace sl

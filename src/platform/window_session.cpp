@@ -1,0 +1,457 @@
+#include "platform/window_session.h"
+
+#include <climits>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "math/orbit.h"
+#include "metrics/image.h"
+#include "platform/window_text.h"
+#include "scene/scene_json.h"
+
+namespace sl {
+
+namespace {
+
+constexpr float kLightRadiansPerSecond = 0.6f;
+constexpr auto kFlashTime = std::chrono::seconds(4);
+
+// One complete line per event on the terminal, there at once (stdout is a pipe in tests).
+void say(std::ostream& out, const std::string& line) {
+    out << line << '\n';
+    out.flush();
+}
+
+bool offers(const StageInfo& s, ViewMode v) {
+    for (ViewMode w : s.views)
+        if (w == v) return true;
+    return false;
+}
+
+}  // namespace
+
+WindowSession::WindowSession(const WindowArgs& args)
+    : args_(args),
+      request_(toRequest(args.common)),
+      tree_(request_.tree),
+      watch_({shaderTreeRoot(GlslTree::Core), shaderTreeRoot(GlslTree::Legacy), request_.overlay}) {
+    const StageInfo* info = findStage(request_.stage);
+    if (info && info->legacyOnly)
+        request_.tree = GlslTree::Legacy;  // `--stage fixed` alone is fine here
+    validateRequest(request_);
+    request_.tree = tree_;
+    startScene_ = effectiveScene(request_);
+    // The first renderer is the request's own (its --set, --eye, --light, --view apply).
+    RenderRequest first = request_;
+    if (info->legacyOnly) first.tree = GlslTree::Legacy;
+    first.scene = sceneFor(*info);
+    first.sceneGiven = true;
+    Slot slot;
+    slot.renderer = makeRenderer(first);
+    slot.homeCamera = slot.renderer->camera;
+    slot.homeLight = slot.renderer->lightPosition;
+    std::string key = std::string(treeName(first.tree)) + "/" + first.scene;
+    slot_ = &(slots_[key] = std::move(slot));
+    scene_ = first.scene;
+}
+
+std::string WindowSession::sceneFor(const StageInfo& s) {
+    RenderRequest r = request_;
+    r.stage = s.id;
+    std::string name = effectiveScene(r);
+    if (!s.needsMirror) return name;
+    auto it = sceneHasMirror_.find(name);
+    if (it == sceneHasMirror_.end())
+        it = sceneHasMirror_.emplace(name, bool(loadScene(name).mirror)).first;
+    // A scene without a mirror: the mirror stage brings its own scene (the HUD says so).
+    return it->second ? name : (s.defaultScene.empty() ? "mirror" : s.defaultScene);
+}
+
+WindowSession::Slot& WindowSession::slotFor(GlslTree tree, const std::string& scene,
+                                            const std::string& stage) {
+    std::string key = std::string(treeName(tree)) + "/" + scene;
+    auto it = slots_.find(key);
+    if (it != slots_.end()) return it->second;
+    RenderRequest r = request_;
+    r.stage = stage;
+    r.tree = tree;
+    r.scene = scene;
+    r.sceneGiven = true;
+    r.sets.clear();
+    r.view = ViewMode::Final;
+    if (tree != request_.tree) r.overlay.clear();  // a student's folder is written for one tree
+    if (scene != startScene_) r.eye = r.at = r.light = std::nullopt, r.fovy = std::nullopt;
+    Slot slot;
+    slot.renderer = makeRenderer(r);
+    slot.homeCamera = slot.renderer->camera;
+    slot.homeLight = slot.renderer->lightPosition;
+    return slots_[key] = std::move(slot);
+}
+
+bool WindowSession::selectStage(std::size_t index, GlslTree sessionTree) {
+    if (index >= stageRegistry().size()) return false;
+    const StageInfo& s = stageRegistry()[index];
+    GlslTree tree = s.legacyOnly ? GlslTree::Legacy : sessionTree;
+    Renderer& prev = *slot_->renderer;
+    Slot* next = nullptr;
+    std::string scene;
+    try {
+        scene = sceneFor(s);
+        next = &slotFor(tree, scene, s.id);
+    } catch (const std::exception& e) {
+        flash(std::string("cannot show stage '") + s.id + "': " + e.what(), true);
+        return true;
+    }
+    Renderer& r = *next->renderer;
+    const std::string prevStage = prev.stage().id;
+    const ViewMode prevView = prev.view;
+    if (&r != &prev && scene == scene_) {  // same scene, other tree: keep where we look from
+        r.camera = prev.camera;
+        r.lightPosition = prev.lightPosition;
+    }
+    r.selectStage(s.id);
+    if (&r != &prev && prevStage == s.id) r.params() = prev.params();  // the same stage, other tree
+    r.view = offers(s, prevView) ? prevView : ViewMode::Final;
+    if (prevStage != s.id) selectedParam_ = 0;
+    slot_ = next;
+    scene_ = scene;
+    tree_ = sessionTree;
+    renderError_.clear();
+    return true;
+}
+
+bool WindowSession::key(unsigned char key, bool shift) {
+    Renderer& r = *slot_->renderer;
+    const auto& specs = r.params().specs();
+    const std::size_t stages = stageRegistry().size();
+    switch (key) {
+        case '[':
+            return selectStage((r.stageIndex() + stages - 1) % stages, tree_);
+        case ']':
+            return selectStage((r.stageIndex() + 1) % stages, tree_);
+        case 'g':
+            return selectStage(r.stageIndex(),
+                               tree_ == GlslTree::Core ? GlslTree::Legacy : GlslTree::Core);
+        case '\t':
+            if (!specs.empty())
+                selectedParam_ = (selectedParam_ + (shift ? specs.size() - 1 : 1)) % specs.size();
+            return true;
+        case '+':
+        case '=':
+        case '-':
+        case '_': {
+            if (specs.empty()) return false;
+            const ParamSpec& p = specs[selectedParam_ % specs.size()];
+            int direction = (key == '+' || key == '=') ? 1 : -1;
+            int steps = shift && p.kind != ParamKind::Choice ? 10 : 1;  // Shift: tenfold
+            for (int k = 0; k < steps; ++k) r.params().step(p.name, direction);
+            return true;
+        }
+        case 'x':  // the stage's parameters back to their defaults
+            for (const ParamSpec& p : specs) r.params().set(p.name, p.defaultText());
+            flash("parameters of '" + r.stage().id + "' reset", false);
+            return true;
+        case 'c':
+            r.camera = slot_->homeCamera;
+            r.lightPosition = slot_->homeLight;
+            animateLight_ = false;
+            flash("camera and light reset", false);
+            return true;
+        case 'r':
+            reload(true);
+            return true;
+        case 'p':
+            saveShot();
+            return true;
+        case 'h':
+            showHelp_ = !showHelp_;
+            return true;
+        case 'i':
+            hudMode_ = hudMode_ == HudMode::Full      ? HudMode::Compact
+                       : hudMode_ == HudMode::Compact ? HudMode::Hidden
+                                                      : HudMode::Full;
+            return true;
+        case 'l':
+            animateLight_ = !animateLight_;
+            lastAnimation_ = Clock::now();
+            return true;
+        case 'v': {
+            const auto& views = r.stage().views;
+            std::size_t i = 0;
+            while (i < views.size() && views[i] != r.view) ++i;
+            r.view = views[(i + 1) % views.size()];
+            return true;
+        }
+        default:
+            if (key >= '0' && key <= '9')
+                return selectStage(static_cast<std::size_t>(key - '0'), tree_);
+            return false;
+    }
+}
+
+bool WindowSession::drag(int dx, int dy) {
+    Renderer& r = *slot_->renderer;
+    r.camera = orbitCamera(r.camera, -dx * 0.01f, dy * 0.01f, sceneFloorHeight(r.scene()));
+    return true;
+}
+
+bool WindowSession::tick(Clock::time_point now) {
+    bool redraw = false;
+    if (watch_.poll(now)) {
+        reload(false);
+        redraw = true;
+    }
+    if (!flash_.empty() && now >= flashUntil_) {
+        flash_.clear();
+        redraw = true;
+    }
+    return redraw;
+}
+
+void WindowSession::reload(bool force) {
+    // While something is broken, rebuild everything: then "no errors" means every program builds.
+    bool hadErrors = !reloadErrors_.empty() || !renderError_.empty();
+    std::vector<std::string> errors;
+    for (auto& [key, slot] : slots_) {
+        auto e = slot.renderer->reloadShaders(force || hadErrors);
+        errors.insert(errors.end(), e.begin(), e.end());
+    }
+    reloadErrors_ = errors;
+    renderError_.clear();  // the next draw says again if the stage still has no good program
+    printedRenderError_.clear();
+    for (const auto& e : errors)
+        say(std::cerr, "shadowlab: shader error (keeping the last good program): " + oneLine(e));
+    if (errors.empty())
+        say(std::cout, hadErrors ? "shadowlab: shaders reloaded; every program builds again"
+                                 : "shadowlab: shaders reloaded");
+}
+
+void WindowSession::flash(const std::string& text, bool error) {
+    flash_ = text;
+    flashIsError_ = error;
+    flashUntil_ = Clock::now() + kFlashTime;
+}
+
+std::string WindowSession::readPixelsToPng(const std::string& path) const {
+    Image img(width_, height_);
+    std::vector<std::uint8_t> bottomUp(img.rgba.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
+    std::size_t row = std::size_t(width_) * 4;
+    for (int j = 0; j < height_; ++j)
+        std::copy_n(&bottomUp[std::size_t(height_ - 1 - j) * row], row,
+                    &img.rgba[std::size_t(j) * row]);
+    return writePng(path, img);
+}
+
+void WindowSession::saveShot() {
+    Renderer& r = *slot_->renderer;
+    if (width_ <= 0 || height_ <= 0) {
+        flash("p: the window has no pixels to save (minimised?)", true);
+        return;
+    }
+    namespace fs = std::filesystem;
+    std::string error;
+    std::string path;
+    try {
+        fs::create_directories(args_.shots);
+        auto now = std::chrono::system_clock::now();
+        auto ms =
+            std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count();
+        std::string name =
+            shotFileName(r.stage().id, treeName(r.shaders().tree()), viewLabel(r.stage(), r.view),
+                         std::chrono::system_clock::to_time_t(now), static_cast<int>(ms % 1000));
+        path = (fs::absolute(args_.shots) / name).lexically_normal().string();
+        error = draw(width_, height_, path, false);
+    } catch (const std::exception& e) {
+        error = e.what();
+    }
+    if (!error.empty()) {  // shown and reported; the session goes on and its exit code stays
+        std::string line = "p: could not save into '" + args_.shots + "': " + error;
+        say(std::cerr, "shadowlab: " + line);
+        flash(line, true);
+        return;
+    }
+    say(std::cout, "saved " + path);
+    flash("saved " + path, false);
+}
+
+std::string WindowSession::treeText() const {
+    Renderer& r = *slot_->renderer;
+    std::string t = std::string("tree ") + treeName(r.shaders().tree());
+    if (r.stage().legacyOnly && tree_ == GlslTree::Core) t += " (fixed-function needs it)";
+    return t;
+}
+
+std::string WindowSession::title() const {
+    Renderer& r = *slot_->renderer;
+    return std::to_string(r.stageIndex()) + " " + r.stage().id;
+}
+
+std::vector<HudBlock> WindowSession::hudBlocks() const {
+    Renderer& r = *slot_->renderer;
+    const StageInfo& s = r.stage();
+    const float scale = hudScale(width_, height_);
+    const int rows = std::max(3, static_cast<int>((height_ / scale - 6) / Hud::kLineHeight));
+    const glm::vec4 white(1), grey(0.85f, 0.85f, 0.85f, 1), yellow(1, 1, 0.6f, 1),
+        green(0.6f, 1, 0.6f, 1), blue(0.75f, 0.85f, 1, 1), errorText(1, 0.85f, 0.8f, 1);
+    std::vector<HudBlock> blocks;
+    std::vector<std::string> errors = reloadErrors_;
+    if (!renderError_.empty()) errors.insert(errors.begin(), renderError_);
+    const std::string view = viewLabel(s, r.view);
+
+    if (hudMode_ == HudMode::Compact) {
+        std::string line = title() + " | " + treeName(r.shaders().tree()) + " | " + view;
+        const auto& specs = r.params().specs();
+        if (!specs.empty()) {
+            const std::string& name = specs[selectedParam_ % specs.size()].name;
+            line += " | " + name + " = " + r.params().text(name);
+        }
+        if (!errors.empty()) line += " | SHADER ERROR (i: details)";
+        HudBlock b;
+        b.lines = {{line, errors.empty() ? yellow : errorText}};
+        b.maxLines = 1;
+        blocks.push_back(b);
+        return blocks;
+    }
+
+    HudBlock top;
+    top.lines.push_back({title() + ": " + s.title, yellow});
+    std::ostringstream status;
+    status << treeText() << " | scene " << scene_ << " | view " << view << " | "
+           << static_cast<int>(drawMs_ * 10) / 10.0 << " ms to draw";
+    top.lines.push_back({status.str(), white});
+    if (scene_ != startScene_)
+        top.lines.push_back({"scene " + scene_ + ": the " + s.id +
+                                 " stage brings its own (back to " + startScene_ +
+                                 " when you leave it)",
+                             blue});
+    if (!request_.overlay.empty()) {
+        if (!r.shaders().overlay().empty())
+            top.lines.push_back({"your shaders: " + r.shaders().overlay() + " (over ours)", green});
+        else
+            top.lines.push_back({"your shaders (" + request_.overlay + ") are for the " +
+                                     treeName(request_.tree) + " tree: ours here",
+                                 grey});
+    }
+    const auto& specs = r.params().specs();
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        bool selected = i == selectedParam_ % specs.size();
+        top.lines.push_back({std::string(selected ? "> " : "  ") + specs[i].name + " = " +
+                                 r.params().text(specs[i].name),
+                             selected ? green : grey});
+    }
+    for (const auto& n : r.stats.notes) top.lines.push_back({n, blue});
+    if (showHelp_)
+        for (const auto& h : windowHelp()) top.lines.push_back({h, white});
+    else
+        top.lines.push_back({"h: every key", grey});
+    top.maxLines =
+        std::max(3, showHelp_ ? rows - 3 : rows * 11 / 20);  // help asked for: room for it
+    blocks.push_back(top);
+
+    std::string legend = viewLegend(s, r.view);
+    if (!legend.empty()) {
+        HudBlock b;
+        b.bottom = true;
+        b.lines = {{legend, white}};
+        b.maxLines = 2;
+        blocks.push_back(b);
+    }
+    if (!flash_.empty()) {
+        HudBlock b;
+        b.bottom = true;
+        b.lines = {{flash_, flashIsError_ ? errorText : green}};
+        b.maxLines = 3;
+        b.panel = flashIsError_ ? glm::vec4(0.25f, 0.02f, 0.02f, 0.9f) : glm::vec4(0, 0, 0, 0.75f);
+        blocks.push_back(b);
+    }
+    if (!errors.empty()) {
+        HudBlock b;
+        b.bottom = true;
+        b.lines.push_back({renderError_.empty()
+                               ? "shader error (the last good program keeps drawing):"
+                               : "shader error (no good program for this stage yet):",
+                           {1, 0.7f, 0.6f, 1}});
+        for (const auto& e : errors) {
+            std::istringstream in(e);
+            std::string line;
+            while (std::getline(in, line))
+                if (!line.empty()) b.lines.push_back({line, errorText});
+        }
+        b.maxLines = std::max(3, rows * 7 / 20);
+        b.panel = {0.12f, 0.0f, 0.0f, 0.88f};
+        blocks.push_back(b);
+    }
+    return blocks;
+}
+
+std::string WindowSession::draw(int width, int height, const std::string& saveTo, bool withHud) {
+    width_ = width;
+    height_ = height;
+    Renderer& r = *slot_->renderer;
+    auto start = Clock::now();
+    if (animateLight_) {  // radians per second, whatever the frame rate
+        double dt = std::min(std::chrono::duration<double>(start - lastAnimation_).count(), 0.25);
+        r.lightPosition = circlingLight(r.lightPosition, kLightRadiansPerSecond, dt);
+    }
+    lastAnimation_ = start;
+    try {
+        r.render(0, width, height);
+        renderError_.clear();
+    } catch (const ShaderError& e) {  // no good program yet for this stage: show why
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, width, height);
+        glClearColor(0.08f, 0.02f, 0.02f, 1);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        renderError_ = e.what();
+        if (printedRenderError_ != renderError_)
+            say(std::cerr, "shadowlab: shader error (no good program for this stage yet): " +
+                               oneLine(e.what()));
+        printedRenderError_ = renderError_;
+    }
+    std::string saved;
+    if (!saveTo.empty() && !withHud) saved = readPixelsToPng(saveTo);
+    if (hudMode_ != HudMode::Hidden) {
+        try {
+            hud_.draw(r.shaders(), hudBlocks(), width, height, hudScale(width, height));
+        } catch (const ShaderError& e) {  // a student's broken hud/text: the picture still shows
+            if (renderError_.empty()) renderError_ = e.what();
+        }
+    }
+    if (!saveTo.empty() && withHud) saved = readPixelsToPng(saveTo);
+    glFinish();
+    drawMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    return saved;
+}
+
+std::string WindowSession::stateJson() const {
+    Renderer& r = *slot_->renderer;
+    nlohmann::json j;
+    j["stage"] = r.stage().id;
+    j["index"] = r.stageIndex();
+    j["tree"] = treeName(r.shaders().tree());
+    j["sessionTree"] = treeName(tree_);
+    j["scene"] = scene_;
+    j["view"] = viewLabel(r.stage(), r.view);
+    j["hud"] = hudMode_ == HudMode::Full      ? "full"
+               : hudMode_ == HudMode::Compact ? "compact"
+                                              : "hidden";
+    j["errors"] = reloadErrors_.size() + (renderError_.empty() ? 0 : 1);
+    j["error"] = !renderError_.empty()   ? oneLine(renderError_)
+                 : reloadErrors_.empty() ? ""
+                                         : oneLine(reloadErrors_[0]);
+    j["message"] = flash_;
+    j["animating"] = animateLight_;
+    const auto& specs = r.params().specs();
+    j["param"] = specs.empty() ? "" : specs[selectedParam_ % specs.size()].name;
+    j["value"] = specs.empty() ? "" : r.params().text(j["param"].get<std::string>());
+    j["help"] = showHelp_;
+    return j.dump();
+}
+
+}  // namespace sl

@@ -1,0 +1,79 @@
+// What the window does, apart from freeglut: the renderers (one per tree and scene, made on
+// first use in the one context), stage and tree switching, keys, shader reload, shots, the HUD.
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <memory>
+
+#include "platform/glut_window.h"
+#include "platform/shader_watch.h"
+#include "render/hud.h"
+
+namespace sl {
+
+enum class HudMode { Full, Compact, Hidden };
+
+class WindowSession {
+  public:
+    using Clock = std::chrono::steady_clock;
+    // Needs the window's context current. Throws UsageError, SceneError, ShaderError.
+    explicit WindowSession(const WindowArgs& args);
+
+    // Input. Each returns true when the picture must be redrawn.
+    bool key(unsigned char key, bool shift);
+    bool drag(int dx, int dy);
+    // A few times a second: settled shader edits, the end of an on-screen message.
+    bool tick(Clock::time_point now);
+
+    // Draws the stage and the HUD into the default framebuffer. With `saveTo`, the frame is
+    // also saved (without the HUD unless `withHud`); returns "" or the error.
+    std::string draw(int width, int height, const std::string& saveTo = "", bool withHud = false);
+    bool animating() const { return animateLight_; }
+    // True after a draw that had no good program for the stage (the exit code of --frames runs).
+    bool shaderFailed() const { return !renderError_.empty(); }
+    // The state a test reads (--state), as JSON text.
+    std::string stateJson() const;
+
+  private:
+    struct Slot {
+        std::unique_ptr<Renderer> renderer;
+        Camera homeCamera;
+        glm::vec3 homeLight;
+    };
+    bool selectStage(std::size_t index, GlslTree sessionTree);
+    Slot& slotFor(GlslTree tree, const std::string& scene, const std::string& stage);
+    std::string sceneFor(const StageInfo& stage);
+    void reload(bool force);
+    void saveShot();
+    void flash(const std::string& text, bool error);
+    std::vector<HudBlock> hudBlocks() const;
+    std::string title() const;
+    std::string treeText() const;
+    std::string readPixelsToPng(const std::string& path) const;
+
+    WindowArgs args_;
+    RenderRequest request_;
+    std::string startScene_;
+    GlslTree tree_;                      // the user's tree; fixed runs legacy whatever it is
+    std::map<std::string, Slot> slots_;  // "tree/scene"
+    Slot* slot_ = nullptr;
+    std::string scene_;
+    std::map<std::string, bool> sceneHasMirror_;
+    Hud hud_;
+    ShaderWatch watch_;
+    int width_ = 0, height_ = 0;
+    std::size_t selectedParam_ = 0;
+    bool showHelp_ = false;
+    HudMode hudMode_ = HudMode::Full;
+    bool animateLight_ = false;
+    Clock::time_point lastAnimation_;
+    std::vector<std::string> reloadErrors_;
+    std::string renderError_, printedRenderError_;
+    std::string flash_;
+    bool flashIsError_ = false;
+    Clock::time_point flashUntil_;
+    double drawMs_ = 0;
+};
+
+}  // namespace sl

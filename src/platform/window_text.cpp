@@ -1,0 +1,75 @@
+#include "platform/window_text.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace sl {
+
+namespace {
+bool isMirror(const StageInfo& s) {
+    return s.needsMirror;
+}
+}  // namespace
+
+std::string viewLabel(const StageInfo& stage, ViewMode view) {
+    if (isMirror(stage) && view == ViewMode::ShadowMap) return "mirror-texture";
+    return viewName(view);
+}
+
+std::string viewLegend(const StageInfo& stage, ViewMode view) {
+    switch (view) {
+        case ViewMode::Final:
+            return "";
+        case ViewMode::ShadowMap:
+            if (isMirror(stage))
+                return "mirror-texture: what the reflected camera rendered, flipped left-right as "
+                       "the "
+                       "mirror shows it";
+            return "shadow-map: depth seen from the light; black = near the light, white = far "
+                   "(or nothing drawn)";
+        case ViewMode::Light:
+            return "light: the scene as the light sees it (the shadow map's frustum)";
+        case ViewMode::Visibility:
+            return "visibility: white = lit (the map sees this point), black = in shadow";
+        case ViewMode::LightDepth:
+            return "light-depth: each point's own depth from the light; black = near, white = far";
+    }
+    return "";
+}
+
+std::string shotFileName(const std::string& stage, const std::string& tree, const std::string& view,
+                         std::time_t seconds, int millis) {
+    std::tm local{};
+    localtime_r(&seconds, &local);
+    char stamp[32];
+    std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
+    char ms[8];
+    std::snprintf(ms, sizeof ms, "%03d", millis % 1000);
+    return stage + "-" + tree + "-" + view + "-" + stamp + "-" + ms + ".png";
+}
+
+const std::vector<std::string>& windowHelp() {
+    static const std::vector<std::string> help = {
+        "0-7: stage by number    [ ]: previous / next stage (all eight, either tree)",
+        "g: switch the GLSL tree (core / legacy); fixed always runs legacy",
+        "Tab / Shift-Tab: next / previous parameter",
+        "= -: change it one step    Shift + -: ten steps (+ and _)",
+        "x: reset this stage's parameters    c: reset camera and light",
+        "v: next debug view    l: animate the light    left drag: orbit",
+        "r: reload shaders now    p: save a PNG (./shots or --shots DIR)",
+        "i: HUD full / one line / hidden    h: this help    Esc: quit",
+    };
+    return help;
+}
+
+std::string oneLine(const std::string& message) {
+    std::istringstream in(message);
+    std::string line, out;
+    while (std::getline(in, line)) {
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        out += (out.empty() ? "" : " | ") + line;
+    }
+    return out;
+}
+
+}  // namespace sl

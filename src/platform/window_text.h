@@ -1,0 +1,28 @@
+// Words the window shows and writes: view names and legends per stage, shot file names, the
+// help. Plain functions, unit-tested without a window.
+#pragma once
+
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include "render/stage_interface.h"
+
+namespace sl {
+
+// The view's name as the HUD shows it: the mirror stage's `shadow-map` view is its texture.
+std::string viewLabel(const StageInfo& stage, ViewMode view);
+// One line saying how to read a debug view ("" for the final picture).
+std::string viewLegend(const StageInfo& stage, ViewMode view);
+
+// `<stage>-<tree>-<view>-<YYYYmmdd-HHMMSS-mmm>.png`, from local time `seconds` and `millis`.
+std::string shotFileName(const std::string& stage, const std::string& tree, const std::string& view,
+                         std::time_t seconds, int millis);
+
+// Every key the window knows, one line each ("key: what it does").
+const std::vector<std::string>& windowHelp();
+
+// Joins a multi-line message into one line (" | " between its lines), for the terminal.
+std::string oneLine(const std::string& message);
+
+}  // namespace sl

@@ -1,0 +1,87 @@
+// The window's words without a window: HUD wrapping, view names and legends, shot names.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "platform/window_text.h"
+#include "render/hud.h"
+
+using namespace sl;
+
+namespace {
+std::string joined(const std::vector<HudLine>& lines) {
+    std::string all;
+    for (const auto& l : lines) all += l.text;
+    return all;
+}
+std::string withoutSpaces(std::string s) {
+    s.erase(std::remove(s.begin(), s.end(), ' '), s.end());
+    return s;
+}
+}  // namespace
+
+TEST(HudText, WrapsAtSpacesAndKeepsEveryCharacter) {
+    std::vector<HudLine> in = {{"the quick brown fox jumps over the lazy dog", {1, 0, 0, 1}}};
+    auto out = wrapHudLines(in, 60);
+    ASSERT_GT(out.size(), 2u);
+    for (const auto& l : out) EXPECT_EQ(l.color, glm::vec4(1, 0, 0, 1));
+    EXPECT_EQ(withoutSpaces(joined(out)), withoutSpaces(in[0].text));
+    EXPECT_EQ(out[0].text, "the quick");
+}
+
+// A 16x16 window once made the wrap loop forever: every piece must take a character.
+TEST(HudText, WrapEndsInATinyWindow) {
+    std::vector<HudLine> in = {{"  indented words and averyveryverylongword", {}}};
+    for (float width : {0.0f, 1.0f, 5.0f, 8.0f}) {
+        auto out = wrapHudLines(in, width);
+        EXPECT_LE(out.size(), in[0].text.size());
+        EXPECT_EQ(withoutSpaces(joined(out)), withoutSpaces(in[0].text));
+    }
+}
+
+TEST(HudText, ABlockSaysHowManyLinesDoNotFit) {
+    HudBlock b;
+    for (int k = 0; k < 10; ++k) b.lines.push_back({"line " + std::to_string(k), {}});
+    b.maxLines = 4;
+    auto out = layoutHudBlock(b, 1000);
+    ASSERT_EQ(out.size(), 4u);
+    EXPECT_EQ(out[2].text, "line 2");
+    EXPECT_EQ(out[3].text, "(7 more lines)");
+}
+
+TEST(HudText, ScaleFollowsTheSmallerSide) {
+    EXPECT_EQ(hudScale(320, 240), 1.0f);
+    EXPECT_FLOAT_EQ(hudScale(1920, 1080), 3.0f);
+    EXPECT_FLOAT_EQ(hudScale(400, 1080), hudScale(1080, 400));  // a tall narrow window too
+}
+
+TEST(WindowText, MirrorTextureViewIsNotCalledShadowMap) {
+    const StageInfo* mirror = findStage("mirror");
+    const StageInfo* hardware = findStage("hardware");
+    ASSERT_TRUE(mirror && hardware);
+    EXPECT_EQ(viewLabel(*mirror, ViewMode::ShadowMap), "mirror-texture");
+    EXPECT_EQ(viewLabel(*hardware, ViewMode::ShadowMap), "shadow-map");
+    for (ViewMode v : hardware->views)
+        EXPECT_EQ(viewLegend(*hardware, v).empty(), v == ViewMode::Final) << viewName(v);
+    EXPECT_NE(viewLegend(*hardware, ViewMode::Visibility).find("white = lit"), std::string::npos);
+}
+
+TEST(WindowText, ShotNameCarriesStageTreeViewAndTime) {
+    std::string name = shotFileName("margin", "core", "visibility", 0, 42);
+    EXPECT_EQ(name.rfind("margin-core-visibility-", 0), 0u) << name;
+    EXPECT_EQ(name.substr(name.size() - 8), "-042.png") << name;
+    EXPECT_EQ(name.size(), std::string("margin-core-visibility-YYYYmmdd-HHMMSS-mmm.png").size());
+}
+
+TEST(WindowText, HelpListsEveryKey) {
+    std::string all;
+    for (const auto& h : windowHelp()) all += h + "\n";
+    for (const char* key : {"0-7", "[ ]", "g:", "Shift-Tab", "= -", "Shift",
+                            "x:", "c:", "v:", "l:", "drag", "r:", "p:", "i:", "h:", "Esc"})
+        EXPECT_NE(all.find(key), std::string::npos) << key;
+}
+
+TEST(WindowText, OneLinePerEvent) {
+    EXPECT_EQ(oneLine("a.frag: did not compile:\na.frag:3:1: error\n\n"),
+              "a.frag: did not compile: | a.frag:3:1: error");
+}
