@@ -105,12 +105,8 @@ nlohmann::json reportJson(const std::vector<CheckResult>& results, int exitCode,
             {"results", list}};
 }
 
-// An output file's folder must exist before any GL work, so a typo costs nothing.
-void requireFolderOf(const std::string& option, const std::string& file) {
-    if (file.empty()) return;
-    std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
-    if (!std::filesystem::is_directory(folder))
-        throw UsageError(option + ": the folder '" + folder.string() + "' does not exist");
+std::string diffFileIn(const std::string& dir, const RenderRequest& r) {
+    return dir + "/" + r.stage + "-" + treeName(r.tree) + ".png";
 }
 
 int runCheckCommand(const CheckArgs& a) {
@@ -121,8 +117,8 @@ int runCheckCommand(const CheckArgs& a) {
             "--diff-dir DIR for --all)");
     if (a.all && !a.diff.empty())
         throw UsageError("--diff: with --all use --diff-dir DIR (one image per stage and tree)");
-    requireFolderOf("--report", a.report);
-    requireFolderOf("--diff", a.diff);
+    if (!a.report.empty()) checkOutputPath("--report", a.report);
+    if (!a.diff.empty()) checkOutputPath("--diff", a.diff);
     CommonOptions common = a.common;
     common.stage = a.all ? "phong" : a.stage;
     RenderRequest base = toRequest(common);
@@ -137,7 +133,11 @@ int runCheckCommand(const CheckArgs& a) {
     }
     for (const auto& r : requests) validateRequest(r);  // every bad value before any GL work
     expectations();                                     // and a broken data file too
-    if (!a.diffDir.empty()) makeOutputDir(a.diffDir);
+    if (!a.diffDir.empty()) {
+        makeOutputDir(a.diffDir);
+        for (const auto& r : requests)
+            if (r.stage != "mirror") checkOutputPath("--diff-dir", diffFileIn(a.diffDir, r));
+    }
     for (const auto& n : notes) std::cerr << "shadowlab: note: " << n << "\n";
 
     auto start = std::chrono::steady_clock::now();
@@ -150,8 +150,7 @@ int runCheckCommand(const CheckArgs& a) {
     for (std::size_t k = 0; k < requests.size(); ++k) {
         const RenderRequest& r = requests[k];
         std::string diff = a.diff;
-        if (!a.diffDir.empty() && r.stage != "mirror")
-            diff = a.diffDir + "/" + r.stage + "-" + treeName(r.tree) + ".png";
+        if (!a.diffDir.empty() && r.stage != "mirror") diff = diffFileIn(a.diffDir, r);
         CheckResult result = runCheck(rig, r, diff);
         if (machine.empty()) {
             machine = result.machine;
@@ -181,7 +180,8 @@ int runCheckCommand(const CheckArgs& a) {
         if (!r.diffFile.empty() && !a.diff.empty())
             std::cout << "diff image: " << r.diffFile << "\n";
     if (!a.report.empty()) {
-        std::string err = writeTextFile(a.report, report.dump(2) + "\n");
+        std::string err = writeTextFile(
+            a.report, report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
         if (!err.empty()) throw UsageError("--report: " + err);
     }
     return exitCode;
