@@ -42,7 +42,14 @@ std::string dataDir() {
     if (env && *env) return env;
     static const std::string found = [] {
         std::string installed = installedDataDir();
-        if (!installed.empty() && isFolder(installed + "/shaders_core")) return installed;
+        if (!installed.empty() && isFolder(installed + "/shaders_core")) {
+            char* real = ::realpath(installed.c_str(), nullptr);  // "prefix/share/shadowlab"
+            if (real) {
+                installed = real;
+                std::free(real);
+            }
+            return installed;
+        }
         // The build tree runs from the sources it was built from; an installed copy whose
         // share/ is gone must not silently fall back (the install test sets this).
         const char* noFallback = std::getenv("SHADOWLAB_NO_SOURCE_DIR");
