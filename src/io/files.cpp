@@ -92,7 +92,9 @@ std::string outputPathProblem(const std::string& path) {
     }
     if (errno != ENOENT) return failure(path, std::strerror(errno));
     std::string folder = folderOf(path);
-    if (::stat(folder.c_str(), &st) != 0) return failure(path, std::strerror(errno));
+    if (::stat(folder.c_str(), &st) != 0)
+        return failure(path, errno == ENOENT ? "the folder '" + folder + "' does not exist"
+                                             : std::strerror(errno));
     if (!S_ISDIR(st.st_mode)) return failure(path, "'" + folder + "' is not a folder");
     return {};
 }
