@@ -12,6 +12,7 @@
 #include "app/bench_output.h"
 #include "app/check_run.h"
 #include "app/commands.h"
+#include "io/files.h"
 #include "scene/scene_json.h"
 
 namespace sl {
@@ -145,7 +146,7 @@ int runCheckCommand(const CheckArgs& a) {
     std::vector<CheckResult> results;
     std::string machine, backend;
     std::cout << "check against " << expectationsPath() << ", " << base.width << "x" << base.height
-              << (base.overlay.empty() ? "" : ", shaders " + base.overlay) << "\n"
+              << (base.overlay.empty() ? "" : ", shaders " + printable(base.overlay)) << "\n"
               << "        " << checkTableHeader();
     for (std::size_t k = 0; k < requests.size(); ++k) {
         const RenderRequest& r = requests[k];

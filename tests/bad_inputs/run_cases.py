@@ -256,8 +256,8 @@ def report_valid(*expect):
     is in it; plus no_secret and no control characters on stderr."""
     def check(tmp, p):
         problems = no_secret(tmp, p)
-        if any(ord(c) < 32 and c not in "\n\t" for c in p.stderr):
-            problems.append("stderr holds control characters")
+        if any(ord(c) < 32 and c not in "\n\t" for c in p.stdout + p.stderr):
+            problems.append("stdout or stderr holds control characters")
         path = os.path.join(tmp, "report.json")
         try:
             with open(path, "rb") as f:
