@@ -14,7 +14,11 @@ if [ ${#missing[@]} -eq 0 ]; then
 fi
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
-echo "deps: installing ${missing[*]}"
-$sudo apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "deps: installing ${#missing[@]} packages: ${missing[*]}"
+# -q (not -qq, not >/dev/null): one line per download, unpack and set-up, so a first run that
+# takes minutes shows what it is doing.
+echo "deps: apt-get update"
+$sudo apt-get update -q
+echo "deps: apt-get install (downloads, then one line per package set up)"
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 echo "deps: done"

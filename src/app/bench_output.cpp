@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "gl/gl.h"
+#include "io/files.h"
 #include "metrics/image.h"
 #include "render/request.h"
 
@@ -99,6 +100,11 @@ void makeOutputDir(const std::string& dir) {
     if (ec || !std::filesystem::is_directory(dir))
         throw UsageError("--out: cannot create the folder '" + dir + "'" +
                          (ec ? " (" + ec.message() + ")" : ""));
+}
+
+void checkOutputPath(const std::string& option, const std::string& path) {
+    if (std::string why = outputPathProblem(path); !why.empty())
+        throw UsageError(option + ": " + why);
 }
 
 }  // namespace sl

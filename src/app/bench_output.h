@@ -41,4 +41,9 @@ std::string runGnuplot(const std::string& dir, const std::string& scriptPath,
 // Creates `dir` (and its parents) if missing; throws UsageError when it cannot.
 void makeOutputDir(const std::string& dir);
 
+// Before any GL work: throws UsageError("OPTION: cannot write 'PATH': why") unless `path` can be
+// written as an output file (its folder exists; it is not a folder, device, symlink or
+// read-only file). Every output option (--out, --report, --diff, --junit...) goes through it.
+void checkOutputPath(const std::string& option, const std::string& path);
+
 }  // namespace sl

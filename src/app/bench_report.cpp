@@ -189,7 +189,8 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
             json["rows"].push_back(rowJson(table.rows.back()));
         }
     writeOrThrow(dir + "/bench.csv", table.csv());
-    writeOrThrow(dir + "/bench.json", json.dump(1) + "\n");
+    writeOrThrow(dir + "/bench.json",
+                 json.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 
     // Chart data. Error against time: every 640x480 configuration, moving light, by method.
     std::map<std::string, Series> points;

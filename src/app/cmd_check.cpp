@@ -12,6 +12,7 @@
 #include "app/bench_output.h"
 #include "app/check_run.h"
 #include "app/commands.h"
+#include "io/files.h"
 #include "scene/scene_json.h"
 
 namespace sl {
@@ -105,14 +106,6 @@ nlohmann::json reportJson(const std::vector<CheckResult>& results, int exitCode,
             {"results", list}};
 }
 
-// An output file's folder must exist before any GL work, so a typo costs nothing.
-void requireFolderOf(const std::string& option, const std::string& file) {
-    if (file.empty()) return;
-    std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
-    if (!std::filesystem::is_directory(folder))
-        throw UsageError(option + ": the folder '" + folder.string() + "' does not exist");
-}
-
 int runCheckCommand(const CheckArgs& a) {
     if (a.all == !a.stage.empty()) throw UsageError("check: give either --stage ID or --all");
     if (!a.diff.empty() && !a.diffDir.empty())
@@ -121,8 +114,8 @@ int runCheckCommand(const CheckArgs& a) {
             "--diff-dir DIR for --all)");
     if (a.all && !a.diff.empty())
         throw UsageError("--diff: with --all use --diff-dir DIR (one image per stage and tree)");
-    requireFolderOf("--report", a.report);
-    requireFolderOf("--diff", a.diff);
+    if (!a.report.empty()) checkOutputPath("--report", a.report);
+    if (!a.diff.empty()) checkOutputPath("--diff", a.diff);
     CommonOptions common = a.common;
     common.stage = a.all ? "phong" : a.stage;
     RenderRequest base = toRequest(common);
@@ -145,7 +138,7 @@ int runCheckCommand(const CheckArgs& a) {
     std::vector<CheckResult> results;
     std::string machine, backend;
     std::cout << "check against " << expectationsPath() << ", " << base.width << "x" << base.height
-              << (base.overlay.empty() ? "" : ", shaders " + base.overlay) << "\n"
+              << (base.overlay.empty() ? "" : ", shaders " + printable(base.overlay)) << "\n"
               << "        " << checkTableHeader();
     // Every (stage, tree) with its lessons and views, planned before any GL work.
     const bool narrowed = !base.sets.empty() || base.sceneGiven;
@@ -177,6 +170,12 @@ int runCheckCommand(const CheckArgs& a) {
         }
         return stem + "-" + slug + ext;
     };
+    for (const auto& cases : plan)  // every diff image's path, before any GL work
+        for (const CheckCase& c : cases) {
+            std::string path = diffPath(c);
+            if (!path.empty() && c.request.stage != "mirror")
+                checkOutputPath(a.diffDir.empty() ? "--diff" : "--diff-dir", path);
+        }
     std::size_t done = 0;
     for (const auto& cases : plan) {
         std::vector<CheckResult> stageResults =
@@ -212,7 +211,8 @@ int runCheckCommand(const CheckArgs& a) {
         if (!r.diffFile.empty() && !a.diff.empty())
             std::cout << "diff image: " << r.diffFile << "\n";
     if (!a.report.empty()) {
-        std::string err = writeTextFile(a.report, report.dump(2) + "\n");
+        std::string err = writeTextFile(
+            a.report, report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
         if (!err.empty()) throw UsageError("--report: " + err);
     }
     return exitCode;

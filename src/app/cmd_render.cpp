@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/bench_output.h"
 #include "app/bench_run.h"
 #include "app/commands.h"
 #include "app/mirror_figure.h"
@@ -53,6 +54,8 @@ void drawMirrorFigure(const RenderRequest& request, const std::string& path) {
 int renderOnce(const RenderArgs& a) {
     RenderRequest request = toRequest(a.common);
     validateRequest(request);
+    if (!a.figure.empty()) checkOutputPath("--figure", a.figure);
+    if (!a.out.empty()) checkOutputPath("--out", a.out);
     if (!a.figure.empty()) {
         drawMirrorFigure(request, a.figure);
         if (a.out.empty()) return kOk;  // the figure alone

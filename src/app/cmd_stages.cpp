@@ -59,7 +59,7 @@ int listStages(bool json) {
             for (ViewMode v : s.views) j["views"].push_back(viewName(v));
             out.push_back(j);
         }
-        std::cout << out.dump(2) << "\n";
+        std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
         return kOk;
     }
     int key = 0;

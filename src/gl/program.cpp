@@ -2,8 +2,99 @@
 
 #include <iostream>
 #include <set>
+#include <vector>
+
+#include "gl/shader_library.h"
 
 namespace sl {
+
+namespace {
+
+const char* glslTypeName(GLenum type) {
+    switch (type) {
+        case GL_FLOAT:
+            return "float";
+        case GL_FLOAT_VEC2:
+            return "vec2";
+        case GL_FLOAT_VEC3:
+            return "vec3";
+        case GL_FLOAT_VEC4:
+            return "vec4";
+        case GL_INT:
+            return "int";
+        case GL_INT_VEC2:
+            return "ivec2";
+        case GL_INT_VEC3:
+            return "ivec3";
+        case GL_INT_VEC4:
+            return "ivec4";
+        case GL_UNSIGNED_INT:
+            return "uint";
+        case GL_UNSIGNED_INT_VEC2:
+            return "uvec2";
+        case GL_UNSIGNED_INT_VEC3:
+            return "uvec3";
+        case GL_UNSIGNED_INT_VEC4:
+            return "uvec4";
+        case GL_BOOL:
+            return "bool";
+        case GL_BOOL_VEC2:
+            return "bvec2";
+        case GL_BOOL_VEC3:
+            return "bvec3";
+        case GL_BOOL_VEC4:
+            return "bvec4";
+        case GL_FLOAT_MAT2:
+            return "mat2";
+        case GL_FLOAT_MAT3:
+            return "mat3";
+        case GL_FLOAT_MAT4:
+            return "mat4";
+        case GL_FLOAT_MAT2x3:
+            return "mat2x3";
+        case GL_FLOAT_MAT2x4:
+            return "mat2x4";
+        case GL_FLOAT_MAT3x2:
+            return "mat3x2";
+        case GL_FLOAT_MAT3x4:
+            return "mat3x4";
+        case GL_FLOAT_MAT4x2:
+            return "mat4x2";
+        case GL_FLOAT_MAT4x3:
+            return "mat4x3";
+        case GL_DOUBLE:
+            return "double";
+        default:
+            return nullptr;  // samplers and the rest
+    }
+}
+
+// What glUniform* accepts for each setter (the GL spec's table): glUniform1i also sets bools
+// and samplers; the float setters also set bools of the same size.
+bool fits(GLenum type, const char*& wanted, int setter) {
+    switch (setter) {
+        case 0:
+            wanted = "int (or a sampler)";
+            return type == GL_INT || type == GL_BOOL || glslTypeName(type) == nullptr;
+        case 1:
+            wanted = "float";
+            return type == GL_FLOAT || type == GL_BOOL;
+        case 2:
+            wanted = "vec3";
+            return type == GL_FLOAT_VEC3 || type == GL_BOOL_VEC3;
+        case 3:
+            wanted = "vec4";
+            return type == GL_FLOAT_VEC4 || type == GL_BOOL_VEC4;
+        case 4:
+            wanted = "mat3";
+            return type == GL_FLOAT_MAT3;
+        default:
+            wanted = "mat4";
+            return type == GL_FLOAT_MAT4;
+    }
+}
+
+}  // namespace
 
 GLint Program::location(const char* uniform) {
     auto it = locations_.find(uniform);
@@ -16,6 +107,40 @@ GLint Program::location(const char* uniform) {
     if (loc < 0 && reportMissing_ && said.insert(name_ + "/" + uniform).second)
         std::cerr << "shadowlab: note: " << name_ << " (your shader) has no active uniform '"
                   << uniform << "'; the value the stage sets is ignored" << std::endl;
+    return loc;
+}
+
+GLenum Program::declaredType(GLint location) {
+    if (types_.empty()) {  // every active uniform once: name -> location -> type
+        GLint count = 0, longest = 0;
+        glGetProgramiv(handle_.id(), GL_ACTIVE_UNIFORMS, &count);
+        glGetProgramiv(handle_.id(), GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
+        std::vector<char> name(std::size_t(std::max(longest, 1)) + 1, '\0');
+        for (GLint i = 0; i < count; ++i) {
+            GLint size = 0;
+            GLenum type = 0;
+            glGetActiveUniform(handle_.id(), GLuint(i), GLsizei(name.size()), nullptr, &size, &type,
+                               name.data());
+            GLint loc = glGetUniformLocation(handle_.id(), name.data());
+            if (loc >= 0) types_[loc] = type;
+        }
+        types_[-1] = 0;  // marks the table as filled
+    }
+    auto it = types_.find(location);
+    return it == types_.end() ? 0 : it->second;
+}
+
+GLint Program::typedLocation(const char* uniform, Setter setter) {
+    GLint loc = location(uniform);
+    if (loc < 0) return loc;
+    GLenum type = declaredType(loc);
+    const char* wanted = "";
+    if (type != 0 && !fits(type, wanted, static_cast<int>(setter))) {
+        const char* declared = glslTypeName(type);
+        throw ShaderError((origin_.empty() ? name_ : origin_) + ": uniform '" + uniform +
+                          "' is declared " + (declared ? declared : "a sampler") +
+                          ", but the stage sets a " + wanted + " (declare it as " + wanted + ")");
+    }
     return loc;
 }
 

@@ -10,33 +10,54 @@
 namespace sl {
 
 class Program {
-public:
+  public:
     Program() = default;
-    Program(ProgramHandle handle, std::string name) : handle_(std::move(handle)), name_(std::move(name)) {}
+    Program(ProgramHandle handle, std::string name)
+        : handle_(std::move(handle)), name_(std::move(name)) {}
 
     GLuint id() const { return handle_.id(); }
     const std::string& name() const { return name_; }
     explicit operator bool() const { return bool(handle_); }
     void use() const { glUseProgram(handle_.id()); }
 
-    // -1 when the program has no active uniform of that name (setting it is then a no-op, as GL does).
+    // -1 when the program has no active uniform of that name (setting it is then a no-op, as GL
+    // does).
     GLint location(const char* uniform);
     bool has(const char* uniform) { return location(uniform) >= 0; }
     // A student's program: say once per name on stderr when a uniform the stage sets is not
     // active in it (a typo, or unused), instead of ignoring it silently.
     void reportMissingUniforms(bool on) { reportMissing_ = on; }
 
-    void set(const char* u, int v) { glUniform1i(location(u), v); }
-    void set(const char* u, float v) { glUniform1f(location(u), v); }
-    void set(const char* u, const glm::vec3& v) { glUniform3fv(location(u), 1, &v[0]); }
-    void set(const char* u, const glm::vec4& v) { glUniform4fv(location(u), 1, &v[0]); }
-    void set(const char* u, const glm::mat3& m) { glUniformMatrix3fv(location(u), 1, GL_FALSE, &m[0][0]); }
-    void set(const char* u, const glm::mat4& m) { glUniformMatrix4fv(location(u), 1, GL_FALSE, &m[0][0]); }
+    // The files it was built from, named when a uniform's declared type does not fit.
+    void setOrigin(std::string files) { origin_ = std::move(files); }
 
-private:
+    // Each setter checks the uniform's declared type first: `uniform int margin;` set with a
+    // float is a ShaderError naming the files (the shader's fault), not a GL error.
+    void set(const char* u, int v) { glUniform1i(typedLocation(u, Setter::Int), v); }
+    void set(const char* u, float v) { glUniform1f(typedLocation(u, Setter::Float), v); }
+    void set(const char* u, const glm::vec3& v) {
+        glUniform3fv(typedLocation(u, Setter::Vec3), 1, &v[0]);
+    }
+    void set(const char* u, const glm::vec4& v) {
+        glUniform4fv(typedLocation(u, Setter::Vec4), 1, &v[0]);
+    }
+    void set(const char* u, const glm::mat3& m) {
+        glUniformMatrix3fv(typedLocation(u, Setter::Mat3), 1, GL_FALSE, &m[0][0]);
+    }
+    void set(const char* u, const glm::mat4& m) {
+        glUniformMatrix4fv(typedLocation(u, Setter::Mat4), 1, GL_FALSE, &m[0][0]);
+    }
+
+  private:
+    enum class Setter { Int, Float, Vec3, Vec4, Mat3, Mat4 };
+    GLint typedLocation(const char* uniform, Setter setter);
+    GLenum declaredType(GLint location);
+
     ProgramHandle handle_;
     std::string name_;
+    std::string origin_;
     std::unordered_map<std::string, GLint> locations_;
+    std::unordered_map<GLint, GLenum> types_;  // by location, filled on first use
     bool reportMissing_ = false;
 };
 

@@ -2,20 +2,29 @@
 
 #include <sys/stat.h>
 
-#include <fstream>
-#include <regex>
+#include <cstdlib>
 #include <sstream>
+
+#include "io/files.h"
 
 namespace sl {
 
-const char* treeName(GlslTree t) { return t == GlslTree::Core ? "core" : "legacy"; }
+const char* treeName(GlslTree t) {
+    return t == GlslTree::Core ? "core" : "legacy";
+}
+
+ShaderError::ShaderError(const std::string& message)
+    : std::runtime_error(printable(validUtf8(message))) {}
 
 namespace {
 
-bool fileExists(const std::string& path) {
-    struct stat st;
-    return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
+// Bounds on what one shader may pull in: far beyond any lesson's shaders, small enough that an
+// include bomb or a device stops at once.
+constexpr std::size_t kMaxFileBytes = 1u << 20;
+constexpr std::size_t kMaxExpandedBytes = 1u << 20;  // one stage file with its includes
+constexpr int kMaxIncludes = 256;                    // include expansions per stage file
+constexpr int kMaxIncludeDepth = 8;
+constexpr std::size_t kMaxIncludeName = 256;
 
 long long modificationStamp(const std::string& path) {
     struct stat st;
@@ -23,43 +32,140 @@ long long modificationStamp(const std::string& path) {
     return static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
 }
 
+bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
+
+// Matches `#include "name"` (spaces allowed around each part) in one pass over the line; the
+// name may be empty. A regex here recursed once per character and overflowed the stack on a
+// line of a million spaces.
+bool matchInclude(const std::string& line, std::string& name) {
+    std::size_t i = 0, n = line.size();
+    auto skip = [&] {
+        while (i < n && isSpace(line[i])) ++i;
+    };
+    skip();
+    if (i == n || line[i] != '#') return false;
+    ++i;
+    skip();
+    static const char kWord[] = "include";
+    if (line.compare(i, sizeof kWord - 1, kWord) != 0) return false;
+    i += sizeof kWord - 1;
+    std::size_t beforeSpace = i;
+    skip();
+    if (i == beforeSpace || i == n || line[i] != '"') return false;
+    std::size_t close = line.find('"', i + 1);
+    if (close == std::string::npos) return false;
+    std::size_t start = i + 1;
+    i = close + 1;
+    skip();
+    if (i != n) return false;
+    name = line.substr(start, close - start);
+    return true;
+}
+
+// `relative` with "." and "x/.." removed; "" when it is absolute, empty or climbs above the root.
+std::string normalizedRelative(const std::string& relative) {
+    if (relative.empty() || relative[0] == '/') return {};
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    while (start <= relative.size()) {
+        std::size_t slash = relative.find('/', start);
+        if (slash == std::string::npos) slash = relative.size();
+        std::string part = relative.substr(start, slash - start);
+        start = slash + 1;
+        if (part.empty() || part == ".") continue;
+        if (part == "..") {
+            if (parts.empty()) return {};
+            parts.pop_back();
+        } else {
+            parts.push_back(part);
+        }
+    }
+    std::string out;
+    for (const auto& part : parts) out += (out.empty() ? "" : "/") + part;
+    return out;
+}
+
+std::string realPath(const std::string& path) {
+    char* real = ::realpath(path.c_str(), nullptr);
+    if (!real) return {};
+    std::string out = real;
+    std::free(real);
+    return out;
+}
+
+// Whether `path` (already resolved) is `folder` or inside it, compared by whole components.
+bool inside(const std::string& path, const std::string& folder) {
+    if (folder.empty()) return false;
+    if (folder == "/") return true;
+    return path == folder || (path.size() > folder.size() && path[folder.size()] == '/' &&
+                              path.compare(0, folder.size(), folder) == 0);
+}
+
 // Source text with includes expanded; files[k] is the file behind source-string number k.
 struct Expanded {
     std::string text;
     std::vector<std::string> files;
+    int includes = 0;
 };
 
 class Preprocessor {
-public:
+  public:
     Preprocessor(const ShaderLibrary& lib, GlslTree tree) : lib_(lib), tree_(tree) {}
 
-    void expand(const std::string& relative, Expanded& out, int depth) {
-        std::string path = lib_.resolve(relative);
-        if (depth > 8) throw ShaderError(path + ": #include nested too deeply (a cycle?)");
-        std::ifstream in(path);
-        if (!in) throw ShaderError(path + ": cannot read shader file (missing?)");
+    // `site`: "file:line" of the #include that asked for `relative` ("" for a stage file).
+    void expand(const std::string& relative, Expanded& out, int depth, const std::string& site) {
+        std::string where = site.empty() ? "" : " (#include at " + site + ")";
+        if (depth > kMaxIncludeDepth)
+            throw ShaderError(site + ": #include nested too deeply (a cycle?); at most " +
+                              std::to_string(kMaxIncludeDepth) + " levels");
+        ShaderLibrary::Found found = lib_.find(relative);
+        if (!found.refused.empty())
+            throw ShaderError(site.empty() ? found.refused : site + ": " + found.refused);
+        if (found.real.empty())
+            throw ShaderError(found.shown + ": cannot read shader file (missing?)" + where);
+        std::string text;
+        std::string why = readRegularFile(found.real, kMaxFileBytes, text, true);
+        if (!why.empty())
+            throw ShaderError(found.shown + ": cannot read shader file: " + why + where);
         int source = static_cast<int>(out.files.size());
-        out.files.push_back(path);
-        std::string line;
+        out.files.push_back(found.shown);
+        std::size_t begin = 0;
         int number = 0;
         bool any = false;
-        static const std::regex include(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
-        while (std::getline(in, line)) {
+        while (begin < text.size()) {
+            std::size_t end = text.find('\n', begin);
+            if (end == std::string::npos) end = text.size();
+            std::string line = text.substr(begin, end - begin);
+            begin = end + 1;
             ++number;
             any = any || line.find_first_not_of(" \t\r") != std::string::npos;
-            std::smatch m;
-            if (std::regex_match(line, m, include)) {
+            std::string name;
+            if (matchInclude(line, name)) {
+                std::string here = found.shown + ":" + std::to_string(number);
+                if (name.size() > kMaxIncludeName)
+                    throw ShaderError(here + ": #include name of " + std::to_string(name.size()) +
+                                      " characters; at most " + std::to_string(kMaxIncludeName));
+                if (++out.includes > kMaxIncludes)
+                    throw ShaderError(here + ": more than " + std::to_string(kMaxIncludes) +
+                                      " #include expansions (an include bomb?)");
                 out.text += lineDirective(1, static_cast<int>(out.files.size()));
-                expand(m[1].str(), out, depth + 1);
+                expand(name, out, depth + 1, here);
                 out.text += lineDirective(number + 1, source);
-                continue;
+            } else {
+                out.text += line;
+                out.text += '\n';
             }
-            out.text += line + "\n";
+            if (out.text.size() > kMaxExpandedBytes)
+                throw ShaderError(found.shown + ":" + std::to_string(number) +
+                                  ": the source with its includes exceeds " +
+                                  std::to_string(kMaxExpandedBytes) + " bytes");
         }
-        if (!any) throw ShaderError(path + ":1: shader file is empty");
+        if (!any) throw ShaderError(found.shown + ":1: shader file is empty");
     }
 
-private:
+  private:
     // GLSL 1.20 numbers the line after `#line N` as N + 1; GLSL 3.30 as N.
     std::string lineDirective(int nextLine, int source) const {
         int n = tree_ == GlslTree::Legacy ? nextLine - 1 : nextLine;
@@ -69,18 +175,38 @@ private:
     GlslTree tree_;
 };
 
-// Rewrites Mesa's "S:L(C): message" into "file:L:C: message".
+// Reads unsigned digits at `i`; false when there are none.
+bool digits(const std::string& s, std::size_t& i, std::size_t& value) {
+    std::size_t start = i;
+    value = 0;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') {
+        if (value < 100000000) value = value * 10 + std::size_t(s[i] - '0');
+        ++i;
+    }
+    return i > start;
+}
+
+// Rewrites Mesa's first "S:L(C)" in each line into "file:L:C" (one linear pass per line).
 std::string mapLog(const std::string& log, const std::vector<std::string>& files) {
-    static const std::regex where(R"((\d+):(\d+)\((\d+)\))");
     std::ostringstream out;
     std::istringstream in(log);
     std::string line;
     while (std::getline(in, line)) {
-        std::smatch m;
-        if (std::regex_search(line, m, where)) {
-            std::size_t s = std::stoul(m[1].str());
-            std::string file = s < files.size() ? files[s] : "source " + m[1].str();
-            line = m.prefix().str() + file + ":" + m[2].str() + ":" + m[3].str() + m.suffix().str();
+        for (std::size_t i = 0; i < line.size(); ++i) {
+            if (line[i] < '0' || line[i] > '9' ||
+                (i > 0 && line[i - 1] >= '0' && line[i - 1] <= '9'))
+                continue;
+            std::size_t j = i, s = 0, l = 0, c = 0;
+            if (!digits(line, j, s) || j >= line.size() || line[j] != ':') continue;
+            std::size_t lineStart = ++j;
+            if (!digits(line, j, l) || j >= line.size() || line[j] != '(') continue;
+            ++j;
+            if (!digits(line, j, c) || j >= line.size() || line[j] != ')') continue;
+            std::string file = s < files.size() ? files[s] : "source " + std::to_string(s);
+            line = line.substr(0, i) + file + ":" +
+                   line.substr(lineStart, line.find('(', lineStart) - lineStart) + ":" +
+                   std::to_string(c) + line.substr(j + 1);
+            break;
         }
         if (!line.empty()) out << line << "\n";
     }
@@ -106,24 +232,76 @@ ShaderHandle compile(const Expanded& src, const char* kind) {
     return shader;
 }
 
+// Every active vertex input must be one the meshes feed (position, normal): another name would
+// read an attribute array nobody enables. The student's fault, named as such (not a GL error).
+void requireKnownAttributes(GLuint program, const std::string& vertexFile) {
+    GLint count = 0, longest = 0;
+    glGetProgramiv(program, GL_ACTIVE_ATTRIBUTES, &count);
+    glGetProgramiv(program, GL_ACTIVE_ATTRIBUTE_MAX_LENGTH, &longest);
+    std::vector<char> name(std::size_t(std::max(longest, 1)) + 1, '\0');
+    for (GLint i = 0; i < count; ++i) {
+        GLint size = 0;
+        GLenum type = 0;
+        GLsizei length = 0;
+        glGetActiveAttrib(program, GLuint(i), GLsizei(name.size()), &length, &size, &type,
+                          name.data());
+        std::string attribute(name.data(), std::size_t(std::max(length, 0)));
+        if (attribute.rfind("gl_", 0) == 0) continue;  // built-ins (gl_Vertex, gl_Normal)
+        if (attribute == "position" || attribute == "normal") continue;
+        throw ShaderError(vertexFile + ": vertex input '" + attribute +
+                          "' is not supplied by the meshes (they supply 'position' and 'normal')");
+    }
+}
+
 }  // namespace
 
 ShaderLibrary::ShaderLibrary(GlslTree tree, std::string treeRoot, std::string overlay)
-    : tree_(tree), root_(std::move(treeRoot)), overlay_(std::move(overlay)) {}
+    : tree_(tree), root_(std::move(treeRoot)), overlay_(std::move(overlay)) {
+    realRoot_ = realPath(root_);
+    if (!overlay_.empty()) realOverlay_ = realPath(overlay_);
+}
+
+ShaderLibrary::Found ShaderLibrary::find(const std::string& relative) const {
+    Found f;
+    std::string name = normalizedRelative(relative);
+    std::string allowed =
+        "allowed: files under " + (overlay_.empty() ? std::string() : overlay_ + " and ") + root_;
+    if (name.empty()) {
+        bool absolute = !relative.empty() && relative[0] == '/';
+        f.refused = "#include \"" + relative + "\": " +
+                    (absolute ? "an absolute path" : "a path that leaves the shader folder") +
+                    "; " + allowed;
+        return f;
+    }
+    f.shown = root_ + "/" + name;
+    if (!overlay_.empty()) {
+        std::string candidate = overlay_ + "/" + name;
+        struct stat st;
+        // A folder of that name is not a replacement (ours is used); anything else is, and must
+        // then pass the checks below (a FIFO or a link out of the folder is refused, not skipped).
+        if (::lstat(candidate.c_str(), &st) == 0 &&
+            !(S_ISDIR(st.st_mode) || (::stat(candidate.c_str(), &st) == 0 && S_ISDIR(st.st_mode))))
+            f.shown = candidate;
+    }
+    f.real = realPath(f.shown);
+    if (f.real.empty()) return f;  // missing: reported as such when read
+    if (!inside(f.real, realOverlay_) && !inside(f.real, realRoot_)) {
+        f.refused =
+            f.shown + ": resolves outside the shader folders (a symbolic link?); " + allowed;
+        f.real.clear();
+    }
+    return f;
+}
 
 std::string ShaderLibrary::resolve(const std::string& relative) const {
-    if (!overlay_.empty()) {
-        std::string candidate = overlay_ + "/" + relative;
-        if (fileExists(candidate)) return candidate;
-    }
-    return root_ + "/" + relative;
+    return find(relative).shown;
 }
 
 ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::string& pass) const {
     Preprocessor pre(*this, tree_);
     Expanded vert, frag;
-    pre.expand(stage + "/" + pass + ".vert", vert, 0);
-    pre.expand(stage + "/" + pass + ".frag", frag, 0);
+    pre.expand(stage + "/" + pass + ".vert", vert, 0, "");
+    pre.expand(stage + "/" + pass + ".frag", frag, 0, "");
     VertexShader vs = compile<VertexShader>(vert, "vertex");
     FragmentShader fs = compile<FragmentShader>(frag, "fragment");
 
@@ -145,9 +323,17 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     }
     glDetachShader(program.id(), vs.id());
     glDetachShader(program.id(), fs.id());
+    requireKnownAttributes(program.id(), vert.files[0]);
+    // A type mismatch names the student's file(s) of this program, or both when none is theirs.
+    std::string files;
+    for (const std::string* f : {&vert.files[0], &frag.files[0]})
+        if (!overlay_.empty() && f->rfind(overlay_ + "/", 0) == 0)
+            files += (files.empty() ? "" : " + ") + *f;
+    if (files.empty()) files = vert.files[0] + " + " + frag.files[0];
 
     Entry e;
     e.program = Program(std::move(program), stage + "/" + pass);
+    e.program.setOrigin(files);
     e.files = vert.files;
     e.files.insert(e.files.end(), frag.files.begin(), frag.files.end());
     for (const auto& f : e.files) {
@@ -174,7 +360,8 @@ std::vector<std::string> ShaderLibrary::reload(bool force) {
         if (!changed) continue;
         std::size_t slash = key.find('/');
         try {
-            entry = build(key.substr(0, slash), key.substr(slash + 1));  // move-assign: old one deleted only now
+            entry = build(key.substr(0, slash),
+                          key.substr(slash + 1));  // move-assign: old one deleted only now
         } catch (const ShaderError& e) {
             errors.push_back(e.what());
             // Remember the broken stamps so the same error is not rebuilt every frame.

@@ -1,7 +1,8 @@
 // Shader programs loaded from files: shaders_<tree>/<stage>/<pass>.vert|.frag, with a student's
 // overlay folder whose files replace ours of the same relative name. `#include "x.glsl"` is
-// resolved here (paths relative to the tree root, overlay first) and driver messages are mapped
-// back to the file and line they came from. A reload that fails keeps the last good program.
+// resolved here (paths relative to the tree root, overlay first, never outside the two folders) and
+// driver messages are mapped back to the file and line they came from. A reload that fails keeps
+// the last good program.
 #pragma once
 
 #include <map>
@@ -16,17 +17,18 @@ namespace sl {
 enum class GlslTree { Core, Legacy };
 const char* treeName(GlslTree t);  // "core" | "legacy"
 
-// Compile, link or missing-file errors; what() is the full, file-and-line message.
+// Compile, link, missing-file or sandbox errors; what() is the full, file-and-line message,
+// with control characters and bytes that are not UTF-8 replaced (it quotes students' files).
 class ShaderError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
+  public:
+    explicit ShaderError(const std::string& message);
 };
 
 // Vertex attribute locations shared by every program and by the meshes.
 enum AttributeLocation : GLuint { kPositionAttribute = 0, kNormalAttribute = 1 };
 
 class ShaderLibrary {
-public:
+  public:
     // `treeRoot`: the folder of our shaders for this tree; `overlay`: a student's folder or "".
     ShaderLibrary(GlslTree tree, std::string treeRoot, std::string overlay);
 
@@ -42,9 +44,17 @@ public:
     std::vector<std::string> reload(bool force);
 
     // Where a relative shader path is found: the overlay's file if it has one, else ours.
-    std::string resolve(const std::string& relative) const;
+    // Only files inside the overlay and our tree, after resolving ".." and symbolic links:
+    // `refused` says why another path is not read.
+    struct Found {
+        std::string shown;    // the path as messages name it (overlay or tree + relative)
+        std::string real;     // resolved, inside the sandbox; "" when missing or refused
+        std::string refused;  // why the path is not allowed ("" when it is)
+    };
+    Found find(const std::string& relative) const;
+    std::string resolve(const std::string& relative) const;  // find(relative).shown
 
-private:
+  private:
     struct Entry {
         Program program;
         std::vector<std::string> files;  // every file read, for change detection
@@ -55,6 +65,7 @@ private:
     GlslTree tree_;
     std::string root_;
     std::string overlay_;
+    std::string realRoot_, realOverlay_;  // resolved once: the sandbox's two folders
     std::map<std::string, Entry> programs_;
 };
 

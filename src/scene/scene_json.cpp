@@ -1,30 +1,76 @@
 #include "scene/scene_json.h"
 
 #include <dirent.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+
+#include "io/files.h"
 
 namespace sl {
 
 using nlohmann::json;
 
+namespace {
+
+// <prefix>/share/shadowlab beside an installed <prefix>/bin/shadowlab, when it holds our data.
+std::string installedDataDir() {
+    char exe[4096];
+    ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n <= 0) return {};
+    std::string path(exe, std::size_t(n));
+    std::size_t slash = path.find_last_of('/');
+    if (slash == std::string::npos) return {};
+    return path.substr(0, slash) + "/../share/shadowlab";
+}
+
+bool isFolder(const std::string& path) {
+    struct stat st;
+    return ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+}  // namespace
+
 std::string dataDir() {
     const char* env = std::getenv("SHADOWLAB_DATA_DIR");
-    return env && *env ? env : SHADOWLAB_SOURCE_DIR;
+    if (env && *env) return env;
+    static const std::string found = [] {
+        std::string installed = installedDataDir();
+        if (!installed.empty() && isFolder(installed + "/shaders_core")) {
+            char* real = ::realpath(installed.c_str(), nullptr);  // "prefix/share/shadowlab"
+            if (real) {
+                installed = real;
+                std::free(real);
+            }
+            return installed;
+        }
+        // The build tree runs from the sources it was built from; an installed copy whose
+        // share/ is gone must not silently fall back (the install test sets this).
+        const char* noFallback = std::getenv("SHADOWLAB_NO_SOURCE_DIR");
+        if (noFallback && *noFallback) return installed;
+        return std::string(SHADOWLAB_SOURCE_DIR);
+    }();
+    return found;
 }
 
 namespace {
 
-constexpr std::size_t kMaxObjects = 4096;  // far beyond any teaching scene; guards memory
+constexpr std::size_t kMaxObjects = 4096;          // far beyond any teaching scene; guards memory
+constexpr std::size_t kMaxSceneBytes = 16u << 20;  // 4096 objects take well under 1 MB
+
+bool fileExists(const std::string& path) {
+    struct stat st;
+    return ::lstat(path.c_str(), &st) == 0;
+}
 
 class Reader {
-public:
+  public:
     explicit Reader(std::string origin) : origin_(std::move(origin)) {}
 
     [[noreturn]] void fail(const std::string& path, const std::string& what) const {
@@ -94,7 +140,7 @@ public:
         return glm::normalize(d);
     }
 
-private:
+  private:
     std::string origin_;
 };
 
@@ -108,8 +154,8 @@ Scene parseScene(const std::string& text, const std::string& origin) {
         // nlohmann's message carries "at line L, column C"; keep that part.
         std::string what = e.what();
         auto pos = what.find("parse error");
-        throw SceneError(origin + ": not valid JSON: " +
-                         (pos == std::string::npos ? what : what.substr(pos)));
+        throw SceneError(
+            origin + ": not valid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
     } catch (const json::exception& e) {
         // e.g. out_of_range 406 for 1e999: a number beyond double (found by the fuzzer; it used
         // to escape as an unknown exception, exit code 3).
@@ -119,8 +165,9 @@ Scene parseScene(const std::string& text, const std::string& origin) {
                          (pos == std::string::npos ? what : what.substr(pos + 2)));
     }
     Reader r(origin);
-    r.allowKeys(doc, "", {"name", "description", "background", "camera", "light", "material",
-                          "objects", "mirror"});
+    r.allowKeys(
+        doc, "",
+        {"name", "description", "background", "camera", "light", "material", "objects", "mirror"});
     Scene s;
     if (const json* n = r.field(doc, "name")) {
         if (!n->is_string()) r.fail("/name", "must be a string");
@@ -190,8 +237,9 @@ Scene parseScene(const std::string& text, const std::string& origin) {
             obj.kind = PrimitiveKind::Sphere;
             obj.radius = r.number(o, p, "radius", std::nullopt, 1e-4f, 1e4f);
         } else if (t == "quad") {
-            r.allowKeys(o, p, {"type", "name", "color", "casts_shadow", "center", "normal", "up",
-                               "width", "height"});
+            r.allowKeys(o, p,
+                        {"type", "name", "color", "casts_shadow", "center", "normal", "up", "width",
+                         "height"});
             obj.kind = PrimitiveKind::Quad;
             obj.normal = r.direction(o, p, "normal", {0, 1, 0});
             glm::vec3 up = r.direction(o, p, "up", {0, 0, -1});
@@ -243,17 +291,17 @@ Scene loadScene(const std::string& nameOrPath) {
     bool isPath = nameOrPath.find('/') != std::string::npos ||
                   (nameOrPath.size() > 5 && nameOrPath.rfind(".json") == nameOrPath.size() - 5);
     std::string path = isPath ? nameOrPath : dataDir() + "/scenes/" + nameOrPath + ".json";
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        if (isPath) throw SceneError(nameOrPath + ": cannot read scene file");
+    std::string text;
+    if (!isPath && !fileExists(path)) {
         std::string names;
         for (const auto& n : builtInScenes()) names += (names.empty() ? "" : ", ") + n;
         throw SceneError("unknown scene '" + nameOrPath + "' (built-in: " + names +
                          "; or give a path to a .json file)");
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    Scene s = parseScene(text.str(), isPath ? nameOrPath : "scene '" + nameOrPath + "'");
+    // A scene may be a FIFO or a link to /dev/zero: only a regular file, read with a bound.
+    std::string why = readRegularFile(path, kMaxSceneBytes, text);
+    if (!why.empty()) throw SceneError(nameOrPath + ": cannot read scene file: " + why);
+    Scene s = parseScene(text, isPath ? nameOrPath : "scene '" + nameOrPath + "'");
     if (s.name.empty()) s.name = nameOrPath;
     return s;
 }

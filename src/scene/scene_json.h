@@ -23,7 +23,8 @@ Scene loadScene(const std::string& nameOrPath);
 std::vector<std::string> builtInScenes();
 
 // The folder holding shaders_core/, shaders_legacy/, scenes/ and slides_examples/:
-// $SHADOWLAB_DATA_DIR, else the source tree the program was built from.
+// $SHADOWLAB_DATA_DIR, else ../share/shadowlab beside the executable (an installed copy), else
+// the source tree the program was built from (unless $SHADOWLAB_NO_SOURCE_DIR is set).
 std::string dataDir();
 
 }  // namespace sl

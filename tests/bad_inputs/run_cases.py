@@ -59,6 +59,7 @@ def run(exe, case):
     if case.setup:
         args = case.setup(tmp, args)
     target = out_path(args)
+    existed = bool(target) and os.path.lexists(target)  # a case's own file: refused, kept
     before = os.listdir(tmp)
     start = time.monotonic()
     try:
@@ -84,7 +85,7 @@ def run(exe, case):
             problems.append("stderr's first line does not start with 'shadowlab:'")
         elif len(lines) > 1 and "shader error:" not in lines[0]:
             problems.append(f"stderr has {len(lines)} lines, expected one")
-        if target and target.startswith(tmp) and os.path.isfile(target):
+        if target and target.startswith(tmp) and os.path.isfile(target) and not existed:
             problems.append(f"a file was left at {target}")
     elif target and not is_png(target):
         problems.append(f"{target} is not a PNG")
@@ -187,10 +188,262 @@ def generated_cases():
     ]
 
 
+# ---- hostile or unlucky student folders (issue 12): generated at test time ---------------------
+# Every file is made in the case's temporary folder; big and special files (FIFOs, links to
+# devices, a million-character line) are never stored in the repository.
+
+ROOT = os.path.dirname(os.path.dirname(HERE))
+SECRET = "db_password = S3CRET-7731-never-shown"
+
+
+def shipped(relative):
+    with open(os.path.join(ROOT, "shaders_core", relative), "rb") as f:
+        return f.read()
+
+
+def student(files, links=(), fifos=(), name="student"):
+    """A setup writing an overlay folder {tmp}/NAME (files: relative -> bytes), plus symlinks
+    (relative -> target, "{tmp}" expanded), FIFOs, and a secret at {tmp}/secret/app.conf."""
+    def setup(tmp, args):
+        secret = os.path.join(tmp, "secret")
+        os.makedirs(secret, exist_ok=True)
+        with open(os.path.join(secret, "app.conf"), "w") as f:
+            f.write(SECRET + "\n")
+        folder = os.path.join(tmp.encode(), name.encode() if isinstance(name, str) else name)
+        for rel, data in files.items():
+            path = os.path.join(folder, rel.encode())
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            with open(path, "wb") as f:
+                f.write(data)
+        for rel, target in dict(links).items():
+            path = os.path.join(folder, rel.encode())
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            os.symlink(target.replace("{tmp}", tmp), path)
+        for rel in fifos:
+            path = os.path.join(folder, rel.encode())
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            os.mkfifo(path)
+        return args.replace("{student}", folder.decode(errors="surrogateescape"))
+    return setup
+
+
+def lit_including(*includes):
+    """phong/lit.frag with extra #include lines after the shipped one."""
+    text = shipped("phong/lit.frag").decode()
+    extra = "".join(f'#include "{i}"\n' for i in includes)
+    return text.replace('#include "common/phong.glsl"\n', '#include "common/phong.glsl"\n' + extra)
+
+
+def no_secret(tmp, p):
+    """The secret's content appears nowhere: stdout, stderr, any file the run wrote."""
+    problems = []
+    if "S3CRET" in p.stdout + p.stderr:
+        problems.append("the secret's content appears in the output")
+    for base, _, names in os.walk(tmp):
+        if os.path.join(tmp, "secret") in base:
+            continue
+        for n in names:
+            path = os.path.join(base, n)
+            if os.path.isfile(path) and not os.path.islink(path):
+                with open(path, "rb") as f:
+                    if b"S3CRET" in f.read():
+                        problems.append(f"the secret's content appears in {path}")
+    return problems
+
+
+def report_valid(*expect):
+    """The report {tmp}/report.json exists, is valid JSON, and each (stage, verdict) in expect
+    is in it; plus no_secret and no control characters on stderr."""
+    def check(tmp, p):
+        problems = no_secret(tmp, p)
+        if any(ord(c) < 32 and c not in "\n\t" for c in p.stdout + p.stderr):
+            problems.append("stdout or stderr holds control characters")
+        path = os.path.join(tmp, "report.json")
+        try:
+            with open(path, "rb") as f:
+                report = json.loads(f.read().decode("utf-8"))
+        except (OSError, ValueError) as e:
+            return problems + [f"no valid report: {e}"]
+        got = {(r["stage"], r["verdict"]) for r in report["results"]}
+        problems += [f"report lacks {e} (has {sorted(got)})" for e in expect if e not in got]
+        return problems
+    return check
+
+
+def unchanged(path_in_tmp, content):
+    def check(tmp, p):
+        with open(os.path.join(tmp, path_in_tmp), "rb") as f:
+            return [] if f.read() == content else [f"{path_in_tmp} was written through"]
+    return check
+
+
+def plant_temp_links(tmp, args):
+    """Symlinks at every name the old writer would have used (OUT.tmpPID for the next PIDs),
+    pointing at a victim file, and OUT itself absent."""
+    with open(os.path.join(tmp, "victim"), "wb") as f:
+        f.write(b"victim")
+    try:
+        with open("/proc/sys/kernel/ns_last_pid") as f:
+            last = int(f.read())
+    except OSError:
+        last = os.getpid()
+    for pid in range(last + 1, last + 400):
+        os.symlink(os.path.join(tmp, "victim"), os.path.join(tmp, f"out.png.tmp{pid}"))
+    return args
+
+
+def existing_file(name, content, mode=None, link_to=None):
+    def setup(tmp, args):
+        path = os.path.join(tmp, name)
+        if link_to:
+            target = os.path.join(tmp, link_to)
+            with open(target, "wb") as f:
+                f.write(content)
+            os.symlink(target, path)
+        else:
+            with open(path, "wb") as f:
+                f.write(content)
+            if mode is not None:
+                os.chmod(path, mode)
+        return args
+    return setup
+
+
+def fifo_scene(tmp, args):
+    os.mkfifo(os.path.join(tmp, "scene.json"))
+    return args
+
+
+def link_scene(tmp, args):
+    os.symlink("/dev/zero", os.path.join(tmp, "scene.json"))
+    return args
+
+
+def report_folder(tmp, args):
+    os.mkdir(os.path.join(tmp, "report.json"))
+    return args
+
+
+def nothing_in(folder):
+    def check(tmp, p):
+        path = os.path.join(tmp, folder)
+        return [f"{folder} was created before the report path was checked"] if os.path.exists(
+            path) else []
+    return check
+
+
+def bomb():
+    """Six levels, each file including the next eight times: 8^6 expansions if unbounded."""
+    files = {"phong/lit.frag": lit_including("common/b0.glsl").encode()}
+    for k in range(6):
+        files[f"common/b{k}.glsl"] = "".join(f'#include "common/b{k + 1}.glsl"\n'
+                                             for _ in range(8)).encode()
+    files["common/b6.glsl"] = b"float bombLeaf;\n"
+    return files
+
+
+def margin_int():
+    text = shipped("margin/lit.frag").decode()
+    text = text.replace("uniform float margin;", "uniform int margin;")
+    return {"margin/lit.frag": text.replace("return margin;", "return float(margin);").encode()}
+
+
+CHECK = "check --glsl core --size 160x120 --shaders {student} --report {tmp}/report.json"
+
+
+def hostile_cases():
+    lit = "phong/lit.frag"
+    return [
+        Case("FIFO include in the overlay", 2, "it is a FIFO, not a regular file",
+             "{R} --shaders {student}", timeout=20, check=no_secret,
+             setup=student({lit: lit_including("common/pipe.glsl").encode()},
+                           fifos=["common/pipe.glsl"])),
+        Case("the overlay's stage file is a FIFO", 2, "it is a FIFO, not a regular file",
+             "{R} --shaders {student}", timeout=20, setup=student({}, fifos=[lit])),
+        Case("the overlay's stage file is a symlink loop", 2, "cannot read shader file",
+             "{R} --shaders {student}", timeout=20,
+             setup=student({}, links={lit: "lit.frag"})),
+        Case("the overlay's stage file links to /dev/zero", 2, "resolves outside the shader folders",
+             "{R} --shaders {student}", timeout=20,
+             setup=student({}, links={"phong/lit.vert": "{tmp}/../../dev/zero"})),
+        Case("FIFO include through ../", 2, "a path that leaves the shader folder",
+             "{R} --shaders {student}", timeout=20,
+             setup=student({lit: lit_including("../pipe").encode()}, fifos=["../pipe"])),
+        Case("FIFO scene", 2, "cannot read scene file: it is a FIFO", "{R} --scene {tmp}/scene.json",
+             timeout=20, setup=fifo_scene),
+        Case("scene symlinked to /dev/zero", 2, "cannot read scene file: it is a device",
+             "{R} --scene {tmp}/scene.json", timeout=20, setup=link_scene),
+        Case("include bomb", 2, "#include expansions (an include bomb?)",
+             "{R} --shaders {student}", timeout=20, setup=student(bomb())),
+        Case("include of ../../dev/zero", 2, "a path that leaves the shader folder",
+             "{R} --shaders {student}", timeout=20,
+             setup=student({lit: lit_including("../../../../../../../../dev/zero").encode()})),
+        Case("include of a secret outside the folder", 2, "phong/lit.frag:5: #include \"../secret/app.conf\"",
+             "{R} --shaders {student}", timeout=20, check=no_secret,
+             setup=student({lit: lit_including("../secret/app.conf").encode()})),
+        Case("include of a secret, check --all reports", 2, "a path that leaves the shader folder",
+             CHECK + " --all", timeout=120,
+             check=report_valid(("phong", "ERROR"), ("hardware", "PASS")),
+             setup=student({lit: lit_including("../secret/app.conf").encode()})),
+        Case("another student's folder via ../", 2, "a path that leaves the shader folder",
+             "{R} --shaders {student}", timeout=20,
+             setup=student({lit: lit_including("../other/common/helper.glsl").encode(),
+                            "../other/common/helper.glsl": b"float helper;\n"})),
+        Case("a symlink in the overlay pointing out (stage file)", 2,
+             "resolves outside the shader folders", "{R} --shaders {student}", timeout=20,
+             check=no_secret, setup=student({}, links={lit: "{tmp}/secret/app.conf"})),
+        Case("a symlinked include pointing out", 2, "resolves outside the shader folders",
+             "{R} --shaders {student}", timeout=20, check=no_secret,
+             setup=student({lit: lit_including("common/link.glsl").encode()},
+                           links={"common/link.glsl": "{tmp}/secret/app.conf"})),
+        Case("a symlink to a folder outside", 2, "resolves outside the shader folders",
+             "{R} --shaders {student}", timeout=20, check=no_secret,
+             setup=student({lit: lit_including("up/secret/app.conf").encode()},
+                           links={"up": "{tmp}"})),
+        Case("a line of 1,000,000 spaces", 0, "rendered phong", "{R} --shaders {student}",
+             timeout=30,
+             setup=student({lit: shipped(lit) + b" " * 1000000 + b"\n"})),
+        Case("a 1,000,000-character include name", 2, "#include name of 1000000 characters",
+             "{R} --shaders {student}", timeout=20,
+             setup=student({lit: lit_including("a" * 1000000).encode()})),
+        Case("a shader of 2 MB", 2, "at most 1048576 are allowed", "{R} --shaders {student}",
+             timeout=20, setup=student({lit: shipped(lit) + b"// padding\n" * 200000})),
+        Case("uniform int margin (render)", 2,
+             "uniform 'margin' is declared int, but the stage sets a float",
+             "{R} --stage margin --shaders {student}", timeout=20, setup=student(margin_int())),
+        Case("uniform int margin (check --all: ERROR, later stages graded)", 2,
+             "uniform 'margin' is declared int", CHECK + " --all", timeout=120,
+             check=report_valid(("margin", "ERROR"), ("hardware", "PASS")),
+             setup=student(margin_int())),
+        Case("a vertex input the meshes do not supply", 2, "vertex input 'pos' is not supplied",
+             "{R} --shaders {student}", timeout=20,
+             setup=student({"phong/lit.vert": shipped("phong/lit.vert").replace(
+                 b"position", b"pos")})),
+        Case("#error with bytes that are not UTF-8", 2, "preprocessor error", CHECK + " --stage phong",
+             timeout=60, check=report_valid(("phong", "ERROR")),
+             setup=student({lit: b"#version 330 core\n#error bad \xff\xfe\x1b[31m bytes\n"})),
+        Case("a folder name that is not UTF-8", 2, "fragment shader did not compile",
+             CHECK + " --stage phong --diff {tmp}/diff.png", timeout=60,
+             check=report_valid(("phong", "ERROR")),
+             setup=student({lit: b"#version 330 core\nvoid main() { oops }\n"}, name=b"st\xffu\x1bdent")),
+        Case("symlinks planted at the old temporary names", 0, "rendered phong", "{R}",
+             setup=plant_temp_links, check=unchanged("victim", b"victim")),
+        Case("--out is a symlink", 2, "it is a symbolic link", "{R}",
+             setup=existing_file("out.png", b"victim", link_to="victim"),
+             check=unchanged("victim", b"victim")),
+        Case("--out is read-only", 2, "it is read-only", "{R}",
+             setup=existing_file("out.png", b"keep me", mode=0o444),
+             check=unchanged("out.png", b"keep me")),
+        Case("check --all --report DIR fails before any GL work", 2,
+             "--report: cannot write", "check --all --report {tmp}/report.json --diff-dir {tmp}/diffs",
+             timeout=10, setup=report_folder, check=nothing_in("diffs")),
+    ]
+
+
 def main():
     exe = sys.argv[1]
     only = sys.argv[3] if len(sys.argv) > 3 and sys.argv[2] == "--only" else ""
-    cases = parse_cases(os.path.join(HERE, "cases.txt")) + generated_cases()
+    cases = parse_cases(os.path.join(HERE, "cases.txt")) + generated_cases() + hostile_cases()
     passed = failed = skipped = 0
     for case in cases:
         if only and only not in case.name and only not in case.args:

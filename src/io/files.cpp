@@ -1,0 +1,176 @@
+#include "io/files.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+namespace sl {
+
+namespace {
+
+std::string failure(const std::string& path, const std::string& why) {
+    return "cannot write '" + path + "': " + why;
+}
+
+std::string kindOf(mode_t mode) {
+    if (S_ISDIR(mode)) return "a folder";
+    if (S_ISFIFO(mode)) return "a FIFO";
+    if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
+    if (S_ISSOCK(mode)) return "a socket";
+    if (S_ISLNK(mode)) return "a symbolic link";
+    return "not a regular file";
+}
+
+std::string folderOf(const std::string& path) {
+    std::size_t slash = path.find_last_of('/');
+    if (slash == std::string::npos) return ".";
+    return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+}  // namespace
+
+std::string readRegularFile(const std::string& path, std::size_t maxBytes, std::string& text,
+                            bool noFollow) {
+    struct stat st;
+    // stat first: opening a FIFO for reading would block until a writer comes.
+    if ((noFollow ? ::lstat(path.c_str(), &st) : ::stat(path.c_str(), &st)) != 0)
+        return std::strerror(errno);
+    if (!S_ISREG(st.st_mode)) return "it is " + kindOf(st.st_mode) + ", not a regular file";
+    // O_NONBLOCK: should the name have become a FIFO since the stat, open still returns at once.
+    int flags = O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY | (noFollow ? O_NOFOLLOW : 0);
+    int fd = ::open(path.c_str(), flags);
+    if (fd < 0) return std::strerror(errno);
+    std::string why;
+    if (::fstat(fd, &st) != 0)
+        why = std::strerror(errno);
+    else if (!S_ISREG(st.st_mode))
+        why = "it is " + kindOf(st.st_mode) + ", not a regular file";
+    else if (std::size_t(st.st_size) > maxBytes)
+        why = "it has " + std::to_string(st.st_size) + " bytes; at most " +
+              std::to_string(maxBytes) + " are allowed";
+    text.clear();
+    // Read at most maxBytes + 1 whatever the size said: a file may grow while we read it.
+    std::vector<char> buffer(64 * 1024);
+    while (why.empty()) {
+        ssize_t n = ::read(fd, buffer.data(), buffer.size());
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            why = std::strerror(errno);
+        } else if (n == 0) {
+            break;
+        } else {
+            text.append(buffer.data(), std::size_t(n));
+            if (text.size() > maxBytes)
+                why = "it has more than " + std::to_string(maxBytes) + " bytes";
+        }
+    }
+    ::close(fd);
+    if (!why.empty()) text.clear();
+    return why;
+}
+
+std::string outputPathProblem(const std::string& path) {
+    if (path.empty()) return failure(path, "no file name given");
+    if (path.back() == '/') return failure(path, "it is a folder; give a file name");
+    struct stat st;
+    if (::lstat(path.c_str(), &st) == 0) {
+        if (S_ISDIR(st.st_mode)) return failure(path, "it is a folder; give a file name");
+        if (S_ISLNK(st.st_mode))
+            return failure(path, "it is a symbolic link (refused: remove it or give another name)");
+        // Renaming over a device would replace it (we may run as root).
+        if (!S_ISREG(st.st_mode)) return failure(path, "it is not a regular file (a device?)");
+        // Mode bits, not only access(): root may write anything, but a read-only file is a
+        // request not to replace it.
+        if ((st.st_mode & S_IWUSR) == 0 || ::access(path.c_str(), W_OK) != 0)
+            return failure(path, "it is read-only (refused: make it writable or remove it)");
+        return {};
+    }
+    if (errno != ENOENT) return failure(path, std::strerror(errno));
+    std::string folder = folderOf(path);
+    if (::stat(folder.c_str(), &st) != 0)
+        return failure(path, errno == ENOENT ? "the folder '" + folder + "' does not exist"
+                                             : std::strerror(errno));
+    if (!S_ISDIR(st.st_mode)) return failure(path, "'" + folder + "' is not a folder");
+    return {};
+}
+
+std::string writeFileAtomically(const std::string& path, const void* data, std::size_t size) {
+    if (std::string err = outputPathProblem(path); !err.empty()) return err;
+    // mkstemp creates the name with O_EXCL: a planted file or symlink at a guessed temporary
+    // name makes it pick another, never write through it.
+    std::string tmp = path + ".tmpXXXXXX";
+    int fd = ::mkostemp(tmp.data(), O_CLOEXEC);
+    if (fd < 0) return failure(path, std::strerror(errno));
+    mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);  // mkstemp's 0600 would make outputs unreadable to others
+    const char* p = static_cast<const char*>(data);
+    std::size_t left = size;
+    int error = 0;
+    while (left > 0 && !error) {
+        ssize_t n = ::write(fd, p, left);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0)
+            error = n < 0 ? errno : ENOSPC;
+        else {
+            p += n;
+            left -= std::size_t(n);
+        }
+    }
+    if (::close(fd) != 0 && !error) error = errno;
+    if (!error && std::rename(tmp.c_str(), path.c_str()) != 0) error = errno;
+    if (error) {
+        ::unlink(tmp.c_str());
+        return failure(path, std::strerror(error));
+    }
+    return {};
+}
+
+std::string printable(const std::string& text) {
+    std::string out = text;
+    for (char& c : out) {
+        unsigned char u = static_cast<unsigned char>(c);
+        if ((u < 0x20 && c != '\n' && c != '\t') || u == 0x7f) c = '?';
+    }
+    return out;
+}
+
+std::string validUtf8(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    std::size_t i = 0, n = text.size();
+    while (i < n) {
+        unsigned char c = static_cast<unsigned char>(text[i]);
+        std::size_t length = c < 0x80           ? 1
+                             : (c >> 5) == 0x6  ? 2
+                             : (c >> 4) == 0xe  ? 3
+                             : (c >> 3) == 0x1e ? 4
+                                                : 0;
+        bool ok = length > 0 && i + length <= n && !(c == 0xc0 || c == 0xc1 || c > 0xf4);
+        for (std::size_t k = 1; ok && k < length; ++k)
+            ok = (static_cast<unsigned char>(text[i + k]) & 0xc0) == 0x80;
+        if (ok && length == 3) {  // no overlong forms, no surrogates
+            unsigned char d = static_cast<unsigned char>(text[i + 1]);
+            ok = !(c == 0xe0 && d < 0xa0) && !(c == 0xed && d >= 0xa0);
+        }
+        if (ok && length == 4) {
+            unsigned char d = static_cast<unsigned char>(text[i + 1]);
+            ok = !(c == 0xf0 && d < 0x90) && !(c == 0xf4 && d >= 0x90);
+        }
+        if (ok) {
+            out.append(text, i, length);
+            i += length;
+        } else {
+            out += '?';
+            ++i;
+        }
+    }
+    return out;
+}
+
+}  // namespace sl

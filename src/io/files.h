@@ -1,0 +1,37 @@
+// Files from untrusted places, read with bounds, and output files written without surprises.
+// A student's folder or a scene file may be a FIFO, a device, a symlink to one, or huge: reads
+// here never block, never run to the end of a device and never take more than a given size.
+// Outputs are written to an exclusively created temporary file beside the target and renamed
+// over it; an existing symlink, folder, device or read-only file is refused, never written
+// through or replaced.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace sl {
+
+// Reads the regular file `path` whole into `text` when it holds at most `maxBytes`. A FIFO, a
+// device, a folder or a larger file is an error; with `noFollow` a symlink as the last
+// component is one too. Returns "" or why it could not (without the path).
+std::string readRegularFile(const std::string& path, std::size_t maxBytes, std::string& text,
+                            bool noFollow = false);
+
+// Why `path` cannot be written as an output file, as "cannot write 'PATH': why", or "" when it
+// can: its folder must exist, and an existing `path` must be a writable regular file (not a
+// symlink, folder, device or read-only file).
+std::string outputPathProblem(const std::string& path);
+
+// Writes `size` bytes atomically: into a temporary file created exclusively beside `path`
+// (mkstemp: never through an existing name or link), every write and close checked, then
+// renamed over `path`. On failure nothing is left. Returns "" or the error.
+std::string writeFileAtomically(const std::string& path, const void* data, std::size_t size);
+
+// `text` with control characters (other than newline and tab) replaced by '?': for terminal
+// output of anything that came from a file (compiler logs, file names).
+std::string printable(const std::string& text);
+
+// `text` with every byte that is not part of valid UTF-8 replaced by '?'.
+std::string validUtf8(const std::string& text);
+
+}  // namespace sl

@@ -1,0 +1,6 @@
+# `cmake --install` into a temporary prefix, moved elsewhere, grades a submission without the
+# source tree (tests/install/grade_installed.sh).
+add_test(NAME install_and_grade
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/install/grade_installed.sh ${CMAKE_BINARY_DIR}
+                 ${CMAKE_SOURCE_DIR})
+set_tests_properties(install_and_grade PROPERTIES LABELS command TIMEOUT 300)
