@@ -21,13 +21,16 @@ struct CheckResult {
     long evaluated = 0, truthLit = 0, truthShadow = 0;  // pixel counts behind the percentages
     ExpectationMatch expectation;
     Judgement judgement;
-    bool error = false;            // a shader did not build: judgement.message says why (exit 2)
+    // The stage could not be judged (exit 2): a shader that did not build ("ERROR"), or a worker
+    // that ran out of time ("TIMEOUT") or died ("CRASH"). judgement.message says why.
+    bool error = false;
+    std::string errorVerdict = "ERROR";
     std::string diffFile;          // the diff image written, or ""
     std::string note;              // e.g. why no diff image was written
     std::string backend, machine;  // the headless backend, machineLine() of the context used
     double seconds = 0;
 
-    std::string verdict() const { return error ? "ERROR" : verdictName(judgement.verdict); }
+    std::string verdict() const { return error ? errorVerdict : verdictName(judgement.verdict); }
     std::map<std::string, double> figureMap() const;
 };
 
@@ -43,5 +46,9 @@ std::string checkTableLine(const CheckResult& r);
 
 // A result in the report (fields documented in docs/check.md).
 nlohmann::json checkJson(const CheckResult& r);
+// The result checkJson described (a worker's results come back this way): checkJson of it is
+// the same JSON. The expectation is found again in expectations() by its label. backend and
+// machine are not in the JSON and stay empty. Throws std::invalid_argument on a malformed one.
+CheckResult checkResultFromJson(const nlohmann::json& j);
 
 }  // namespace sl
