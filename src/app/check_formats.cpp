@@ -113,7 +113,7 @@ nlohmann::json gradescopeJson(const std::vector<CheckResult>& results, double se
             {"tests", tests}};
 }
 
-std::string xmlEscaped(const std::string& text) {
+std::string xmlEscaped(const std::string& text, bool attribute) {
     std::string out;
     out.reserve(text.size());
     for (std::size_t i = 0; i < text.size();) {
@@ -134,8 +134,8 @@ std::string xmlEscaped(const std::string& text) {
             out += "&quot;";
         else if (n == 1 && c == '\'')
             out += "&apos;";
-        else if (n == 1 && (c == '\n' || c == '\r' || c == '\t'))
-            out += "&#" + std::to_string(int(c)) + ";";  // kept even inside an attribute
+        else if (n == 1 && (c == '\n' || c == '\r' || c == '\t') && attribute)
+            out += "&#" + std::to_string(int(c)) + ";";  // else a parser folds them to spaces
         else
             out.append(text, i, n);
         i += n;
@@ -150,7 +150,7 @@ std::string junitXml(const std::vector<CheckResult>& results, double seconds) {
         cases << "    <testcase classname=\"shadowlab.check." << xmlEscaped(r.stage) << "\" name=\""
               << xmlEscaped(checkTestName(r)) << "\" time=\"" << seconds3(r.seconds) << "\">\n";
         const std::string message = xmlEscaped(r.judgement.message);
-        const std::string output = xmlEscaped(checkTestOutput(r));
+        const std::string output = xmlEscaped(checkTestOutput(r), false);
         if (r.error) {
             ++errors;
             cases << "      <error type=\"" << r.verdict() << "\" message=\"" << message << "\">"

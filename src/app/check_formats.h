@@ -28,7 +28,8 @@ nlohmann::json gradescopeJson(const std::vector<CheckResult>& results, double se
 // XML is replaced by U+FFFD.
 std::string junitXml(const std::vector<CheckResult>& results, double seconds);
 
-// `text` as XML character data or an attribute value: escaped, invalid bytes replaced.
-std::string xmlEscaped(const std::string& text);
+// `text` as an XML attribute value (line breaks and tabs as character references) or, with
+// `attribute` false, as character data: escaped, invalid bytes replaced.
+std::string xmlEscaped(const std::string& text, bool attribute = true);
 
 }  // namespace sl

@@ -110,6 +110,7 @@ TEST(CheckFormats, XmlTextIsEscapedAndValid) {
     EXPECT_EQ(xmlEscaped("overlong \xC0\xAF, surrogate \xED\xA0\x80"),
               "overlong \xEF\xBF\xBD\xEF\xBF\xBD, surrogate \xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD");
     EXPECT_EQ(xmlEscaped("two\nlines"), "two&#10;lines");
+    EXPECT_EQ(xmlEscaped("two\nlines", false), "two\nlines");
 }
 
 TEST(CheckFormats, GradescopeScoresOnePointPerPassingCheck) {
