@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 
 #include "app/bench_output.h"
 #include "app/check_formats.h"
@@ -174,30 +175,42 @@ CheckResult unjudgedResult(const RenderRequest& r, const WorkerOutcome& outcome,
     return out;
 }
 
-// One stage in one tree, evaluated in a bounded worker: the contexts it needs are created and
-// reused inside it, and its results come back as JSON. A worker that runs out of time or dies
-// gives one TIMEOUT or CRASH result instead; the job's exceptions are thrown again here.
-std::vector<CheckResult> checkStageInWorker(const RenderRequest& r, const std::string& diff,
-                                            Backend backend, const Limits& limits) {
-    WorkerOutcome outcome = runBounded(limits, [&] {
-        BenchRig rig(backend);
-        CheckResult result = runCheck(rig, r, diff);
-        return nlohmann::json{{"results", nlohmann::json::array({checkJson(result)})},
-                              {"backend", result.backend},
-                              {"machine", result.machine}};
-    });
-    std::vector<CheckResult> results;
-    if (outcome.kind != WorkerOutcome::Kind::Ok) {
-        results.push_back(unjudgedResult(r, outcome, limits));
-        std::cerr << "shadowlab: " << results.back().judgement.message << "\n";
-        return results;
-    }
-    for (const auto& j : outcome.value.at("results")) {
-        results.push_back(checkResultFromJson(j));
-        results.back().backend = outcome.value.at("backend").get<std::string>();
-        results.back().machine = outcome.value.at("machine").get<std::string>();
-    }
-    return results;
+// The job of one stage in one tree, run inside a worker: its results as JSON.
+nlohmann::json checkStageJob(BenchRig& rig, const RenderRequest& r, const std::string& diff) {
+    CheckResult result = runCheck(rig, r, diff);
+    return {{"results", nlohmann::json::array({checkJson(result)})},
+            {"backend", result.backend},
+            {"machine", result.machine}};
+}
+
+// Every stage and tree of `requests` evaluated in bounded workers: one worker goes through them
+// in order, reusing its contexts from one stage to the next (as one process did before), each
+// stage under its own time limit. A stage whose worker runs out of time or dies is one TIMEOUT
+// or CRASH result, and a fresh worker goes on with the next stage. The job's exceptions are
+// thrown again here. `each(k, results)` gets each stage's results as they come.
+void checkInWorkers(const std::vector<RenderRequest>& requests,
+                    const std::vector<std::string>& diffs, Backend backend, const Limits& limits,
+                    const std::function<void(std::size_t, std::vector<CheckResult>)>& each) {
+    std::unique_ptr<BenchRig> rig;  // made in each worker, kept for its next stages
+    auto job = [&](std::size_t k) {
+        if (!rig) rig = std::make_unique<BenchRig>(backend);
+        return checkStageJob(*rig, requests[k], diffs[k]);
+    };
+    runBoundedSeries(limits, requests.size(), job,
+                     [&](std::size_t k, const WorkerOutcome& outcome) {
+                         std::vector<CheckResult> results;
+                         if (outcome.kind != WorkerOutcome::Kind::Ok) {
+                             results.push_back(unjudgedResult(requests[k], outcome, limits));
+                             std::cerr << "shadowlab: " << results.back().judgement.message << "\n";
+                         } else {
+                             for (const auto& j : outcome.value.at("results")) {
+                                 results.push_back(checkResultFromJson(j));
+                                 results.back().backend = outcome.value.at("backend");
+                                 results.back().machine = outcome.value.at("machine");
+                             }
+                         }
+                         each(k, std::move(results));
+                     });
 }
 
 int runCheckCommand(const CheckArgs& a) {
@@ -239,23 +252,29 @@ int runCheckCommand(const CheckArgs& a) {
     std::cout << "check against " << expectationsPath() << ", " << base.width << "x" << base.height
               << (base.overlay.empty() ? "" : ", shaders " + base.overlay) << "\n"
               << "        " << checkTableHeader();
-    for (std::size_t k = 0; k < requests.size(); ++k) {
-        const RenderRequest& r = requests[k];
+    std::vector<std::string> diffs;
+    for (const RenderRequest& r : requests) {
         std::string diff = a.diff;
         if (!a.diffDir.empty() && r.stage != "mirror")
             diff = a.diffDir + "/" + r.stage + "-" + treeName(r.tree) + ".png";
-        for (CheckResult& result : checkStageInWorker(r, diff, backend, a.limits)) {
-            if (machine.empty()) {
-                machine = result.machine;
-                backendName = result.backend;
-            }
-            char counter[32];
-            std::snprintf(counter, sizeof counter, "[%2zu/%zu] ", k + 1, requests.size());
-            std::cout << counter << checkTableLine(result) << std::flush;
-            if (!result.note.empty()) std::cerr << "shadowlab: note: " << result.note << "\n";
-            results.push_back(std::move(result));
-        }
+        diffs.push_back(diff);
     }
+    checkInWorkers(requests, diffs, backend, a.limits,
+                   [&](std::size_t k, std::vector<CheckResult> stageResults) {
+                       for (CheckResult& result : stageResults) {
+                           if (machine.empty()) {
+                               machine = result.machine;
+                               backendName = result.backend;
+                           }
+                           char counter[32];
+                           std::snprintf(counter, sizeof counter, "[%2zu/%zu] ", k + 1,
+                                         requests.size());
+                           std::cout << counter << checkTableLine(result) << std::flush;
+                           if (!result.note.empty())
+                               std::cerr << "shadowlab: note: " << result.note << "\n";
+                           results.push_back(std::move(result));
+                       }
+                   });
     if (machine.empty()) machine = "unknown (no stage finished)";
     int exitCode = kOk;
     for (const auto& r : results)

@@ -71,10 +71,10 @@ std::pair<std::string, std::string> classify(const std::exception_ptr& error) {
     throw std::runtime_error(what);
 }
 
-void applyLimits(const Limits& limits) {
-    if (limits.seconds > 0) {  // a backstop: the wall clock ends the worker first
+void applyLimits(const Limits& limits, std::size_t jobs) {
+    if (limits.seconds > 0) {  // a backstop: the wall clock ends a job first
         long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
-        rlim_t cpu = static_cast<rlim_t>(std::ceil(limits.seconds * cpus)) + 1;
+        rlim_t cpu = static_cast<rlim_t>(std::ceil(limits.seconds * cpus)) * jobs + 1;
         struct rlimit r = {cpu, cpu + 1};
         ::setrlimit(RLIMIT_CPU, &r);
     }
@@ -102,43 +102,60 @@ void writeAll(int fd, const std::string& text) {
     }
 }
 
-[[noreturn]] void runChild(const Limits& limits, const std::function<nlohmann::json()>& job, int fd,
-                           pid_t parent) {
+// The child: jobs [first, count) in order, one line of JSON for each as it finishes; it stops
+// after a job that threw (the parent rethrows) or ran out of memory.
+[[noreturn]] void runChild(const Limits& limits, const SeriesJob& job, std::size_t first,
+                           std::size_t count, int fd, pid_t parent) {
     ::setpgid(0, 0);  // its own group: a timeout kills whatever it started too
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(125);  // the parent died before prctl
-    applyLimits(limits);
-    std::string message;
-    try {
-        nlohmann::json reply;
+    applyLimits(limits, count - first);
+    for (std::size_t k = first; k < count; ++k) {
+        std::string line;
+        bool stop = true;
         try {
-            reply = {{"ok", job()}};
+            nlohmann::json reply;
+            try {
+                reply = {{"ok", job(k)}};
+                stop = false;
+            } catch (const std::bad_alloc&) {
+                reply = {{"oom", true}};
+            } catch (...) {
+                auto [kind, what] = classify(std::current_exception());
+                reply = {{"error", {{"kind", kind}, {"what", what}}}};
+            }
+            line = reply.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
         } catch (const std::bad_alloc&) {
-            reply = {{"oom", true}};
-        } catch (...) {
-            auto [kind, what] = classify(std::current_exception());
-            reply = {{"error", {{"kind", kind}, {"what", what}}}};
+            line = "{\"oom\":true}";
+            stop = true;
         }
-        message = reply.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-    } catch (const std::bad_alloc&) {
-        message = "{\"oom\":true}";
+        std::cout.flush();
+        std::cerr.flush();
+        std::fflush(nullptr);
+        writeAll(fd, line + "\n");  // dump(-1) escapes every line break inside
+        if (stop) break;
     }
-    std::cout.flush();
-    std::cerr.flush();
-    std::fflush(nullptr);
-    writeAll(fd, message);
     ::_exit(0);  // no destructors, no atexit: the parent owns everything else
 }
 
-// Reads the child's reply until end of file or the deadline; false = the deadline passed.
-bool readUntil(int fd, const std::optional<Clock::time_point>& deadline, std::string& out) {
-    char buffer[65536];
+enum class Read { Line, EndOfFile, Deadline };
+
+// The next line from the worker into `line`, or why there is none.
+Read nextLine(int fd, std::string& buffer, const std::optional<Clock::time_point>& deadline,
+              std::string& line) {
+    char chunk[65536];
     for (;;) {
+        std::size_t end = buffer.find('\n');
+        if (end != std::string::npos) {
+            line = buffer.substr(0, end);
+            buffer.erase(0, end + 1);
+            return Read::Line;
+        }
         int wait = -1;
         if (deadline) {
             auto left =
                 std::chrono::duration_cast<std::chrono::milliseconds>(*deadline - Clock::now());
-            if (left.count() <= 0) return false;
+            if (left.count() <= 0) return Read::Deadline;
             wait = static_cast<int>(std::min<long long>(left.count() + 1, 60000));
         }
         struct pollfd p = {fd, POLLIN, 0};
@@ -147,10 +164,10 @@ bool readUntil(int fd, const std::optional<Clock::time_point>& deadline, std::st
         if (ready < 0)
             throw std::runtime_error(std::string("worker: poll: ") + std::strerror(errno));
         if (ready == 0) continue;  // the loop checks the deadline
-        ssize_t n = ::read(fd, buffer, sizeof buffer);
+        ssize_t n = ::read(fd, chunk, sizeof chunk);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return true;  // end of file: the child exited (or closed its end)
-        out.append(buffer, static_cast<std::size_t>(n));
+        if (n <= 0) return Read::EndOfFile;  // the child exited (a partial line is no result)
+        buffer.append(chunk, static_cast<std::size_t>(n));
     }
 }
 
@@ -253,78 +270,141 @@ std::string workerFailureLine(const std::string& what, const WorkerOutcome& o,
     return what;
 }
 
-WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::json()>& job) {
-    std::cout.flush();  // else the child inherits unwritten output and writes it a second time
-    std::cerr.flush();
-    std::fflush(nullptr);
-    int fds[2];
-    if (::pipe2(fds, O_CLOEXEC) != 0)
-        throw std::runtime_error(std::string("worker: pipe: ") + std::strerror(errno));
-    const pid_t parent = ::getpid();
-    const auto start = Clock::now();
-    pid_t pid = ::fork();
-    if (pid < 0) {
-        int err = errno;
-        ::close(fds[0]);
-        ::close(fds[1]);
-        throw std::runtime_error(std::string("worker: fork: ") + std::strerror(err));
-    }
-    if (pid == 0) {
-        ::close(fds[0]);
-        runChild(limits, job, fds[1], parent);
-    }
-    ::setpgid(pid, pid);  // as the child does: whichever runs first
-    ::close(fds[1]);
-    std::optional<Clock::time_point> deadline;
-    if (limits.seconds > 0)
-        deadline = start + std::chrono::duration_cast<Clock::duration>(
-                               std::chrono::duration<double>(limits.seconds));
-    std::string reply;
-    bool timedOut = false;
-    int status = 0;
-    try {
-        timedOut = !readUntil(fds[0], deadline, reply) || !reapUntil(pid, deadline, status);
-    } catch (...) {
-        killGroup(pid);
-        ::waitpid(pid, &status, 0);
-        ::close(fds[0]);
-        throw;
-    }
-    ::close(fds[0]);
-    if (timedOut) {
-        killGroup(pid);
-        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+namespace {
+
+// A running worker: its process (own group) and the parent's end of its pipe.
+class Worker {
+  public:
+    Worker(const Limits& limits, const SeriesJob& job, std::size_t first, std::size_t count) {
+        std::cout.flush();  // else the child inherits unwritten output and writes it twice
+        std::cerr.flush();
+        std::fflush(nullptr);
+        int fds[2];
+        if (::pipe2(fds, O_CLOEXEC) != 0)
+            throw std::runtime_error(std::string("worker: pipe: ") + std::strerror(errno));
+        const pid_t parent = ::getpid();
+        pid_ = ::fork();
+        if (pid_ < 0) {
+            int err = errno;
+            ::close(fds[0]);
+            ::close(fds[1]);
+            throw std::runtime_error(std::string("worker: fork: ") + std::strerror(err));
         }
+        if (pid_ == 0) {
+            ::close(fds[0]);
+            runChild(limits, job, first, count, fds[1], parent);
+        }
+        ::setpgid(pid_, pid_);  // as the child does: whichever runs first
+        ::close(fds[1]);
+        fd_ = fds[0];
+    }
+    Worker(const Worker&) = delete;
+    Worker& operator=(const Worker&) = delete;
+    ~Worker() {  // killed and reaped unless finish() reaped it
+        if (pid_ > 0) {
+            killGroup(pid_);
+            int status;
+            while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+            }
+        }
+        if (fd_ >= 0) ::close(fd_);
+    }
+    Read next(const std::optional<Clock::time_point>& deadline, std::string& line) {
+        return nextLine(fd_, buffer_, deadline, line);
+    }
+    // Reaps the child, killing it at the deadline; returns its wait status and whether it had
+    // to be killed.
+    int finish(const std::optional<Clock::time_point>& deadline, bool& killed) {
+        int status = 0;
+        killed = !reapUntil(pid_, deadline, status);
+        if (killed) {
+            killGroup(pid_);
+            while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+            }
+        }
+        pid_ = -1;
+        return status;
     }
 
+  private:
+    pid_t pid_ = -1;
+    int fd_ = -1;
+    std::string buffer_;
+};
+
+std::optional<Clock::time_point> deadlineFrom(const Clock::time_point& start,
+                                              const Limits& limits) {
+    if (limits.seconds <= 0) return std::nullopt;
+    return start + std::chrono::duration_cast<Clock::duration>(
+                       std::chrono::duration<double>(limits.seconds));
+}
+
+// How a worker that ended without a line for its job ended.
+WorkerOutcome endedWithout(int status, bool killed) {
     WorkerOutcome out;
-    out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    if (timedOut) {
+    if (killed) {
         out.kind = WorkerOutcome::Kind::Timeout;
-        return out;
-    }
-    if (WIFSIGNALED(status)) {
+    } else if (WIFSIGNALED(status)) {
         out.signal = WTERMSIG(status);
         out.kind =
             out.signal == SIGXCPU ? WorkerOutcome::Kind::Timeout : WorkerOutcome::Kind::Crash;
-        return out;
-    }
-    out.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    nlohmann::json message;
-    if (out.exitCode == 0) message = nlohmann::json::parse(reply, nullptr, false);
-    if (!message.is_object()) {
+    } else {
         out.kind = WorkerOutcome::Kind::Failed;
-        return out;
+        out.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     }
-    if (message.contains("error")) rethrowCarried(message["error"]);
-    if (message.contains("oom")) {
-        out.kind = WorkerOutcome::Kind::Crash;
-        out.outOfMemory = true;
-        return out;
-    }
-    out.kind = WorkerOutcome::Kind::Ok;
-    out.value = std::move(message["ok"]);
     return out;
+}
+
+}  // namespace
+
+void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& job,
+                      const std::function<void(std::size_t, const WorkerOutcome&)>& done) {
+    std::size_t k = 0;
+    while (k < count) {
+        Worker worker(limits, job, k, count);
+        auto since = Clock::now();
+        for (;;) {
+            std::string line;
+            Read read = worker.next(deadlineFrom(since, limits), line);
+            WorkerOutcome out;
+            if (read == Read::Line) {
+                nlohmann::json message = nlohmann::json::parse(line, nullptr, false);
+                if (message.is_object() && message.contains("error"))
+                    rethrowCarried(message["error"]);  // ~Worker ends the child
+                if (message.is_object() && message.contains("ok")) {
+                    out.value = std::move(message["ok"]);
+                } else {
+                    out.kind = WorkerOutcome::Kind::Crash;
+                    out.outOfMemory = message.is_object() && message.contains("oom");
+                }
+            } else if (read == Read::Deadline) {
+                out.kind = WorkerOutcome::Kind::Timeout;  // ~Worker kills it
+            } else {
+                bool killed = false;
+                int status = worker.finish(deadlineFrom(Clock::now(), limits), killed);
+                out = endedWithout(status, killed);
+            }
+            out.seconds = std::chrono::duration<double>(Clock::now() - since).count();
+            since = Clock::now();
+            bool goOn = out.kind == WorkerOutcome::Kind::Ok;
+            if (done) done(k, out);
+            ++k;
+            if (!goOn) break;  // a fresh worker for the jobs after this one
+            if (k == count) {
+                bool killed = false;
+                worker.finish(deadlineFrom(Clock::now(), limits), killed);
+                break;
+            }
+        }
+    }
+}
+
+WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::json()>& job) {
+    WorkerOutcome outcome;
+    runBoundedSeries(
+        limits, 1, [&](std::size_t) { return job(); },
+        [&](std::size_t, const WorkerOutcome& o) { outcome = o; });
+    return outcome;
 }
 
 }  // namespace sl

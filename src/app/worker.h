@@ -41,6 +41,15 @@ struct WorkerOutcome {
 // Flushes stdout and stderr before forking (the child prints to the same ones).
 WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::json()>& job);
 
+// job(0) ... job(count - 1) in order, each under the limits of one job, in as few workers as
+// may be: one worker runs them one after the other and sends each value back as it finishes,
+// so what a job sets up in the worker (a GL context) serves the next, and the time limit starts
+// again with each job. A job that runs out of time or ends its worker gets that outcome and a
+// fresh worker goes on with the next. `done(k, outcome)` is called for each, in order.
+using SeriesJob = std::function<nlohmann::json(std::size_t)>;
+void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& job,
+                      const std::function<void(std::size_t, const WorkerOutcome&)>& done);
+
 // "30 s" or "no time limit"; "2048 MB" or "no memory limit".
 std::string timeLimitText(const Limits& limits);
 std::string memoryLimitText(const Limits& limits);

@@ -98,6 +98,51 @@ TEST(Worker, AJobThatExitsHasNoResult) {
     EXPECT_EQ(o.exitCode, 7);
 }
 
+TEST(Worker, ASeriesSharesItsWorkerUntilAJobFails) {
+    std::vector<WorkerOutcome> outcomes;
+    auto start = std::chrono::steady_clock::now();
+    runBoundedSeries(
+        {0.5, 512}, 6,
+        [](std::size_t k) -> nlohmann::json {
+            if (k == 2)
+                for (;;) ::pause();  // past the time limit
+            if (k == 3) ::raise(SIGABRT);
+            if (k == 1 || k == 5) ::usleep(300000);  // each job's own limit, not the series'
+            return ::getpid();
+        },
+        [&](std::size_t k, const WorkerOutcome& o) {
+            EXPECT_EQ(k, outcomes.size());
+            outcomes.push_back(o);
+        });
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(outcomes.size(), 6u);
+    EXPECT_EQ(outcomes[0].kind, WorkerOutcome::Kind::Ok);
+    EXPECT_EQ(outcomes[1].kind, WorkerOutcome::Kind::Ok);
+    EXPECT_EQ(outcomes[0].value, outcomes[1].value);  // one worker for both
+    EXPECT_EQ(outcomes[2].kind, WorkerOutcome::Kind::Timeout);
+    EXPECT_EQ(outcomes[3].kind, WorkerOutcome::Kind::Crash);
+    EXPECT_EQ(outcomes[3].signal, SIGABRT);
+    EXPECT_EQ(outcomes[4].kind, WorkerOutcome::Kind::Ok);
+    EXPECT_EQ(outcomes[5].kind, WorkerOutcome::Kind::Ok);
+    EXPECT_NE(outcomes[4].value, outcomes[0].value);  // a fresh worker after each failure
+    EXPECT_EQ(outcomes[4].value, outcomes[5].value);
+    EXPECT_LT(seconds, 3.0);
+}
+
+TEST(Worker, AnExceptionInASeriesStopsIt) {
+    std::size_t calls = 0;
+    EXPECT_THROW(runBoundedSeries(
+                     {5, 512}, 3,
+                     [](std::size_t k) -> nlohmann::json {
+                         if (k == 1) throw UsageError("bad");
+                         return k;
+                     },
+                     [&](std::size_t, const WorkerOutcome&) { ++calls; }),
+                 UsageError);
+    EXPECT_EQ(calls, 1u);
+}
+
 TEST(Worker, NoLimitsMeansNone) {
     WorkerOutcome o = runBounded({0, 0}, [] { return nlohmann::json(42); });
     ASSERT_EQ(o.kind, WorkerOutcome::Kind::Ok);
