@@ -1,8 +1,8 @@
 // `shadowlab check (--stage ID | --all)`: renders stages headless, measures them against the
 // ray-traced reference and judges each against its expectation (src/stages/expectations.json).
-// Each stage and tree is evaluated in its own bounded worker (src/app/worker.h), so a shader
-// that hangs the compiler or crashes the driver costs that stage (TIMEOUT, CRASH) and the report
-// is still written. One line per stage as it finishes, an optional report (ours, or Gradescope's
+// The stages are evaluated in bounded workers (src/app/worker.h), each stage and tree under its
+// own time limit, so a shader that hangs the compiler or crashes the driver costs that stage
+// (TIMEOUT, CRASH) and the report is still written. One line per stage as it finishes, an optional report (ours, or Gradescope's
 // results.json), JUnit XML and diff images; exit 0 when every stage shows its lesson, 1 when one
 // does not, 2 on bad input (a student shader that does not build, times out or crashes
 // included), 3 on a GL failure.
