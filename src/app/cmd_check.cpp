@@ -2,10 +2,10 @@
 // ray-traced reference and judges each against its expectation (src/stages/expectations.json).
 // The stages are evaluated in bounded workers (src/app/worker.h), each stage and tree under its
 // own time limit, so a shader that hangs the compiler or crashes the driver costs that stage
-// (TIMEOUT, CRASH) and the report is still written. One line per stage as it finishes, an optional report (ours, or Gradescope's
-// results.json), JUnit XML and diff images; exit 0 when every stage shows its lesson, 1 when one
-// does not, 2 on bad input (a student shader that does not build, times out or crashes
-// included), 3 on a GL failure.
+// (TIMEOUT, CRASH) and the report is still written. One line per stage as it finishes, an
+// optional report (ours, or Gradescope's results.json), JUnit XML and diff images; exit 0 when
+// every stage shows its lesson, 1 when one does not, 2 on bad input (a student shader that does
+// not build, times out or crashes included), 3 on a GL failure.
 #include <sys/stat.h>
 
 #include <algorithm>
