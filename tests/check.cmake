@@ -78,6 +78,12 @@ add_test(NAME check_report_folder_missing
 set_tests_properties(check_report_folder_missing PROPERTIES LABELS check
                      PASS_REGULAR_EXPRESSION "--report: the folder .*no-such-folder' does not exist")
 
+# example renders in a bounded worker too: past its time limit it is exit 2 naming the limit.
+add_test(NAME example_time_limit
+         COMMAND sh -c "${SL_EXE} example acne --out ${SL_CHECK_DIR}/examples-limit --time-limit 0.05 2>&1; test $? -eq 2")
+set_tests_properties(example_time_limit PROPERTIES LABELS example
+                     PASS_REGULAR_EXPRESSION "example acne: no result within the time limit of 0.05 s \\(--time-limit\\)")
+
 # Every lecture figure in slides_examples/ renders and gets the verdict it expects.
 file(GLOB SL_EXAMPLES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/slides_examples/*.json)
 foreach(example ${SL_EXAMPLES})
