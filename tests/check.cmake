@@ -46,6 +46,23 @@ add_test(NAME check_all_student_broken
          COMMAND sh -c "${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken.json; test $? -eq 2 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/broken.json --count 7 --exit 2 --verdict margin/core=ERROR --verdict hardware/core=PASS")
 set_tests_properties(check_all_student_broken PROPERTIES LABELS check TIMEOUT 300)
 
+# The graders' formats through real parsers: Gradescope's results.json (its documented fields
+# and types, the score the tests' sum) and JUnit XML (the counts agree with the testcases), one
+# test per stage and tree, the same names and verdicts in both. Our shaders: 15 passes; a
+# student overlay that does not build: its stage an <error>, the others still graded.
+add_test(NAME check_formats
+         COMMAND sh -c "${SL_EXE} check --all --report ${SL_CHECK_DIR}/gradescope.json --format gradescope --junit ${SL_CHECK_DIR}/junit.xml && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/gradescope.json --junit ${SL_CHECK_DIR}/junit.xml --count 15 --errors 0 --failures 0 --verdict rgb/core=PASS --verdict fixed/legacy=PASS")
+set_tests_properties(check_formats PROPERTIES LABELS check TIMEOUT 600)
+add_test(NAME check_formats_student_broken
+         COMMAND sh -c "${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken-gs.json --format gradescope --junit ${SL_CHECK_DIR}/broken.xml; test $? -eq 2 && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/broken-gs.json --junit ${SL_CHECK_DIR}/broken.xml --count 7 --errors 1 --verdict margin/core=ERROR --verdict hardware/core=PASS")
+set_tests_properties(check_formats_student_broken PROPERTIES LABELS check TIMEOUT 300)
+add_test(NAME check_format_unknown COMMAND sh -c "${SL_EXE} check --all --report ${SL_CHECK_DIR}/x.json --format csv 2>&1; test $? -eq 2")
+set_tests_properties(check_format_unknown PROPERTIES LABELS check PASS_REGULAR_EXPRESSION "--format: 'csv' is not one of json, gradescope")
+add_test(NAME check_junit_folder_missing
+         COMMAND sh -c "${SL_EXE} check --stage rgb --junit ${SL_CHECK_DIR}/no-such-folder/r.xml 2>&1; test $? -eq 2")
+set_tests_properties(check_junit_folder_missing PROPERTIES LABELS check
+                     PASS_REGULAR_EXPRESSION "--junit: the folder .*no-such-folder' does not exist")
+
 # Bad input: exit 2 with one line naming the option.
 add_test(NAME check_usage COMMAND sh -c "${SL_EXE} check 2>&1; test $? -eq 2")
 set_tests_properties(check_usage PROPERTIES LABELS check PASS_REGULAR_EXPRESSION "give either --stage ID or --all")
@@ -60,6 +77,12 @@ add_test(NAME check_report_folder_missing
          COMMAND sh -c "${SL_EXE} check --stage rgb --report ${SL_CHECK_DIR}/no-such-folder/r.json 2>&1; test $? -eq 2")
 set_tests_properties(check_report_folder_missing PROPERTIES LABELS check
                      PASS_REGULAR_EXPRESSION "--report: cannot write .*: the folder .*no-such-folder' does not exist")
+
+# example renders in a bounded worker too: past its time limit it is exit 2 naming the limit.
+add_test(NAME example_time_limit
+         COMMAND sh -c "${SL_EXE} example acne --out ${SL_CHECK_DIR}/examples-limit --time-limit 0.05 2>&1; test $? -eq 2")
+set_tests_properties(example_time_limit PROPERTIES LABELS example
+                     PASS_REGULAR_EXPRESSION "example acne: no result within the time limit of 0.05 s \\(--time-limit\\)")
 
 # Every lecture figure in slides_examples/ renders and gets the verdict it expects.
 file(GLOB SL_EXAMPLES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/slides_examples/*.json)

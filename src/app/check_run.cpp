@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
 
 #include "app/bench_output.h"
+#include "app/check_formats.h"
 #include "app/options.h"
 #include "metrics/shadow_metrics.h"
+#include "stages/stage.h"
 
 namespace sl {
 
@@ -108,13 +111,6 @@ std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCa
     return results;
 }
 
-std::string checkTestName(const CheckResult& r) {
-    std::string name = r.stage + "/" + r.tree + "/" + (r.view.empty() ? "scene" : r.view);
-    std::string lesson = r.lesson;
-    if (lesson.rfind(r.stage, 0) == 0) lesson = lesson.substr(r.stage.size());
-    while (!lesson.empty() && lesson[0] == ' ') lesson.erase(0, 1);
-    return lesson.empty() ? name : name + " " + lesson;
-}
 
 std::map<std::string, double> CheckResult::figureMap() const {
     return {{"false_shadow_pct", figures.falseShadowPct},
@@ -245,7 +241,99 @@ nlohmann::json checkJson(const CheckResult& r) {
         {"verdict", r.verdict()},
         {"message", r.judgement.message},
         {"diff", r.diffFile.empty() ? nlohmann::json() : nlohmann::json(r.diffFile)},
+        {"note", r.note.empty() ? nlohmann::json() : nlohmann::json(r.note)},
         {"seconds", r.seconds}};
+}
+
+namespace {
+
+glm::vec3 vecFrom(const nlohmann::json& v) {
+    return {v.at(0).get<float>(), v.at(1).get<float>(), v.at(2).get<float>()};
+}
+
+double numberFrom(const nlohmann::json& v) {
+    return v.is_null() ? NAN : v.get<double>();
+}
+
+std::string textOrEmpty(const nlohmann::json& v) {
+    return v.is_null() ? std::string() : v.get<std::string>();
+}
+
+// The entry a report names: its label among the entries that apply to the tree.
+const Expectation* expectationByLabel(const std::string& label, const std::string& tree) {
+    for (const Expectation& e : expectations()) {
+        bool inTree =
+            e.trees.empty() || std::find(e.trees.begin(), e.trees.end(), tree) != e.trees.end();
+        if (inTree && e.label() == label) return &e;
+    }
+    throw std::invalid_argument("no entry '" + label + "' for the " + tree + " tree in " +
+                                expectationsPath());
+}
+
+}  // namespace
+
+CheckResult checkResultFromJson(const nlohmann::json& j) {
+    try {
+        CheckResult r;
+        r.stage = j.at("stage").get<std::string>();
+        r.tree = j.at("tree").get<std::string>();
+        r.view = j.value("view", std::string());
+        r.lesson = j.value("lesson", std::string());
+        r.scene = j.at("scene").get<std::string>();
+        r.overlay = textOrEmpty(j.at("shaders"));
+        r.width = j.at("size").at(0).get<int>();
+        r.height = j.at("size").at(1).get<int>();
+        if (const StageInfo* info = findStage(r.stage)) r.parameters = ParamSet(info->params);
+        for (const auto& [name, value] : j.at("parameters").items()) {
+            std::string err = r.parameters.set(name, value.get<std::string>());
+            if (!err.empty()) throw std::invalid_argument("parameter " + name + ": " + err);
+        }
+        const auto& camera = j.at("camera");
+        r.camera.eye = vecFrom(camera.at("eye"));
+        r.camera.at = vecFrom(camera.at("at"));
+        r.camera.fovyDegrees = camera.at("fovy").get<float>();
+        r.light = vecFrom(j.at("light"));
+        const auto& f = j.at("figures");
+        Accuracy& a = r.figures;
+        a.falseShadowPct = numberFrom(f.at("false_shadow_pct"));
+        a.falseLitPct = numberFrom(f.at("false_lit_pct"));
+        a.falseShadowBandPct = numberFrom(f.at("false_shadow_band_pct"));
+        a.falseLitBandPct = numberFrom(f.at("false_lit_band_pct"));
+        a.edgeMeanPx = numberFrom(f.at("edge_mean_px"));
+        a.edgeP95Px = numberFrom(f.at("edge_p95_px"));
+        a.mirrorIdPct = numberFrom(f.at("mirror_id_pct"));
+        a.mirrorPsnrDb = numberFrom(f.at("mirror_psnr_db"));
+        if (!std::isnan(a.falseShadowPct)) a.errorPct = 0.5 * (a.falseShadowPct + a.falseLitPct);
+        if (!std::isnan(a.mirrorIdPct)) a.errorPct = 100.0 - a.mirrorIdPct;
+        const auto& pixels = j.at("pixels");
+        r.evaluated = pixels.at("evaluated").get<long>();
+        r.truthLit = pixels.at("truth_lit").get<long>();
+        r.truthShadow = pixels.at("truth_shadow").get<long>();
+        const auto& e = j.at("expectation");
+        if (!e.is_null()) {
+            r.expectation.entry = expectationByLabel(e.at("entry").get<std::string>(), r.tree);
+            r.expectation.exact = e.at("matched").get<std::string>() == "exact";
+        }
+        const std::string verdict = j.at("verdict").get<std::string>();
+        if (verdict == "PASS" || verdict == "FAIL" || verdict == "SKIP") {
+            r.judgement.verdict = verdict == "PASS"   ? Verdict::Pass
+                                  : verdict == "FAIL" ? Verdict::Fail
+                                                      : Verdict::Skip;
+        } else if (verdict == "ERROR" || verdict == "TIMEOUT" || verdict == "CRASH") {
+            r.error = true;
+            r.errorVerdict = verdict;
+            r.judgement.verdict = Verdict::Fail;
+        } else {
+            throw std::invalid_argument("unknown verdict '" + verdict + "'");
+        }
+        r.judgement.message = j.at("message").get<std::string>();
+        r.diffFile = textOrEmpty(j.at("diff"));
+        if (j.contains("note")) r.note = textOrEmpty(j["note"]);
+        r.seconds = j.at("seconds").get<double>();
+        return r;
+    } catch (const nlohmann::json::exception& e) {
+        throw std::invalid_argument(std::string("a check result: ") + e.what());
+    }
 }
 
 }  // namespace sl

@@ -24,13 +24,16 @@ struct CheckResult {
     long evaluated = 0, truthLit = 0, truthShadow = 0;  // pixel counts behind the percentages
     ExpectationMatch expectation;
     Judgement judgement;
-    bool error = false;            // a shader did not build: judgement.message says why (exit 2)
+    // The stage could not be judged (exit 2): a shader that did not build ("ERROR"), or a worker
+    // that ran out of time ("TIMEOUT") or died ("CRASH"). judgement.message says why.
+    bool error = false;
+    std::string errorVerdict = "ERROR";
     std::string diffFile;          // the diff image written, or ""
     std::string note;              // e.g. why no diff image was written
     std::string backend, machine;  // the headless backend, machineLine() of the context used
     double seconds = 0;
 
-    std::string verdict() const { return error ? "ERROR" : verdictName(judgement.verdict); }
+    std::string verdict() const { return error ? errorVerdict : verdictName(judgement.verdict); }
     std::map<std::string, double> figureMap() const;
 };
 
@@ -58,10 +61,6 @@ std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCa
                                        const std::function<std::string(const CheckCase&)>& diffPath,
                                        const std::function<void(const CheckResult&)>& progress);
 
-// "margin/core/lecture margin-kind=slope": the stage, tree and view, and the lesson's settings
-// when they are not the defaults (one test per stage, tree, view and lesson in the graders'
-// formats).
-std::string checkTestName(const CheckResult& r);
 
 // The fixed-width table a check prints: a header, then one line per result.
 std::string checkTableHeader();
@@ -69,5 +68,9 @@ std::string checkTableLine(const CheckResult& r);
 
 // A result in the report (fields documented in docs/check.md).
 nlohmann::json checkJson(const CheckResult& r);
+// The result checkJson described (a worker's results come back this way): checkJson of it is
+// the same JSON. The expectation is found again in expectations() by its label. backend and
+// machine are not in the JSON and stay empty. Throws std::invalid_argument on a malformed one.
+CheckResult checkResultFromJson(const nlohmann::json& j);
 
 }  // namespace sl

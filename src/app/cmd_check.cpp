@@ -1,19 +1,28 @@
 // `shadowlab check (--stage ID | --all)`: renders stages headless, measures them against the
 // ray-traced reference and judges each against its expectation (src/stages/expectations.json).
-// One line per stage as it finishes, an optional JSON report and diff images; exit 0 when every
-// stage shows its lesson, 1 when one does not, 2 on bad input (a student shader that does not
-// build included), 3 on a GL failure.
+// The stages are evaluated in bounded workers (src/app/worker.h), each stage and tree under its
+// own time limit, so a shader that hangs the compiler or crashes the driver costs that stage
+// (TIMEOUT, CRASH) and the report is still written. One line per stage as it finishes, an
+// optional report (ours, or Gradescope's results.json), JUnit XML and diff images; exit 0 when
+// every stage shows its lesson, 1 when one does not, 2 on bad input (a student shader that does
+// not build, times out or crashes included), 3 on a GL failure.
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 
 #include "app/bench_output.h"
+#include "app/check_formats.h"
 #include "app/check_run.h"
 #include "app/commands.h"
+#include "app/worker.h"
 #include "io/files.h"
 #include "scene/scene_json.h"
+#include "stages/stage.h"
 
 namespace sl {
 
@@ -21,7 +30,8 @@ namespace {
 
 struct CheckArgs {
     CommonOptions common;
-    std::string stage, report, diff, diffDir;
+    Limits limits;
+    std::string stage, report, diff, diffDir, junit, format = "json";
     bool all = false, glslGiven = false;
 };
 
@@ -106,6 +116,98 @@ nlohmann::json reportJson(const std::vector<CheckResult>& results, int exitCode,
             {"results", list}};
 }
 
+// The camera, light and scene name a stage would have been rendered with, for a stage whose
+// worker returned nothing. The scene is read again only when it is a regular file: a FIFO or a
+// device is the scene loader's to refuse, never the parent's to block on.
+void describeUnrendered(const RenderRequest& r, CheckResult& out) {
+    out.scene = effectiveScene(r);
+    std::string path = out.scene;
+    if (path.find('/') == std::string::npos && path.find(".json") == std::string::npos)
+        path = dataDir() + "/scenes/" + path + ".json";
+    struct stat st;
+    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
+        try {
+            Scene scene = loadScene(out.scene);
+            out.scene = scene.name;
+            out.camera = scene.camera;
+            out.light = scene.light.position;
+        } catch (const std::exception&) {  // the worker's error would have said why
+        }
+    }
+    if (r.eye) out.camera.eye = *r.eye;
+    if (r.at) out.camera.at = *r.at;
+    if (r.fovy) out.camera.fovyDegrees = *r.fovy;
+    if (r.light) out.light = *r.light;
+}
+
+// The result of a stage whose worker ran out of time or died: TIMEOUT or CRASH, an error of the
+// submission (exit 2), with the one line that names the stage and the limit.
+CheckResult unjudgedResult(const RenderRequest& r, const WorkerOutcome& outcome,
+                           const Limits& limits) {
+    CheckResult out;
+    out.stage = r.stage;
+    out.tree = treeName(r.tree);
+    out.overlay = r.overlay;
+    out.width = r.width;
+    out.height = r.height;
+    if (const StageInfo* info = findStage(r.stage)) out.parameters = ParamSet(info->params);
+    for (const auto& [name, value] : r.sets) out.parameters.set(name, value);
+    describeUnrendered(r, out);
+    out.expectation =
+        findExpectation(expectations(), out.stage, out.scene, out.tree, out.parameters);
+    out.error = true;
+    out.errorVerdict = outcome.kind == WorkerOutcome::Kind::Timeout ? "TIMEOUT" : "CRASH";
+    out.judgement = {Verdict::Fail, workerFailureLine("stage " + out.stage + " (" + out.tree + ")",
+                                                      outcome, limits)};
+    out.seconds = outcome.seconds;
+    return out;
+}
+
+// The job of one stage in one tree, run inside a worker: every lesson and view of it (its
+// cases), their results as JSON.
+nlohmann::json checkStageJob(Evaluator& rig, const std::vector<CheckCase>& cases,
+                             const std::function<std::string(const CheckCase&)>& diffPath) {
+    nlohmann::json list = nlohmann::json::array();
+    std::string backend, machine;
+    for (const CheckResult& r : runCheckCases(rig, cases, diffPath, [](const CheckResult&) {})) {
+        list.push_back(checkJson(r));
+        backend = r.backend;
+        machine = r.machine;
+    }
+    return {{"results", list}, {"backend", backend}, {"machine", machine}};
+}
+
+// Every stage and tree of `requests` evaluated in bounded workers: one worker goes through them
+// in order, reusing its contexts from one stage to the next (as one process did before), each
+// stage under its own time limit. A stage whose worker runs out of time or dies is one TIMEOUT
+// or CRASH result, and a fresh worker goes on with the next stage. The job's exceptions are
+// thrown again here. `each(k, results)` gets each stage's results as they come.
+void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
+                    const std::function<std::string(const CheckCase&)>& diffPath, Backend backend,
+                    const Limits& limits,
+                    const std::function<void(std::size_t, std::vector<CheckResult>)>& each) {
+    std::unique_ptr<Evaluator> rig;  // made in each worker, kept for its next stages
+    auto job = [&](std::size_t k) {
+        if (!rig) rig = std::make_unique<Evaluator>(backend);
+        return checkStageJob(*rig, plan[k], diffPath);
+    };
+    runBoundedSeries(limits, plan.size(), job,
+                     [&](std::size_t k, const WorkerOutcome& outcome) {
+                         std::vector<CheckResult> results;
+                         if (outcome.kind != WorkerOutcome::Kind::Ok) {
+                             results.push_back(unjudgedResult(plan[k].front().request, outcome, limits));
+                             std::cerr << "shadowlab: " << results.back().judgement.message << "\n";
+                         } else {
+                             for (const auto& j : outcome.value.at("results")) {
+                                 results.push_back(checkResultFromJson(j));
+                                 results.back().backend = outcome.value.at("backend");
+                                 results.back().machine = outcome.value.at("machine");
+                             }
+                         }
+                         each(k, std::move(results));
+                     });
+}
+
 int runCheckCommand(const CheckArgs& a) {
     if (a.all == !a.stage.empty()) throw UsageError("check: give either --stage ID or --all");
     if (!a.diff.empty() && !a.diffDir.empty())
@@ -114,8 +216,13 @@ int runCheckCommand(const CheckArgs& a) {
             "--diff-dir DIR for --all)");
     if (a.all && !a.diff.empty())
         throw UsageError("--diff: with --all use --diff-dir DIR (one image per stage and tree)");
+    if (a.format != "json" && a.format != "gradescope")
+        throw UsageError("--format: '" + a.format + "' is not one of json, gradescope");
+    if (a.format != "json" && a.report.empty())
+        throw UsageError("--format " + a.format + ": give --report FILE to write it to");
     if (!a.report.empty()) checkOutputPath("--report", a.report);
     if (!a.diff.empty()) checkOutputPath("--diff", a.diff);
+    if (!a.junit.empty()) checkOutputPath("--junit", a.junit);
     CommonOptions common = a.common;
     common.stage = a.all ? "phong" : a.stage;
     RenderRequest base = toRequest(common);
@@ -134,9 +241,9 @@ int runCheckCommand(const CheckArgs& a) {
     for (const auto& n : notes) std::cerr << "shadowlab: note: " << n << "\n";
 
     auto start = std::chrono::steady_clock::now();
-    Evaluator rig(toBackend(a.common.backend));
+    const Backend backend = toBackend(a.common.backend);
     std::vector<CheckResult> results;
-    std::string machine, backend;
+    std::string machine, backendName;
     std::cout << "check against " << expectationsPath() << ", " << base.width << "x" << base.height
               << (base.overlay.empty() ? "" : ", shaders " + printable(base.overlay)) << "\n"
               << "        " << checkTableHeader();
@@ -177,22 +284,22 @@ int runCheckCommand(const CheckArgs& a) {
                 checkOutputPath(a.diffDir.empty() ? "--diff" : "--diff-dir", path);
         }
     std::size_t done = 0;
-    for (const auto& cases : plan) {
-        std::vector<CheckResult> stageResults =
-            runCheckCases(rig, cases, diffPath, [&](const CheckResult& result) {
-                char counter[32];
-                std::snprintf(counter, sizeof counter, "[%3zu/%zu] ", ++done, total);
-                std::cout << counter << checkTableLine(result) << std::flush;
-                if (!result.note.empty()) std::cerr << "shadowlab: note: " << result.note << "\n";
-            });
-        for (auto& result : stageResults) {
-            if (machine.empty()) {
-                machine = result.machine;
-                backend = result.backend;
-            }
-            results.push_back(std::move(result));
-        }
-    }
+    checkInWorkers(plan, diffPath, backend, a.limits,
+                   [&](std::size_t, std::vector<CheckResult> stageResults) {
+                       for (CheckResult& result : stageResults) {
+                           if (machine.empty()) {
+                               machine = result.machine;
+                               backendName = result.backend;
+                           }
+                           char counter[32];
+                           std::snprintf(counter, sizeof counter, "[%3zu/%zu] ", ++done, total);
+                           std::cout << counter << checkTableLine(result) << std::flush;
+                           if (!result.note.empty())
+                               std::cerr << "shadowlab: note: " << result.note << "\n";
+                           results.push_back(std::move(result));
+                       }
+                   });
+    if (machine.empty()) machine = "unknown (no stage finished)";
     int exitCode = kOk;
     for (const auto& r : results)
         if (r.error)
@@ -201,7 +308,7 @@ int runCheckCommand(const CheckArgs& a) {
             exitCode = kCheckFailed;
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    nlohmann::json report = reportJson(results, exitCode, seconds, backend, machine);
+    nlohmann::json report = reportJson(results, exitCode, seconds, backendName, machine);
     const auto& s = report["summary"];
     std::cout << "checked " << s["checked"] << ": " << s["passed"] << " passed, " << s["failed"]
               << " failed, " << s["skipped"] << " skipped, " << s["errors"] << " errors in "
@@ -211,9 +318,15 @@ int runCheckCommand(const CheckArgs& a) {
         if (!r.diffFile.empty() && !a.diff.empty())
             std::cout << "diff image: " << r.diffFile << "\n";
     if (!a.report.empty()) {
+        nlohmann::json written =
+            a.format == "gradescope" ? gradescopeJson(results, seconds) : report;
         std::string err = writeTextFile(
-            a.report, report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+            a.report, written.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
         if (!err.empty()) throw UsageError("--report: " + err);
+    }
+    if (!a.junit.empty()) {
+        std::string err = writeTextFile(a.junit, junitXml(results, seconds));
+        if (!err.empty()) throw UsageError("--junit: " + err);
     }
     return exitCode;
 }
@@ -231,6 +344,10 @@ Command addCheckCommand(CLI::App& app) {
     cmd->add_option("--diff", args->diff,
                     "diff image of one stage: red false shadow, blue false lit, grey agreement");
     cmd->add_option("--diff-dir", args->diffDir, "one diff image per stage and tree (with --all)");
+    cmd->add_option("--format", args->format,
+                    "the --report's format: json (ours, default) or gradescope (results.json)");
+    cmd->add_option("--junit", args->junit, "also write JUnit XML: one testcase per check");
+    addLimitOptions(cmd, args->limits);
     return {cmd, [args, cmd] {
                 args->glslGiven = cmd->count("--glsl") > 0;
                 return guarded([&] { return runCheckCommand(*args); });

@@ -11,6 +11,7 @@
 #include "app/check_run.h"
 #include "app/commands.h"
 #include "app/mirror_figure.h"
+#include "app/worker.h"
 #include "metrics/mirror_figure.h"
 #include "scene/scene_json.h"
 
@@ -23,6 +24,7 @@ using nlohmann::json;
 struct ExampleArgs {
     std::string name, out = "out/examples", backend = "auto";
     bool list = false;
+    Limits limits;
 };
 
 // One render of an example: its own parameters, or a variant's merged over them.
@@ -202,25 +204,14 @@ int listExamples() {
     return kOk;
 }
 
-int runExample(const ExampleArgs& a) {
-    if (a.list) return listExamples();
-    if (a.name.empty()) throw UsageError("example: give a NAME (see `shadowlab example --list`)");
-    std::string origin;
-    json j = loadExample(a.name, origin);
-    std::vector<ExampleRender> renders = parseExample(j, origin);
-    std::string base = a.name.substr(a.name.find_last_of('/') + 1);
-    if (base.size() > 5 && base.substr(base.size() - 5) == ".json") base.resize(base.size() - 5);
-    makeOutputDir(a.out);
-    auto lines = comment(j, origin);
-    std::cout << base << ": " << lines[0] << "\n    " << lines[1] << "\n";
-    std::optional<MirrorTopView> figure;
-    if (j.contains("figure")) figure = practiceFigure(j["figure"], origin);
-    if (j.contains("see") && j["see"].is_string())
-        std::cout << "see also: " << j["see"].get<std::string>() << "\n";
-    Evaluator rig(toBackend(a.backend));
+// Renders and checks each of an example's renders, printing a line for each; the GL part of
+// `example`, run inside the worker. Returns the exit code.
+int renderExample(const std::vector<ExampleRender>& renders, const std::string& outDir,
+                  const std::string& base, Backend backend) {
+    Evaluator rig(backend);
     int exitCode = kOk;
     for (const auto& er : renders) {
-        std::string stem = a.out + "/" + base + (er.label.empty() ? "" : "-" + er.label);
+        std::string stem = outDir + "/" + base + (er.label.empty() ? "" : "-" + er.label);
         CheckResult result =
             runCheck(rig, er.request, er.request.stage == "mirror" ? "" : stem + "-diff.png");
         if (result.error) return kBadInput;
@@ -240,6 +231,33 @@ int runExample(const ExampleArgs& a) {
                   << checkTableLine(result) << "    expected " << er.expect << ", got " << got
                   << (ok ? ": as the lecture shows" : ": NOT what the lecture shows") << "\n";
     }
+    return exitCode;
+}
+
+int runExample(const ExampleArgs& a) {
+    if (a.list) return listExamples();
+    if (a.name.empty()) throw UsageError("example: give a NAME (see `shadowlab example --list`)");
+    std::string origin;
+    json j = loadExample(a.name, origin);
+    std::vector<ExampleRender> renders = parseExample(j, origin);
+    std::string base = a.name.substr(a.name.find_last_of('/') + 1);
+    if (base.size() > 5 && base.substr(base.size() - 5) == ".json") base.resize(base.size() - 5);
+    makeOutputDir(a.out);
+    auto lines = comment(j, origin);
+    std::cout << base << ": " << lines[0] << "\n    " << lines[1] << "\n";
+    std::optional<MirrorTopView> figure;
+    if (j.contains("figure")) figure = practiceFigure(j["figure"], origin);
+    if (j.contains("see") && j["see"].is_string())
+        std::cout << "see also: " << j["see"].get<std::string>() << "\n";
+    const Backend backend = toBackend(a.backend);
+    // Every render of the example (one stage and tree) in one bounded worker, as `check` does.
+    WorkerOutcome outcome = runBounded(a.limits, [&] {
+        return nlohmann::json{{"exit", renderExample(renders, a.out, base, backend)}};
+    });
+    if (outcome.kind != WorkerOutcome::Kind::Ok)
+        throw UsageError(workerFailureLine("example " + base, outcome, a.limits));
+    int exitCode = outcome.value.at("exit").get<int>();
+    if (exitCode == kBadInput) return kBadInput;
     if (figure) {  // the exercise's answer: eye', at' and the frustum, printed and drawn
         std::string path = a.out + "/" + base + "-figure.png";
         std::string err = writeMirrorFigure(path, *figure);
@@ -259,6 +277,7 @@ Command addExampleCommand(CLI::App& app) {
     cmd->add_flag("--list", args->list, "list the examples with what each shows");
     cmd->add_option("--out", args->out, "output folder (default out/examples)");
     cmd->add_option("--backend", args->backend, "headless backend: auto|osmesa|egl");
+    addLimitOptions(cmd, args->limits);
     return {cmd, [args] { return guarded([&] { return runExample(*args); }); }};
 }
 

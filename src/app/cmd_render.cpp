@@ -8,6 +8,7 @@
 #include "app/bench_run.h"
 #include "app/commands.h"
 #include "app/mirror_figure.h"
+#include "app/worker.h"
 #include "metrics/mirror_figure.h"
 #include "render/mirror_pass.h"
 #include "scene/scene_json.h"
@@ -18,6 +19,7 @@ namespace {
 
 struct RenderArgs {
     CommonOptions common;
+    Limits limits;
     std::string out;
     bool explain = false;
     int repeat = 10;
@@ -51,16 +53,8 @@ void drawMirrorFigure(const RenderRequest& request, const std::string& path) {
     std::cout << "mirror seen from above -> " << path << "\n" << describeTopView(view);
 }
 
-int renderOnce(const RenderArgs& a) {
-    RenderRequest request = toRequest(a.common);
-    validateRequest(request);
-    if (!a.figure.empty()) checkOutputPath("--figure", a.figure);
-    if (!a.out.empty()) checkOutputPath("--out", a.out);
-    if (!a.figure.empty()) {
-        drawMirrorFigure(request, a.figure);
-        if (a.out.empty()) return kOk;  // the figure alone
-    }
-    if (a.out.empty()) throw UsageError("--out: a PNG file name is required");
+// The frames, the PNG and the timing line: the GL part of `render`, run inside the worker.
+void renderInWorker(const RenderArgs& a, const RenderRequest& request) {
     auto context = createHeadlessContext(toBackend(a.common.backend), request.tree, request.width,
                                          request.height);
     installGlDebugOutput();
@@ -94,6 +88,28 @@ int renderOnce(const RenderArgs& a) {
               << " ms, median " << median << " ms/frame over " << steady.size() << " frames\n";
     for (const auto& note : renderer->stats.notes) std::cout << "  " << note << "\n";
     if (a.explain) std::cout << renderer->explain();
+}
+
+int renderOnce(const RenderArgs& a) {
+    RenderRequest request = toRequest(a.common);
+    validateRequest(request);
+    toBackend(a.common.backend);  // a bad name before any work
+    if (!a.figure.empty()) checkOutputPath("--figure", a.figure);
+    if (!a.out.empty()) checkOutputPath("--out", a.out);
+    if (!a.figure.empty()) {
+        drawMirrorFigure(request, a.figure);
+        if (a.out.empty()) return kOk;  // the figure alone
+    }
+    if (a.out.empty()) throw UsageError("--out: a PNG file name is required");
+    // The GL work runs in a bounded worker: a shader that hangs the compiler or crashes the
+    // driver is the submission's error (exit 2), not ours.
+    WorkerOutcome outcome = runBounded(a.limits, [&] {
+        renderInWorker(a, request);
+        return nlohmann::json::object();
+    });
+    if (outcome.kind != WorkerOutcome::Kind::Ok)
+        throw UsageError(workerFailureLine(
+            "stage " + request.stage + " (" + treeName(request.tree) + ")", outcome, a.limits));
     return kOk;
 }
 
@@ -112,6 +128,7 @@ Command addRenderCommand(CLI::App& app) {
                     "also draw the mirror construction seen from above into this PNG (gnuplot)");
     cmd->add_option("--repeat", args->repeat, "frames timed after the first (median reported)")
         ->check(CLI::Range(0, 1000));
+    addLimitOptions(cmd, args->limits);
     return {cmd, [args] { return guarded([&] { return renderOnce(*args); }); }};
 }
 

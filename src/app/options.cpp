@@ -25,7 +25,8 @@ glm::vec3 parseVec3(const std::string& option, const std::string& text) {
     while (std::getline(in, p, ',')) parts.push_back(p);
     if (parts.size() != 3 || text.back() == ',')
         throw UsageError(option + ": '" + text + "' must be three numbers X,Y,Z");
-    return {parseFloat(option, parts[0]), parseFloat(option, parts[1]), parseFloat(option, parts[2])};
+    return {parseFloat(option, parts[0]), parseFloat(option, parts[1]),
+            parseFloat(option, parts[2])};
 }
 
 }  // namespace
@@ -44,6 +45,15 @@ void addCommonOptions(CLI::App* app, CommonOptions& o, bool withStage) {
     app->add_option("--set", o.sets, "stage parameter NAME=VALUE (repeatable)");
     app->add_option("--view", o.view, "final|shadow-map|light|visibility|light-depth");
     app->add_option("--backend", o.backend, "headless backend: auto|osmesa|egl");
+}
+
+void addLimitOptions(CLI::App* app, Limits& limits) {
+    app->add_option("--time-limit", limits.seconds,
+                    "seconds one stage may take in its worker (default 30; 0 = no limit)")
+        ->check(CLI::Range(0.0, 86400.0));
+    app->add_option("--memory-limit", limits.memoryMb,
+                    "address space of one stage's worker in MB (default 2048; 0 = no limit)")
+        ->check(CLI::Range(0L, 1L << 24));
 }
 
 Backend toBackend(const std::string& text) {
@@ -84,7 +94,8 @@ RenderRequest toRequest(const CommonOptions& o) {
     if (!o.light.empty()) r.light = parseVec3("--light", o.light);
     if (!o.fovy.empty()) {
         float f = parseFloat("--fovy", o.fovy);
-        if (f < 1 || f > 170) throw UsageError("--fovy: " + o.fovy + " must be between 1 and 170 degrees");
+        if (f < 1 || f > 170)
+            throw UsageError("--fovy: " + o.fovy + " must be between 1 and 170 degrees");
         r.fovy = f;
     }
     if (!parseView(o.view, r.view)) {

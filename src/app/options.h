@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/worker.h"
 #include "platform/headless.h"
 #include "render/request.h"
 
@@ -21,6 +22,9 @@ void addCommonOptions(CLI::App* app, CommonOptions& o, bool withStage = true);
 
 // Turns the text into a request; throws UsageError naming the option and what is allowed.
 RenderRequest toRequest(const CommonOptions& o);
+
+// --time-limit SECONDS and --memory-limit MB of the worker that renders (0 = no limit).
+void addLimitOptions(CLI::App* app, Limits& limits);
 Backend toBackend(const std::string& text);
 
 // Exit codes of the command-line contract.

@@ -20,10 +20,20 @@ SMALL = "render --repeat 0 --out {out}"  # and --size 160x120 unless the case gi
 
 
 class Case:
+    """`one_line`: a failing command's stderr is one line. `check --all` prints one line per
+    stage that fails (and its notes), so its cases set it False and name the line they expect."""
     def __init__(self, name, expect, fragment, args, timeout=TIMEOUT, setup=None, check=None,
-                 preexec=None):
+                 preexec=None, one_line=True, crashes=False):
         self.name, self.expect, self.fragment, self.args = name, expect, fragment, args
         self.timeout, self.setup, self.check, self.preexec = timeout, setup, check, preexec
+        self.one_line = one_line
+        # A case whose worker dies inside Mesa: under AddressSanitizer the signal must reach
+        # the worker as it does without (the sanitizer would catch it and report Mesa's crash).
+        self.env = None
+        if crashes:
+            self.env = dict(os.environ)
+            self.env["ASAN_OPTIONS"] = (os.environ.get("ASAN_OPTIONS", "") +
+                                        ":handle_segv=0:handle_abort=0:handle_sigbus=0").lstrip(":")
 
 
 def parse_cases(path):
@@ -64,7 +74,8 @@ def run(exe, case):
     start = time.monotonic()
     try:
         p = subprocess.run([exe] + shlex.split(args), capture_output=True, text=True,
-                           errors="replace", timeout=case.timeout, preexec_fn=case.preexec)
+                           errors="replace", timeout=case.timeout, preexec_fn=case.preexec,
+                           env=case.env)
     except subprocess.TimeoutExpired:
         return [f"did not finish within {case.timeout} s (hang?)"], args
     seconds = time.monotonic() - start
@@ -83,7 +94,7 @@ def run(exe, case):
     if case.expect != 0:
         if not lines or not lines[0].startswith("shadowlab:"):
             problems.append("stderr's first line does not start with 'shadowlab:'")
-        elif len(lines) > 1 and "shader error:" not in lines[0]:
+        elif case.one_line and len(lines) > 1 and "shader error:" not in lines[0]:
             problems.append(f"stderr has {len(lines)} lines, expected one")
         if target and target.startswith(tmp) and os.path.isfile(target) and not existed:
             problems.append(f"a file was left at {target}")
@@ -165,6 +176,80 @@ class Skip(Exception):
     pass
 
 
+# ---- shaders that outlast or crash their worker (generated: big, and Mesa-version specific) ----
+ROOT = os.path.dirname(os.path.dirname(HERE))
+
+
+def overlay(make_frag):
+    """A setup: {overlay} = a student folder whose margin/lit.frag is ours changed by
+    make_frag(text)."""
+    def setup(tmp, args):
+        with open(os.path.join(ROOT, "shaders_core", "margin", "lit.frag")) as f:
+            ours = f.read()
+        folder = os.path.join(tmp, "overlay", "margin")
+        os.makedirs(folder)
+        with open(os.path.join(folder, "lit.frag"), "w") as f:
+            f.write(make_frag(ours))
+        return args.replace("{overlay}", os.path.join(tmp, "overlay"))
+    return setup
+
+
+def called_from_main(ours, function, call):
+    """Our margin shader with `function` added and its value (times 1e-9) in the colour."""
+    ours = ours.replace("void main()", function + "\nvoid main()")
+    return ours.replace("fragColor = shade(", f"fragColor = 1e-9 * {call} + shade(")
+
+
+def nested_loops(count):
+    """`count` nested loops of two iterations: Mesa unrolls them, 2^count bodies (20: minutes)."""
+    def make(ours):
+        loops = "".join(f"{'    ' * (k + 1)}for (int i{k} = 0; i{k} < 2; i{k}++)\n"
+                        for k in range(count))
+        index = " + ".join(f"i{k}" for k in range(count))
+        body = f"{'    ' * (count + 1)}s += sin(p.x * float({index}));\n"
+        function = f"float busy(vec3 p)\n{{\n    float s = 0.0;\n{loops}{body}    return s;\n}}\n"
+        return called_from_main(ours, function, "busy(worldPosition)")
+    return make
+
+
+def statement_chain(count):
+    """`count` statements, each depending on the one before (Mesa 22.3: SIGSEGV from 50,000)."""
+    def make(ours):
+        function = ("float chain(float x)\n{\n" + "    x = x * 0.5 + 0.25;\n" * count +
+                    "    return x;\n}\n")
+        return called_from_main(ours, function, "chain(worldPosition.x)")
+    return make
+
+
+def address_limit_applies(tmp, args):
+    """A setup: skip where the worker applies no address-space limit (AddressSanitizer builds)."""
+    with open(EXE, "rb") as f:
+        if b"__asan_init" in f.read():
+            raise Skip("an AddressSanitizer build applies no --memory-limit")
+    return args
+
+
+def report_says(verdicts, graded):
+    """A check: {tmp}/report.json is valid JSON (strict UTF-8) with these verdicts, `graded`
+    other results judged (PASS or FAIL), exit code 2 in its summary."""
+    def check(tmp, p):
+        try:
+            with open(os.path.join(tmp, "report.json"), encoding="utf-8") as f:
+                report = json.load(f)
+        except (OSError, ValueError) as e:
+            return [f"no valid report: {e}"]
+        got = {f"{r['stage']}/{r['tree']}": r["verdict"] for r in report["results"]}
+        problems = [f"report: {key} is {got.get(key)}, expected {verdict}"
+                    for key, verdict in verdicts.items() if got.get(key) != verdict]
+        judged = sum(1 for key, v in got.items() if key not in verdicts and v in ("PASS", "FAIL"))
+        if judged != graded:
+            problems.append(f"report: {judged} other stages judged, expected {graded}: {got}")
+        if report["summary"]["exit_code"] != 2:
+            problems.append(f"report: exit_code {report['summary']['exit_code']}, expected 2")
+        return problems
+    return check
+
+
 def generated_cases():
     return [
         Case("huge scene: 5000 spheres", 2, "at most 4096 are allowed",
@@ -185,6 +270,34 @@ def generated_cases():
              preexec=limit_file_size),
         Case("/dev/null survives --out /dev/null", 2, "is not a regular file",
              "render --repeat 0 --size 160x120 --out /dev/null", check=dev_null_intact),
+        # A shader Mesa takes minutes to compile: its stage is a TIMEOUT at the limit, the
+        # other six are graded, the report is written.
+        Case("worker: 20 nested loops, check", 2,
+             "stage margin (core): no result within the time limit of 5 s (--time-limit)",
+             "check --all --glsl core --shaders {overlay} --time-limit 5 --report {tmp}/report.json",
+             timeout=90, setup=overlay(nested_loops(20)), one_line=False,
+             check=report_says({"margin/core": "TIMEOUT"}, 6)),
+        Case("worker: 20 nested loops, render", 2,
+             "stage margin (core): no result within the time limit of 3 s (--time-limit)",
+             "{R} --stage margin --shaders {overlay} --time-limit 3", timeout=30,
+             setup=overlay(nested_loops(20))),
+        # A shader that crashes Mesa's compiler: CRASH, the others graded, the report written.
+        Case("worker: 50,000 chained statements", 2,
+             "stage margin (core): its worker was killed by SIGSEGV",
+             "check --all --glsl core --shaders {overlay} --time-limit 60 --report {tmp}/report.json",
+             timeout=120, setup=overlay(statement_chain(50000)), one_line=False, crashes=True,
+             check=report_says({"margin/core": "CRASH"}, 6)),
+        # Past the memory limit: inside Mesa a crash, in our code std::bad_alloc; both name it.
+        Case("worker: 100,000 chained statements under --memory-limit 1024", 2,
+             "the memory limit is 1024 MB (--memory-limit)",
+             "check --all --glsl core --shaders {overlay} --memory-limit 1024 --time-limit 60 "
+             "--report {tmp}/report.json", timeout=120, setup=overlay(statement_chain(100000)),
+             one_line=False, crashes=True, check=report_says({"margin/core": "CRASH"}, 6)),
+        Case("worker: 8192x8192 under --memory-limit 1024", 2,
+             "stage margin (core): ran out of memory within the memory limit of 1024 MB",
+             "check --stage margin --size 8192x8192 --memory-limit 1024 "
+             "--report {tmp}/report.json", timeout=60, setup=address_limit_applies,
+             check=report_says({"margin/core": "CRASH"}, 0)),
     ]
 
 
@@ -440,8 +553,12 @@ def hostile_cases():
     ]
 
 
+EXE = None  # the shadowlab under test
+
+
 def main():
-    exe = sys.argv[1]
+    global EXE
+    exe = EXE = sys.argv[1]
     only = sys.argv[3] if len(sys.argv) > 3 and sys.argv[2] == "--only" else ""
     cases = parse_cases(os.path.join(HERE, "cases.txt")) + generated_cases() + hostile_cases()
     passed = failed = skipped = 0

@@ -32,11 +32,12 @@ def main():
         if key not in summary:
             problems.append(f"summary.{key} is missing")
     by_verdict = {v: sum(1 for r in results if r.get("verdict") == v)
-                  for v in ("PASS", "FAIL", "SKIP", "ERROR")}
+                  for v in ("PASS", "FAIL", "SKIP", "ERROR", "TIMEOUT", "CRASH")}
+    by_verdict["errors"] = by_verdict["ERROR"] + by_verdict["TIMEOUT"] + by_verdict["CRASH"]
     if summary.get("checked") != len(results):
         problems.append(f"summary.checked {summary.get('checked')} != {len(results)} results")
     for key, verdict in (("passed", "PASS"), ("failed", "FAIL"), ("skipped", "SKIP"),
-                         ("errors", "ERROR")):
+                         ("errors", "errors")):
         if summary.get(key) != by_verdict[verdict]:
             problems.append(f"summary.{key} {summary.get(key)} != {by_verdict[verdict]} {verdict}")
     for r in results:
@@ -53,7 +54,7 @@ def main():
                 problems.append(f"{name}: expectation.{key} missing")
         if "diff" not in r:
             problems.append(f"{name}: 'diff' missing (null when none)")
-        if r.get("verdict") not in by_verdict:
+        if r.get("verdict") not in by_verdict or r.get("verdict") == "errors":
             problems.append(f"{name}: verdict '{r.get('verdict')}'")
     while args:
         flag, value = args.pop(0), args.pop(0)

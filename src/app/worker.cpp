@@ -1,0 +1,410 @@
+#include "app/worker.h"
+
+#include <fcntl.h>
+#include <malloc.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <new>
+#include <optional>
+#include <stdexcept>
+
+#include "gl/shader_library.h"
+#include "render/request.h"
+#include "scene/scene_json.h"
+#include "stages/expectations.h"
+
+// A sanitizer reserves terabytes of address space for its shadow memory: no RLIMIT_AS there.
+#if defined(__SANITIZE_ADDRESS__)
+#define SL_NO_ADDRESS_LIMIT 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer)
+#define SL_NO_ADDRESS_LIMIT 1
+#endif
+#endif
+
+namespace sl {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The exception kinds carried from the child to the parent, most derived first.
+std::pair<std::string, std::string> classify(const std::exception_ptr& error) {
+    try {
+        std::rethrow_exception(error);
+    } catch (const ShaderError& e) {
+        return {"shader", e.what()};
+    } catch (const SceneError& e) {
+        return {"scene", e.what()};
+    } catch (const UsageError& e) {
+        return {"usage", e.what()};
+    } catch (const ExpectationError& e) {
+        return {"expectation", e.what()};
+    } catch (const std::invalid_argument& e) {
+        return {"invalid_argument", e.what()};
+    } catch (const std::exception& e) {
+        return {"runtime", e.what()};
+    } catch (...) {
+        return {"runtime", "an unknown exception in the worker"};
+    }
+}
+
+[[noreturn]] void rethrowCarried(const nlohmann::json& error) {
+    const std::string kind = error.value("kind", "runtime");
+    const std::string what = error.value("what", "");
+    if (kind == "shader") throw ShaderError(what);
+    if (kind == "scene") throw SceneError(what);
+    if (kind == "usage") throw UsageError(what);
+    if (kind == "expectation") throw ExpectationError(what);
+    if (kind == "invalid_argument") throw std::invalid_argument(what);
+    throw std::runtime_error(what);
+}
+
+void applyLimits(const Limits& limits, std::size_t jobs) {
+    if (limits.seconds > 0) {  // a backstop: the wall clock ends a job first
+        long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
+        rlim_t cpu = static_cast<rlim_t>(std::ceil(limits.seconds * cpus)) * jobs + 1;
+        struct rlimit r = {cpu, cpu + 1};
+        ::setrlimit(RLIMIT_CPU, &r);
+    }
+#ifndef SL_NO_ADDRESS_LIMIT
+    if (limits.memoryMb > 0) {
+        // glibc reserves 64 MB of address space per malloc arena, up to 8 per core: cap them so
+        // the limit measures memory in use, not the machine's core count.
+        ::mallopt(M_ARENA_MAX, 2);
+        rlim_t bytes = static_cast<rlim_t>(limits.memoryMb) << 20;
+        struct rlimit r = {bytes, bytes};
+        ::setrlimit(RLIMIT_AS, &r);
+    }
+#endif
+}
+
+void writeAll(int fd, const std::string& text) {
+    const char* p = text.data();
+    std::size_t left = text.size();
+    while (left > 0) {
+        ssize_t n = ::write(fd, p, left);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return;  // the parent is gone: nothing to tell
+        p += n;
+        left -= static_cast<std::size_t>(n);
+    }
+}
+
+// The child: jobs [first, count) in order, one line of JSON for each as it finishes; it stops
+// after a job that threw (the parent rethrows) or ran out of memory.
+[[noreturn]] void runChild(const Limits& limits, const SeriesJob& job, std::size_t first,
+                           std::size_t count, int fd, pid_t parent) {
+    ::setpgid(0, 0);  // its own group: a timeout kills whatever it started too
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(125);  // the parent died before prctl
+    applyLimits(limits, count - first);
+    for (std::size_t k = first; k < count; ++k) {
+        std::string line;
+        bool stop = true;
+        try {
+            nlohmann::json reply;
+            try {
+                reply = {{"ok", job(k)}};
+                stop = false;
+            } catch (const std::bad_alloc&) {
+                reply = {{"oom", true}};
+            } catch (...) {
+                auto [kind, what] = classify(std::current_exception());
+                reply = {{"error", {{"kind", kind}, {"what", what}}}};
+            }
+            line = reply.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+        } catch (const std::bad_alloc&) {
+            line = "{\"oom\":true}";
+            stop = true;
+        }
+        std::cout.flush();
+        std::cerr.flush();
+        std::fflush(nullptr);
+        writeAll(fd, line + "\n");  // dump(-1) escapes every line break inside
+        if (stop) break;
+    }
+    ::_exit(0);  // no destructors, no atexit: the parent owns everything else
+}
+
+enum class Read { Line, EndOfFile, Deadline };
+
+// The next line from the worker into `line`, or why there is none.
+Read nextLine(int fd, std::string& buffer, const std::optional<Clock::time_point>& deadline,
+              std::string& line) {
+    char chunk[65536];
+    for (;;) {
+        std::size_t end = buffer.find('\n');
+        if (end != std::string::npos) {
+            line = buffer.substr(0, end);
+            buffer.erase(0, end + 1);
+            return Read::Line;
+        }
+        int wait = -1;
+        if (deadline) {
+            auto left =
+                std::chrono::duration_cast<std::chrono::milliseconds>(*deadline - Clock::now());
+            if (left.count() <= 0) return Read::Deadline;
+            wait = static_cast<int>(std::min<long long>(left.count() + 1, 60000));
+        }
+        struct pollfd p = {fd, POLLIN, 0};
+        int ready = ::poll(&p, 1, wait);
+        if (ready < 0 && errno == EINTR) continue;
+        if (ready < 0)
+            throw std::runtime_error(std::string("worker: poll: ") + std::strerror(errno));
+        if (ready == 0) continue;  // the loop checks the deadline
+        ssize_t n = ::read(fd, chunk, sizeof chunk);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return Read::EndOfFile;  // the child exited (a partial line is no result)
+        buffer.append(chunk, static_cast<std::size_t>(n));
+    }
+}
+
+// Waits for the child until the deadline; false = the deadline passed, the child still runs.
+bool reapUntil(pid_t pid, const std::optional<Clock::time_point>& deadline, int& status) {
+    for (;;) {
+        pid_t done = ::waitpid(pid, &status, WNOHANG);
+        if (done == pid) return true;
+        if (done < 0 && errno != EINTR)
+            throw std::runtime_error(std::string("worker: waitpid: ") + std::strerror(errno));
+        if (deadline && Clock::now() >= *deadline) return false;
+        ::usleep(1000);
+    }
+}
+
+void killGroup(pid_t pid) {
+    ::kill(-pid, SIGKILL);
+    ::kill(pid, SIGKILL);
+}
+
+std::string signalName(int sig) {
+    switch (sig) {
+        case SIGSEGV:
+            return "SIGSEGV";
+        case SIGABRT:
+            return "SIGABRT";
+        case SIGBUS:
+            return "SIGBUS";
+        case SIGFPE:
+            return "SIGFPE";
+        case SIGILL:
+            return "SIGILL";
+        case SIGKILL:
+            return "SIGKILL";
+        case SIGTERM:
+            return "SIGTERM";
+        case SIGXCPU:
+            return "SIGXCPU";
+        case SIGXFSZ:
+            return "SIGXFSZ";
+        case SIGTRAP:
+            return "SIGTRAP";
+        case SIGSYS:
+            return "SIGSYS";
+        default:
+            return "signal " + std::to_string(sig);
+    }
+}
+
+std::string limitSeconds(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g s", s);
+    return text;
+}
+
+}  // namespace
+
+std::string WorkerOutcome::detail() const {
+    switch (kind) {
+        case Kind::Ok:
+            return "finished";
+        case Kind::Timeout:
+            return signal == SIGXCPU ? "used up its CPU time" : "ran out of time";
+        case Kind::Crash:
+            return outOfMemory ? "ran out of memory" : "killed by " + signalName(signal);
+        case Kind::Failed:
+            return "exited with code " + std::to_string(exitCode) + " without a result";
+    }
+    return "";
+}
+
+std::string timeLimitText(const Limits& limits) {
+    return limits.seconds > 0 ? limitSeconds(limits.seconds) : "no time limit";
+}
+
+std::string memoryLimitText(const Limits& limits) {
+    return limits.memoryMb > 0 ? std::to_string(limits.memoryMb) + " MB" : "no memory limit";
+}
+
+std::string workerFailureLine(const std::string& what, const WorkerOutcome& o,
+                              const Limits& limits) {
+    const std::string memory =
+        "the memory limit is " + memoryLimitText(limits) + " (--memory-limit)";
+    switch (o.kind) {
+        case WorkerOutcome::Kind::Ok:
+            return what + ": finished";
+        case WorkerOutcome::Kind::Timeout:
+            return what + ": no result within the time limit of " + timeLimitText(limits) +
+                   " (--time-limit)" + (o.signal == SIGXCPU ? ": its CPU time ran out" : "");
+        case WorkerOutcome::Kind::Crash:
+            if (o.outOfMemory)
+                return what + ": ran out of memory within the memory limit of " +
+                       memoryLimitText(limits) + " (--memory-limit)";
+            return what + ": its worker was killed by " + signalName(o.signal) +
+                   " (a crash in the shader compiler or driver, or memory exhausted; " + memory +
+                   ")";
+        case WorkerOutcome::Kind::Failed:
+            return what + ": its worker " + o.detail() + " (" + memory + ")";
+    }
+    return what;
+}
+
+namespace {
+
+// A running worker: its process (own group) and the parent's end of its pipe.
+class Worker {
+  public:
+    Worker(const Limits& limits, const SeriesJob& job, std::size_t first, std::size_t count) {
+        std::cout.flush();  // else the child inherits unwritten output and writes it twice
+        std::cerr.flush();
+        std::fflush(nullptr);
+        int fds[2];
+        if (::pipe2(fds, O_CLOEXEC) != 0)
+            throw std::runtime_error(std::string("worker: pipe: ") + std::strerror(errno));
+        const pid_t parent = ::getpid();
+        pid_ = ::fork();
+        if (pid_ < 0) {
+            int err = errno;
+            ::close(fds[0]);
+            ::close(fds[1]);
+            throw std::runtime_error(std::string("worker: fork: ") + std::strerror(err));
+        }
+        if (pid_ == 0) {
+            ::close(fds[0]);
+            runChild(limits, job, first, count, fds[1], parent);
+        }
+        ::setpgid(pid_, pid_);  // as the child does: whichever runs first
+        ::close(fds[1]);
+        fd_ = fds[0];
+    }
+    Worker(const Worker&) = delete;
+    Worker& operator=(const Worker&) = delete;
+    ~Worker() {  // killed and reaped unless finish() reaped it
+        if (pid_ > 0) {
+            killGroup(pid_);
+            int status;
+            while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+            }
+        }
+        if (fd_ >= 0) ::close(fd_);
+    }
+    Read next(const std::optional<Clock::time_point>& deadline, std::string& line) {
+        return nextLine(fd_, buffer_, deadline, line);
+    }
+    // Reaps the child, killing it at the deadline; returns its wait status and whether it had
+    // to be killed.
+    int finish(const std::optional<Clock::time_point>& deadline, bool& killed) {
+        int status = 0;
+        killed = !reapUntil(pid_, deadline, status);
+        if (killed) {
+            killGroup(pid_);
+            while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+            }
+        }
+        pid_ = -1;
+        return status;
+    }
+
+  private:
+    pid_t pid_ = -1;
+    int fd_ = -1;
+    std::string buffer_;
+};
+
+std::optional<Clock::time_point> deadlineFrom(const Clock::time_point& start,
+                                              const Limits& limits) {
+    if (limits.seconds <= 0) return std::nullopt;
+    return start + std::chrono::duration_cast<Clock::duration>(
+                       std::chrono::duration<double>(limits.seconds));
+}
+
+// How a worker that ended without a line for its job ended.
+WorkerOutcome endedWithout(int status, bool killed) {
+    WorkerOutcome out;
+    if (killed) {
+        out.kind = WorkerOutcome::Kind::Timeout;
+    } else if (WIFSIGNALED(status)) {
+        out.signal = WTERMSIG(status);
+        out.kind =
+            out.signal == SIGXCPU ? WorkerOutcome::Kind::Timeout : WorkerOutcome::Kind::Crash;
+    } else {
+        out.kind = WorkerOutcome::Kind::Failed;
+        out.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    return out;
+}
+
+}  // namespace
+
+void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& job,
+                      const std::function<void(std::size_t, const WorkerOutcome&)>& done) {
+    std::size_t k = 0;
+    while (k < count) {
+        Worker worker(limits, job, k, count);
+        auto since = Clock::now();
+        for (;;) {
+            std::string line;
+            Read read = worker.next(deadlineFrom(since, limits), line);
+            WorkerOutcome out;
+            if (read == Read::Line) {
+                nlohmann::json message = nlohmann::json::parse(line, nullptr, false);
+                if (message.is_object() && message.contains("error"))
+                    rethrowCarried(message["error"]);  // ~Worker ends the child
+                if (message.is_object() && message.contains("ok")) {
+                    out.value = std::move(message["ok"]);
+                } else {
+                    out.kind = WorkerOutcome::Kind::Crash;
+                    out.outOfMemory = message.is_object() && message.contains("oom");
+                }
+            } else if (read == Read::Deadline) {
+                out.kind = WorkerOutcome::Kind::Timeout;  // ~Worker kills it
+            } else {
+                bool killed = false;
+                int status = worker.finish(deadlineFrom(Clock::now(), limits), killed);
+                out = endedWithout(status, killed);
+            }
+            out.seconds = std::chrono::duration<double>(Clock::now() - since).count();
+            since = Clock::now();
+            bool goOn = out.kind == WorkerOutcome::Kind::Ok;
+            if (done) done(k, out);
+            ++k;
+            if (!goOn) break;  // a fresh worker for the jobs after this one
+            if (k == count) {
+                bool killed = false;
+                worker.finish(deadlineFrom(Clock::now(), limits), killed);
+                break;
+            }
+        }
+    }
+}
+
+WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::json()>& job) {
+    WorkerOutcome outcome;
+    runBoundedSeries(
+        limits, 1, [&](std::size_t) { return job(); },
+        [&](std::size_t, const WorkerOutcome& o) { outcome = o; });
+    return outcome;
+}
+
+}  // namespace sl

@@ -1,0 +1,62 @@
+// A job run in a child process with a wall-clock, CPU and address-space limit. Mesa compiles a
+// shader without ever checking a clock, and a crash in the driver kills its process: so the GL
+// work of an untrusted submission runs in a worker, and the parent (which never creates a GL
+// context) always survives to write the report.
+#pragma once
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace sl {
+
+struct Limits {
+    double seconds = 30;   // wall clock of one worker; 0 = none
+    long memoryMb = 2048;  // address space (RLIMIT_AS) of one worker; 0 = none
+};
+
+// How a worker ended. Ok carries the job's value. The job's exceptions are not outcomes: they
+// are thrown again in the parent with their type (UsageError, SceneError, ShaderError,
+// ExpectationError, std::invalid_argument, else std::runtime_error), so the exit codes stay
+// what they would be without the worker.
+struct WorkerOutcome {
+    enum class Kind {
+        Ok,
+        Timeout,  // past the wall-clock limit (killed) or the CPU limit (SIGXCPU)
+        Crash,    // killed by a signal, or out of memory (std::bad_alloc under the limit)
+        Failed,   // exited without a result (exit code in `exitCode`)
+    };
+    Kind kind = Kind::Ok;
+    nlohmann::json value;
+    int signal = 0;    // Crash by a signal
+    int exitCode = 0;  // Failed
+    bool outOfMemory = false;
+    double seconds = 0;
+    // "killed by SIGSEGV", "ran out of memory", "exited with code 1 without a result", ...
+    std::string detail() const;
+};
+
+// Forks, and in the child applies the limits, runs `job`, sends its value back through a pipe
+// and _exits; the parent waits up to the time limit, then kills the child's process group.
+// Flushes stdout and stderr before forking (the child prints to the same ones).
+WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::json()>& job);
+
+// job(0) ... job(count - 1) in order, each under the limits of one job, in as few workers as
+// may be: one worker runs them one after the other and sends each value back as it finishes,
+// so what a job sets up in the worker (a GL context) serves the next, and the time limit starts
+// again with each job. A job that runs out of time or ends its worker gets that outcome and a
+// fresh worker goes on with the next. `done(k, outcome)` is called for each, in order.
+using SeriesJob = std::function<nlohmann::json(std::size_t)>;
+void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& job,
+                      const std::function<void(std::size_t, const WorkerOutcome&)>& done);
+
+// "30 s" or "no time limit"; "2048 MB" or "no memory limit".
+std::string timeLimitText(const Limits& limits);
+std::string memoryLimitText(const Limits& limits);
+
+// The one line for a worker that did not return, naming `what` ("stage margin (core)") and the
+// limit concerned: "stage margin (core): no result within the time limit of 5 s (--time-limit)".
+std::string workerFailureLine(const std::string& what, const WorkerOutcome& outcome,
+                              const Limits& limits);
+
+}  // namespace sl

@@ -1,0 +1,155 @@
+// The bounded worker: a value comes back, the job's exceptions come back with their type, and a
+// job that hangs, crashes, runs out of memory or exits is reported as such within its limits.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <vector>
+
+#include "app/worker.h"
+#include "gl/shader_library.h"
+#include "render/request.h"
+#include "scene/scene_json.h"
+
+namespace sl {
+namespace {
+
+TEST(Worker, ReturnsTheJobsValue) {
+    WorkerOutcome o = runBounded({5, 512}, [] {
+        return nlohmann::json{{"pid", ::getpid()}, {"text", std::string(200000, 'x')}};
+    });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Ok) << o.detail();
+    EXPECT_NE(o.value["pid"].get<int>(), ::getpid());               // it ran in another process
+    EXPECT_EQ(o.value["text"].get<std::string>().size(), 200000u);  // more than a pipe holds
+}
+
+TEST(Worker, BytesThatAreNotUtf8ComeBackReplaced) {
+    WorkerOutcome o = runBounded({5, 512}, [] { return nlohmann::json("bad \xff byte"); });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Ok);
+    EXPECT_EQ(o.value.get<std::string>(), "bad \xEF\xBF\xBD byte");
+}
+
+TEST(Worker, TheJobsExceptionsKeepTheirType) {
+    EXPECT_THROW(runBounded({5, 512}, []() -> nlohmann::json { throw UsageError("bad"); }),
+                 UsageError);
+    EXPECT_THROW(runBounded({5, 512}, []() -> nlohmann::json { throw ShaderError("x"); }),
+                 ShaderError);
+    EXPECT_THROW(runBounded({5, 512}, []() -> nlohmann::json { throw SceneError("x"); }),
+                 SceneError);
+    try {
+        runBounded({5, 512}, []() -> nlohmann::json { throw std::runtime_error("gl broke"); });
+        FAIL() << "no exception";
+    } catch (const UsageError&) {
+        FAIL() << "a GL failure became bad input";
+    } catch (const std::runtime_error& e) {
+        EXPECT_STREQ(e.what(), "gl broke");
+    }
+}
+
+TEST(Worker, AJobPastTheTimeLimitIsKilledInTime) {
+    auto start = std::chrono::steady_clock::now();
+    WorkerOutcome o = runBounded({0.5, 512}, [] {
+        for (;;) ::pause();
+        return nlohmann::json();
+    });
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(o.kind, WorkerOutcome::Kind::Timeout);
+    EXPECT_GE(seconds, 0.5);
+    EXPECT_LT(seconds, 2.0);
+    std::string line = workerFailureLine("stage x (core)", o, {0.5, 512});
+    EXPECT_NE(line.find("stage x (core): no result within the time limit of 0.5 s"),
+              std::string::npos)
+        << line;
+}
+
+TEST(Worker, ACrashIsReportedWithItsSignal) {
+    WorkerOutcome o = runBounded({5, 512}, []() -> nlohmann::json {
+        ::raise(SIGSEGV);
+        return nullptr;
+    });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Crash);
+    EXPECT_EQ(o.signal, SIGSEGV);
+    EXPECT_EQ(o.detail(), "killed by SIGSEGV");
+    std::string line = workerFailureLine("stage x (core)", o, {5, 512});
+    EXPECT_NE(line.find("killed by SIGSEGV"), std::string::npos) << line;
+    EXPECT_NE(line.find("512 MB (--memory-limit)"), std::string::npos) << line;
+}
+
+#if !defined(__SANITIZE_ADDRESS__)
+TEST(Worker, MemoryPastTheLimitIsOutOfMemory) {
+    WorkerOutcome o = runBounded({10, 256}, [] {
+        std::vector<std::vector<char>> hog;
+        for (int k = 0; k < 64; ++k) hog.emplace_back(64u << 20, 'x');  // 4 GB in 64 MB steps
+        return nlohmann::json(hog.size());
+    });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Crash) << o.detail();
+    EXPECT_TRUE(o.outOfMemory);
+    EXPECT_EQ(workerFailureLine("stage x (core)", o, {10, 256}),
+              "stage x (core): ran out of memory within the memory limit of 256 MB "
+              "(--memory-limit)");
+}
+#endif
+
+TEST(Worker, AJobThatExitsHasNoResult) {
+    WorkerOutcome o = runBounded({5, 512}, []() -> nlohmann::json { ::_exit(7); });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Failed);
+    EXPECT_EQ(o.exitCode, 7);
+}
+
+TEST(Worker, ASeriesSharesItsWorkerUntilAJobFails) {
+    std::vector<WorkerOutcome> outcomes;
+    auto start = std::chrono::steady_clock::now();
+    runBoundedSeries(
+        {0.5, 512}, 6,
+        [](std::size_t k) -> nlohmann::json {
+            if (k == 2)
+                for (;;) ::pause();  // past the time limit
+            if (k == 3) ::raise(SIGABRT);
+            if (k == 1 || k == 5) ::usleep(300000);  // each job's own limit, not the series'
+            return ::getpid();
+        },
+        [&](std::size_t k, const WorkerOutcome& o) {
+            EXPECT_EQ(k, outcomes.size());
+            outcomes.push_back(o);
+        });
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(outcomes.size(), 6u);
+    EXPECT_EQ(outcomes[0].kind, WorkerOutcome::Kind::Ok);
+    EXPECT_EQ(outcomes[1].kind, WorkerOutcome::Kind::Ok);
+    EXPECT_EQ(outcomes[0].value, outcomes[1].value);  // one worker for both
+    EXPECT_EQ(outcomes[2].kind, WorkerOutcome::Kind::Timeout);
+    EXPECT_EQ(outcomes[3].kind, WorkerOutcome::Kind::Crash);
+    EXPECT_EQ(outcomes[3].signal, SIGABRT);
+    EXPECT_EQ(outcomes[4].kind, WorkerOutcome::Kind::Ok);
+    EXPECT_EQ(outcomes[5].kind, WorkerOutcome::Kind::Ok);
+    EXPECT_NE(outcomes[4].value, outcomes[0].value);  // a fresh worker after each failure
+    EXPECT_EQ(outcomes[4].value, outcomes[5].value);
+    EXPECT_LT(seconds, 3.0);
+}
+
+TEST(Worker, AnExceptionInASeriesStopsIt) {
+    std::size_t calls = 0;
+    EXPECT_THROW(runBoundedSeries(
+                     {5, 512}, 3,
+                     [](std::size_t k) -> nlohmann::json {
+                         if (k == 1) throw UsageError("bad");
+                         return k;
+                     },
+                     [&](std::size_t, const WorkerOutcome&) { ++calls; }),
+                 UsageError);
+    EXPECT_EQ(calls, 1u);
+}
+
+TEST(Worker, NoLimitsMeansNone) {
+    WorkerOutcome o = runBounded({0, 0}, [] { return nlohmann::json(42); });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Ok);
+    EXPECT_EQ(o.value.get<int>(), 42);
+    EXPECT_EQ(timeLimitText({0, 0}), "no time limit");
+    EXPECT_EQ(memoryLimitText({0, 0}), "no memory limit");
+}
+
+}  // namespace
+}  // namespace sl
