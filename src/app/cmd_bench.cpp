@@ -57,6 +57,11 @@ std::vector<BenchConfig> plan(bool quick, GlslTree tree) {
         {"hardware/linear", "hardware", {}},
         {"hardware/nearest", "hardware", {{"filter", "nearest"}}},
         {"fixed", "fixed", {}},
+        {"hardware/pcf3x3", "hardware", {{"filter", "pcf3x3"}}},
+        // The tutorials' methods (stage peers), on the same axes as ours.
+        {"peers/learnopengl", "peers", {{"method", "learnopengl"}}},
+        {"peers/opengl-tutorial", "peers", {{"method", "opengl-tutorial"}}},
+        {"peers/normal-offset", "peers", {{"method", "normal-offset"}}},
     };
     for (const Variant& v : variants)
         for (int size : mapSizes) {

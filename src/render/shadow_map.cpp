@@ -21,7 +21,8 @@ bool ShadowMapSettings::operator==(const ShadowMapSettings& o) const {
     return storage == o.storage && size == o.size && fit == o.fit && castersOnly == o.castersOnly &&
            farOverNear == o.farOverNear && offsetFactor == o.offsetFactor &&
            offsetUnits == o.offsetUnits && cullFront == o.cullFront && cullBack == o.cullBack &&
-           depthFlipped == o.depthFlipped && compare == o.compare && linear == o.linear;
+           depthFlipped == o.depthFlipped && compare == o.compare && linear == o.linear &&
+           everyFrame == o.everyFrame;
 }
 
 std::size_t ShadowMap::bytes() const {
@@ -124,7 +125,7 @@ void ShadowMap::update(FrameContext& f, const ShadowMapSettings& s, Program& pro
                       s.compare != settings_.compare || s.linear != settings_.linear;
     if (reallocate) allocate(s);
     settings_ = s;
-    bool stale = reallocate || f.lightPosition != renderedLight_ || f.sceneGeneration != renderedScene_ ||
+    bool stale = reallocate || s.everyFrame || f.lightPosition != renderedLight_ || f.sceneGeneration != renderedScene_ ||
                  f.allLit != renderedAllLit_ || program.id() != renderedProgram_ || s != renderedSettings_;
     if (!stale) return;
 
