@@ -15,11 +15,10 @@ struct Measured {
     std::string scene;
     PassTimes still, moving;
     PassTimes phongStill, phongMoving;  // phong measured in blocks alternating with this one
+    RatioSummary ratioStill, ratioMoving;  // per-block ratios to phong (median, spread)
     Accuracy accuracy;
-    double ratio(bool movingLight) const {
-        return movingLight ? moving.frame.median / phongMoving.frame.median
-                           : still.frame.median / phongStill.frame.median;
-    }
+    const RatioSummary& ratios(bool movingLight) const { return movingLight ? ratioMoving : ratioStill; }
+    double ratio(bool movingLight) const { return ratios(movingLight).median; }
 };
 
 // "tree/scene/WxH": configurations with the same key share a context and a phong baseline.
