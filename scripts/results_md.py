@@ -86,6 +86,22 @@ def main():
                        ratio(r), ratio(moving)])
     out.append(table(["stage", "tree", "error %", "false shadow %", "false lit %", "edge p95 px",
                       "mirror id %", "still ms", "moving ms", "x phong still", "x phong moving"], rs))
+    counted = [r for r in rows if r.get("instructions_per_frame") is not None and r["group"] != "map-size"]
+    if counted:
+        out.append("\n**Instructions per frame** (`bench --instructions`: valgrind's callgrind, "
+                   "`LP_NUM_THREADS=0`, counted over the steady frames only; they repeat to a "
+                   "fraction of a percent where milliseconds do not):\n")
+        irows = []
+        for r in counted:
+            if r["light"] != "still":
+                continue
+            moving = next(m for m in counted if m["light"] == "moving" and m["group"] == r["group"]
+                          and m["series"] == r["series"] and m["scene"] == r["scene"] and m["tree"] == r["tree"])
+            irows.append([r["stage"], r["tree"], r["scene"], r["instructions_per_frame"] / 1e6,
+                          r["instructions_ratio_to_phong"], moving["instructions_per_frame"] / 1e6,
+                          moving["instructions_ratio_to_phong"]])
+        out.append(table(["stage", "tree", "scene", "M instr still", "x phong still", "M instr moving",
+                          "x phong moving"], irows))
     out.append("\nerror % = (false shadow % + false lit %) / 2 outside the 1-pixel edge band "
                "(mirror: 100 - object-id agreement inside the mirror). `phong` has no shadows, so "
                "every true shadow is false lit: 50 %. `bias` keeps the slides' -0.5 under the "
@@ -106,7 +122,10 @@ def main():
     out.append("")
 
     out.append("## Charts\n")
-    for png, caption in [("error-vs-time.png", "Error against frame time, each method's Pareto front as a line"),
+    charts = [("error-vs-time.png", "Error against frame time, each method's Pareto front as a line")]
+    if os.path.exists(os.path.join(root, "bench", "error-vs-instructions.png")):
+        charts.append(("error-vs-instructions.png", "Error against instructions per frame (callgrind)"))
+    for png, caption in charts + [
                          ("time-vs-map-size.png", "Frame time against map size, light moving (map re-rendered every frame)"),
                          ("time-vs-window.png", "Frame time against window size, still light")]:
         out.append(f"**{caption}**\n\n![{caption}]({rel}/bench/{png})\n")

@@ -14,3 +14,8 @@ endforeach()
 add_test(NAME sweep_unknown_axis
          COMMAND sh -c "$<TARGET_FILE:shadowlab> sweep elevaton --out ${SL_BENCH_DIR} 2>&1; test $? -eq 2" )
 set_tests_properties(sweep_unknown_axis PROPERTIES LABELS bench PASS_REGULAR_EXPRESSION "did you mean 'elevation'")
+# `bench --instructions`: the child under callgrind counts every 640x480 row (phong included),
+# so instructions per frame and their ratio to phong are numbers on every row.
+add_test(NAME bench_instructions
+         COMMAND sh -c "$<TARGET_FILE:shadowlab> bench --quick --frames 2 --only hardware/nearest --instructions --out ${SL_BENCH_DIR}/instructions && python3 ${SL_CHECK_CSV} ${SL_BENCH_DIR}/instructions/bench.csv 6 instructions_per_frame instructions_ratio_to_phong && test -s ${SL_BENCH_DIR}/instructions/error-vs-instructions.png")
+set_tests_properties(bench_instructions PROPERTIES LABELS bench TIMEOUT 900)

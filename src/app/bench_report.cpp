@@ -41,6 +41,8 @@ const std::vector<std::string> kColumns = {"group",
                                            "ratio_iqr",
                                            "ratio_blocks",
                                            "ratio_trusted",
+                                           "instructions_per_frame",
+                                           "instructions_ratio_to_phong",
                                            "false_shadow_pct",
                                            "false_lit_pct",
                                            "false_shadow_band_pct",
@@ -101,6 +103,8 @@ std::vector<std::string> cells(const Row& r) {
             num(r.ratio.iqr()),
             std::to_string(r.ratio.blocks),
             r.ratio.trusted() ? "yes" : "no",
+            num(r.moving ? r.m->instructions.moving : r.m->instructions.still, 6),
+            num(r.moving ? r.m->instructions.ratioMoving : r.m->instructions.ratioStill),
             num(a.falseShadowPct),
             num(a.falseLitPct),
             num(a.falseShadowBandPct),
@@ -130,7 +134,7 @@ nlohmann::json rowJson(const std::vector<std::string>& cell) {
     return j;
 }
 
-std::string chartScript(const std::string& machine) {
+std::string chartScript(const std::string& machine, bool instructions) {
     std::ostringstream g;
     g << "# Regenerate the charts from the .dat files beside this script: gnuplot charts.gp\n"
       << "set terminal pngcairo size 960,640 font 'sans,10'\n"
@@ -152,6 +156,18 @@ std::string chartScript(const std::string& machine) {
          "lc i+1 title columnheader(1), \\\n"
       << "     for [i=0:*] 'pareto.dat' index i using 1:(shown($2)) with lines lw 2 lc i+1 "
          "notitle\n"
+      << (instructions
+              ? "set output 'error-vs-instructions.png.tmp'\n"
+                "set title \"Error against instructions per frame (640x480, light moving; "
+                "callgrind, LP_NUM_THREADS=0)\\n\".machine\n"
+                "set xlabel 'instructions per frame, millions (deterministic)'\n"
+                "set label 1 \"lines: each method's Pareto front; an error of 0 is drawn at "
+                "0.001\" at graph 0.01, graph 0.03\n"
+                "plot for [i=0:*] 'instructions.dat' index i using 1:(shown($2)) with points pt 7 "
+                "ps 0.8 lc i+1 title columnheader(1), \\\n"
+                "     for [i=0:*] 'instructions-pareto.dat' index i using 1:(shown($2)) with lines "
+                "lw 2 lc i+1 notitle\n"
+              : "")
       << "unset logscale xy\nunset label 1\nset yrange [*:*]\n"
       << "set output 'time-vs-map-size.png.tmp'\n"
       << "set title \"Frame time against shadow-map size (640x480, map re-rendered every "
@@ -210,7 +226,8 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
     // Chart data. Error against time: every 640x480 configuration, moving light, by method.
     std::map<std::string, Series> points;
     std::map<std::string, std::vector<CostError>> costs;
-    std::map<std::string, Series> bySize, byWindow;
+    std::map<std::string, Series> bySize, byWindow, byInstructions;
+    std::map<std::string, std::vector<CostError>> instructionCosts;
     for (const Row& r : rows) {
         const BenchConfig& c = r.m->config;
         std::string fam = family(c.series);
@@ -221,6 +238,13 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
             points[fam].lo.push_back(r.t().frame.p25);
             points[fam].hi.push_back(r.t().frame.p75);
             costs[fam].push_back({r.t().frame.median, r.m->accuracy.errorPct, c.setsText()});
+            double ir = r.m->instructions.moving;
+            if (!std::isnan(ir)) {
+                byInstructions[fam].title = fam;
+                byInstructions[fam].xs.push_back(ir / 1e6);
+                byInstructions[fam].ys.push_back(r.m->accuracy.errorPct);
+                instructionCosts[fam].push_back({ir / 1e6, r.m->accuracy.errorPct, c.setsText()});
+            }
         }
         if (r.moving && c.group == "map-size") {
             bySize[c.series].title = c.series + (c.tree == GlslTree::Legacy ? " (legacy)" : "");
@@ -247,6 +271,16 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
         }
         frontList.push_back(front);
     }
+    std::vector<Series> instructionList, instructionFront;
+    for (auto& [fam, s] : byInstructions) {
+        instructionList.push_back(s);
+        Series front{fam, {}, {}, {}, {}};
+        for (std::size_t k : paretoFront(instructionCosts[fam])) {
+            front.xs.push_back(instructionCosts[fam][k].cost);
+            front.ys.push_back(instructionCosts[fam][k].error);
+        }
+        instructionFront.push_back(front);
+    }
     for (auto& [name, s] : bySize) sizeList.push_back(s);
     for (auto& [name, s] : byWindow) {
         // Baseline rows may repeat a size (one per scene): keep the first of each.
@@ -264,9 +298,14 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
     writeOrThrow(dir + "/pareto.dat", gnuplotBlocks(frontList));
     writeOrThrow(dir + "/map-size.dat", gnuplotBlocks(sizeList));
     writeOrThrow(dir + "/window.dat", gnuplotBlocks(windowList));
+    bool instructions = !instructionList.empty();
+    if (instructions) {
+        writeOrThrow(dir + "/instructions.dat", gnuplotBlocks(instructionList));
+        writeOrThrow(dir + "/instructions-pareto.dat", gnuplotBlocks(instructionFront));
+    }
 
     BenchReport report;
-    report.chartProblem = runGnuplot(dir, dir + "/charts.gp", chartScript(machine));
+    report.chartProblem = runGnuplot(dir, dir + "/charts.gp", chartScript(machine, instructions));
 
     // The summary: each stage at its defaults, 640x480, and the targets.
     std::ostringstream s;
@@ -296,6 +335,20 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
          "spread is over "
       << num(100 * RatioSummary::kMaxRelativeSpread, 2)
       << " % of the ratio, not a figure to quote\n";
+    bool counted = false;
+    for (const Measured& m : results) counted = counted || !std::isnan(m.instructions.still);
+    if (counted) {
+        s << "instructions per frame (callgrind, LP_NUM_THREADS=0; repeatable where ms are not):\n";
+        for (const Measured& m : results) {
+            const BenchConfig& c = m.config;
+            if (std::isnan(m.instructions.still) || c.group == "map-size") continue;
+            std::snprintf(line, sizeof line, "%-18s %-6s %-7s still %8.2f M %5.2fx   moving %8.2f M %5.2fx\n",
+                          c.stage.c_str(), treeName(c.tree), m.scene.c_str(),
+                          m.instructions.still / 1e6, m.instructions.ratioStill,
+                          m.instructions.moving / 1e6, m.instructions.ratioMoving);
+            s << line;
+        }
+    }
     // A target is judged only on a ratio tight enough to quote.
     auto verdict = [](const RatioSummary& r, double target) {
         char t[64];

@@ -4,6 +4,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <sstream>
 
+#if __has_include(<valgrind/callgrind.h>)  // header only: the macros are no-ops outside valgrind
+#include <valgrind/callgrind.h>
+#define SL_HAVE_CALLGRIND 1
+#endif
+
 #include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
 
@@ -109,6 +114,17 @@ PassSamples BenchRig::time(int warmup, int frames, bool movingLight) {
     r.timePasses = false;
     r.lightPosition = home;
     return {frame, shadow, lit, mirror, r.stats.shadowMapRenders - rendersBefore};
+}
+
+void countedFrames(BenchRig& rig, int frames, bool movingLight) {
+#ifdef SL_HAVE_CALLGRIND
+    CALLGRIND_TOGGLE_COLLECT;  // on (the child runs with --collect-atstart=no)
+    rig.time(0, frames, movingLight);
+    CALLGRIND_TOGGLE_COLLECT;             // off
+    CALLGRIND_DUMP_STATS_AT("counted");  // one dump file per call, in call order
+#else
+    rig.time(0, frames, movingLight);
+#endif
 }
 
 Renderer& BenchRig::prepare(const RenderRequest& request) {

@@ -122,4 +122,9 @@ class BenchRig {
     ReferenceImage reference_;
 };
 
+// The frames `bench --instructions` counts under callgrind (metrics/callgrind.h): `frames` frames
+// of the rig's current configuration, collected between two callgrind client requests and
+// dumped to a file of their own (valgrind's header; without it nothing is counted).
+void countedFrames(BenchRig& rig, int frames, bool movingLight);
+
 }  // namespace sl

@@ -2,12 +2,15 @@
 // the same run, with the accuracy figures of the same configuration; CSV, JSON and charts.
 #include <unistd.h>
 
+#include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 
 #include "app/bench_output.h"
 #include "app/bench_report.h"
 #include "app/commands.h"
+#include "metrics/callgrind.h"
 
 namespace sl {
 
@@ -18,9 +21,11 @@ struct BenchArgs {
     std::string glsl = "core";
     std::string backend = "auto";
     bool quick = false;
-    std::string only;            // keep configurations whose series contains this
-    int frames = 0, warmup = 0;  // 0 = the default for the mode
-    int blocks = 0;              // interleaved blocks per configuration; 0 = the mode's default
+    std::string only;                // keep configurations whose series contains this
+    int frames = 0, warmup = 0;      // 0 = the default for the mode
+    int blocks = 0;                  // interleaved blocks per configuration; 0 = the mode's default
+    bool instructions = false;       // also count instructions per frame under callgrind
+    bool instructionsChild = false;  // this process is the one running under callgrind
 };
 
 // The configurations measured, in order. Baselines (phong) come first for each context.
@@ -101,19 +106,9 @@ std::vector<BenchConfig> plan(bool quick, GlslTree tree) {
     return out;
 }
 
-int runBench(const BenchArgs& a) {
-    GlslTree tree = a.glsl == "core" ? GlslTree::Core
-                    : a.glsl == "legacy"
-                        ? GlslTree::Legacy
-                        : throw UsageError("--glsl: '" + a.glsl + "' is not one of core, legacy");
-    Backend backend = toBackend(a.backend);
-    int frames = a.frames > 0 ? a.frames : a.quick ? 3 : 60;
-    int warmup = a.warmup > 0 ? a.warmup : a.quick ? 1 : 3;
-    int blocks = std::min(frames, a.blocks > 0 ? a.blocks : a.quick ? 3 : 15);
-    int framesPerBlock = std::max(1, frames / blocks);
-    makeOutputDir(a.out);
-
-    // Phong at every (tree, scene, size) a configuration uses, measured right before it.
+// What a run measures: the plan, filtered by --only, with phong before the first configuration
+// of every context (tree, scene, size).
+std::vector<BenchConfig> benchConfigs(const BenchArgs& a, GlslTree tree) {
     std::vector<BenchConfig> configs;
     std::map<std::string, bool> baselined;
     for (BenchConfig& c : plan(a.quick, tree)) {
@@ -131,6 +126,88 @@ int runBench(const BenchArgs& a) {
         }
         configs.push_back(c);
     }
+    return configs;
+}
+
+// Which configurations `--instructions` counts: the 640x480 ones the charts and targets use.
+bool countsInstructions(const BenchConfig& c) {
+    return c.width == 640 && c.height == 480 &&
+           (c.group == "baseline" || c.group == "map-size" || c.group == "window");
+}
+
+constexpr int kCountedFrames = 2;  // callgrind's counts repeat: two frames are plenty
+
+// The child under callgrind: every counted configuration, still then moving, each through
+// countedFrames() (one dump each, in this order).
+int runInstructionsChild(const BenchArgs& a, GlslTree tree) {
+    BenchRig rig(toBackend(a.backend));
+    for (const BenchConfig& c : benchConfigs(a, tree)) {
+        if (!countsInstructions(c)) continue;
+        for (bool moving : {false, true}) {
+            rig.prepare(c);
+            rig.time(1, 0, moving);  // uncounted: the stage switch re-creates the map
+            countedFrames(rig, kCountedFrames, moving);
+        }
+    }
+    return kOk;
+}
+
+// Runs this program again under callgrind and fills each counted result's instructions.
+void countInstructions(const BenchArgs& a, std::vector<Measured>& results) {
+    if (std::system("command -v valgrind >/dev/null 2>&1") != 0)
+        throw UsageError("--instructions needs valgrind (apt-get install valgrind)");
+    std::string dir = a.out + "/callgrind";
+    makeOutputDir(dir);
+    std::string out = dir + "/frames.out";
+    std::system(("rm -f " + shellQuote(out) + "*").c_str());
+    std::string args = "bench --instructions-child --out " + shellQuote(a.out) + " --glsl " +
+                       shellQuote(a.glsl) + " --backend " + shellQuote(a.backend) +
+                       (a.quick ? " --quick" : "") + " --only " + shellQuote(a.only);
+    char exe[4096] = {0};
+    ssize_t length = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    std::string self = length > 0 ? std::string(exe, length) : "/proc/self/exe";
+    std::string command =
+        callgrindCommand(self, out, args) + " >" + shellQuote(dir + "/valgrind.log") + " 2>&1";
+    std::fprintf(stderr, "counting instructions under callgrind (log: %s/valgrind.log)...\n",
+                 dir.c_str());
+    if (std::system(command.c_str()) != 0)
+        throw std::runtime_error("--instructions: the run under callgrind failed; see " + dir +
+                                 "/valgrind.log");
+    int dump = 0;
+    auto next = [&]() {
+        std::ifstream f(out + "." + std::to_string(++dump));
+        std::stringstream text;
+        text << f.rdbuf();
+        return instructionsPerFrame(parseCallgrindTotal(text.str()), kCountedFrames);
+    };
+    std::map<std::string, const Measured*> phong;
+    for (Measured& m : results) {
+        if (!countsInstructions(m.config)) continue;
+        m.instructions.still = next();
+        m.instructions.moving = next();
+        if (m.config.group == "baseline") phong[contextKey(m.config, m.scene)] = &m;
+    }
+    for (Measured& m : results) {
+        auto base = phong.find(contextKey(m.config, m.scene));
+        if (base == phong.end()) continue;
+        m.instructions.ratioStill = m.instructions.still / base->second->instructions.still;
+        m.instructions.ratioMoving = m.instructions.moving / base->second->instructions.moving;
+    }
+}
+
+int runBench(const BenchArgs& a) {
+    GlslTree tree = a.glsl == "core" ? GlslTree::Core
+                    : a.glsl == "legacy"
+                        ? GlslTree::Legacy
+                        : throw UsageError("--glsl: '" + a.glsl + "' is not one of core, legacy");
+    Backend backend = toBackend(a.backend);
+    if (a.instructionsChild) return runInstructionsChild(a, tree);
+    int frames = a.frames > 0 ? a.frames : a.quick ? 3 : 60;
+    int warmup = a.warmup > 0 ? a.warmup : a.quick ? 1 : 3;
+    int blocks = std::min(frames, a.blocks > 0 ? a.blocks : a.quick ? 3 : 15);
+    int framesPerBlock = std::max(1, frames / blocks);
+    makeOutputDir(a.out);
+    std::vector<BenchConfig> configs = benchConfigs(a, tree);
 
     BenchRig rig(backend);
     std::vector<Measured> results;
@@ -173,6 +250,7 @@ int runBench(const BenchArgs& a) {
                      num(m.accuracy.errorPct, 3).c_str(), tty ? "\033[K" : "\n");
     }
     if (tty) std::fprintf(stderr, "\n");
+    if (a.instructions) countInstructions(a, results);
     BenchReport report = writeBenchReport(a.out, machine, results);
     std::cout << report.summary;
     if (!report.chartProblem.empty()) std::cerr << "shadowlab: " << report.chartProblem << "\n";
@@ -196,6 +274,12 @@ Command addBenchCommand(CLI::App& app) {
                     "interleaved blocks (ABBA against phong) the frames are split into; the "
                     "ratio is the median of the per-block ratios (default 15; quick 3)")
         ->check(CLI::Range(1, 1000));
+    cmd->add_flag("--instructions", args->instructions,
+                  "also count instructions per frame (640x480 configurations) under valgrind's "
+                  "callgrind: slow, but repeatable on a loaded machine");
+    cmd->add_flag("--instructions-child", args->instructionsChild,
+                  "internal: the run under callgrind that --instructions starts")
+        ->group("");
     cmd->add_option("--warmup", args->warmup, "untimed frames first (default 3; quick 1)")
         ->check(CLI::Range(1, 1000));
     cmd->add_option("--only", args->only,
