@@ -121,6 +121,25 @@ def main():
     out.append(table(["configuration", "ms/frame", "x phong", "target", "verdict"], trs))
     out.append("")
 
+    equal = bench.get("equal_accuracy", [])
+    if equal:
+        out.append("## Cost at equal accuracy (edge p95 <= 2 px, error <= 0.1 %)\n")
+        out.append("Per method the cheapest configuration (map size, light fit) that reaches the bar "
+                   "on the lecture scene, or, marked *not reached*, the one that came closest. "
+                   "See [bench.md](bench.md).\n")
+        def rq(value, iqr, trusted):
+            if value is None:
+                return "-"
+            return f"{value:.2f} ± {iqr / 2:.2f}" if trusted else f"not quoted (spread {100 * iqr / value:.0f} %)"
+        erows = [[e["method"], "yes" if e["reached"] else "*not reached*", e["settings"], e["edge_p95_px"],
+                  e["error_pct"], rq(e["ratio_still"], e["ratio_still_iqr"], e["ratio_still_trusted"]),
+                  rq(e["ratio_moving"], e["ratio_moving_iqr"], e["ratio_moving_trusted"]),
+                  "-" if e["instructions_moving"] is None else f"{e['instructions_moving'] / 1e6:.1f} M "
+                  f"({e['instructions_ratio_moving']:.2f}x)"] for e in equal]
+        out.append(table(["method", "reached", "configuration", "edge p95 px", "error %", "x phong still",
+                          "x phong moving", "instr/frame moving"], erows))
+        out.append("")
+
     out.append("## Charts\n")
     charts = [("error-vs-time.png", "Error against frame time, each method's Pareto front as a line")]
     if os.path.exists(os.path.join(root, "bench", "error-vs-instructions.png")):

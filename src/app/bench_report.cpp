@@ -220,6 +220,31 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
             table.add(cells(r));
             json["rows"].push_back(rowJson(table.rows.back()));
         }
+    // The equal-accuracy group on its own: per method, the cheapest configuration reaching the bar
+    // (or the closest one, marked unreached) and its cost.
+    json["equal_accuracy"] = nlohmann::json::array();
+    for (const Measured& m : results) {
+        if (m.config.group.rfind("equal-accuracy", 0) != 0) continue;
+        auto number = [](double v) {
+            return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v);
+        };
+        json["equal_accuracy"].push_back(
+            {{"method", m.config.series},
+             {"reached", m.config.group == "equal-accuracy"},
+             {"settings", m.config.setsText()},
+             {"edge_p95_px", number(m.accuracy.edgeP95Px)},
+             {"error_pct", number(m.accuracy.errorPct)},
+             {"ratio_still", number(m.ratioStill.median)},
+             {"ratio_still_iqr", number(m.ratioStill.iqr())},
+             {"ratio_still_trusted", m.ratioStill.trusted()},
+             {"ratio_moving", number(m.ratioMoving.median)},
+             {"ratio_moving_iqr", number(m.ratioMoving.iqr())},
+             {"ratio_moving_trusted", m.ratioMoving.trusted()},
+             {"instructions_still", number(m.instructions.still)},
+             {"instructions_moving", number(m.instructions.moving)},
+             {"instructions_ratio_still", number(m.instructions.ratioStill)},
+             {"instructions_ratio_moving", number(m.instructions.ratioMoving)}});
+    }
     writeOrThrow(dir + "/bench.csv", table.csv());
     writeOrThrow(dir + "/bench.json", json.dump(1) + "\n");
 
@@ -342,12 +367,32 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
         for (const Measured& m : results) {
             const BenchConfig& c = m.config;
             if (std::isnan(m.instructions.still) || c.group == "map-size") continue;
-            std::snprintf(line, sizeof line, "%-18s %-6s %-7s still %8.2f M %5.2fx   moving %8.2f M %5.2fx\n",
-                          c.stage.c_str(), treeName(c.tree), m.scene.c_str(),
-                          m.instructions.still / 1e6, m.instructions.ratioStill,
-                          m.instructions.moving / 1e6, m.instructions.ratioMoving);
+            std::snprintf(
+                line, sizeof line, "%-18s %-6s %-7s still %8.2f M %5.2fx   moving %8.2f M %5.2fx\n",
+                c.stage.c_str(), treeName(c.tree), m.scene.c_str(), m.instructions.still / 1e6,
+                m.instructions.ratioStill, m.instructions.moving / 1e6, m.instructions.ratioMoving);
             s << line;
         }
+    }
+    bool equal = false;
+    for (const Measured& m : results) {
+        if (m.config.group.rfind("equal-accuracy", 0) != 0) continue;
+        if (!equal)
+            s << "cost at equal accuracy (edge p95 <= 2 px, error <= 0.1 %; cheapest by the "
+                 "moving-light ratio):\n";
+        equal = true;
+        bool reached = m.config.group == "equal-accuracy";
+        std::snprintf(
+            line, sizeof line,
+            "%-22s %-9s %-40s edge %6s px error %7s %%  x phong still %s moving %s%s\n",
+            m.config.series.c_str(), reached ? "reached" : "NOT", m.config.setsText().c_str(),
+            num(m.accuracy.edgeP95Px, 3).c_str(), num(m.accuracy.errorPct, 3).c_str(),
+            ratioText(m.ratioStill).c_str(), ratioText(m.ratioMoving).c_str(),
+            std::isnan(m.instructions.moving) ? ""
+                                              : ("  instr " + num(m.instructions.ratioStill, 3) +
+                                                 "x / " + num(m.instructions.ratioMoving, 3) + "x")
+                                                    .c_str());
+        s << line;
     }
     // A target is judged only on a ratio tight enough to quote.
     auto verdict = [](const RatioSummary& r, double target) {

@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "app/bench_equal.h"
 #include "app/bench_output.h"
 #include "app/bench_report.h"
 #include "app/commands.h"
@@ -21,11 +22,12 @@ struct BenchArgs {
     std::string glsl = "core";
     std::string backend = "auto";
     bool quick = false;
-    std::string only;                // keep configurations whose series contains this
-    int frames = 0, warmup = 0;      // 0 = the default for the mode
-    int blocks = 0;                  // interleaved blocks per configuration; 0 = the mode's default
-    bool instructions = false;       // also count instructions per frame under callgrind
-    bool instructionsChild = false;  // this process is the one running under callgrind
+    std::string only;               // keep configurations whose series contains this
+    int frames = 0, warmup = 0;     // 0 = the default for the mode
+    int blocks = 0;                 // interleaved blocks per configuration; 0 = the mode's default
+    bool instructions = false;      // also count instructions per frame under callgrind
+    std::string instructionsChild;  // set: this process runs under callgrind, counting this plan
+    bool equalAccuracy = false;     // the equal-accuracy search (always in a full run)
 };
 
 // The configurations measured, in order. Baselines (phong) come first for each context.
@@ -132,17 +134,49 @@ std::vector<BenchConfig> benchConfigs(const BenchArgs& a, GlslTree tree) {
 // Which configurations `--instructions` counts: the 640x480 ones the charts and targets use.
 bool countsInstructions(const BenchConfig& c) {
     return c.width == 640 && c.height == 480 &&
-           (c.group == "baseline" || c.group == "map-size" || c.group == "window");
+           (c.group == "baseline" || c.group == "map-size" || c.group == "window" ||
+            c.group.rfind("equal-accuracy", 0) == 0);
 }
 
 constexpr int kCountedFrames = 2;  // callgrind's counts repeat: two frames are plenty
 
-// The child under callgrind: every counted configuration, still then moving, each through
-// countedFrames() (one dump each, in this order).
-int runInstructionsChild(const BenchArgs& a, GlslTree tree) {
+// The plan the child counts, one configuration a line: stage, tree, scene, width, height and
+// the settings, tab-separated (the settings as NAME=VALUE separated by spaces).
+std::string planLine(const BenchConfig& c) {
+    std::string sets;
+    for (const auto& [name, value] : c.sets) sets += (sets.empty() ? "" : " ") + name + "=" + value;
+    return c.stage + "\t" + treeName(c.tree) + "\t" + c.sceneName() + "\t" +
+           std::to_string(c.width) + "\t" + std::to_string(c.height) + "\t" + sets + "\n";
+}
+
+BenchConfig parsePlanLine(const std::string& line) {
+    std::vector<std::string> field;
+    std::istringstream in(line);
+    for (std::string f; std::getline(in, f, '\t');) field.push_back(f);
+    if (field.size() < 5) throw UsageError("--instructions-child: bad plan line '" + line + "'");
+    BenchConfig c;
+    c.stage = field[0];
+    c.tree = field[1] == "legacy" ? GlslTree::Legacy : GlslTree::Core;
+    c.scene = field[2];
+    c.width = std::stoi(field[3]);
+    c.height = std::stoi(field[4]);
+    std::istringstream sets(field.size() > 5 ? field[5] : "");
+    for (std::string nv; sets >> nv;) {
+        std::size_t eq = nv.find('=');
+        if (eq != std::string::npos) c.sets.emplace_back(nv.substr(0, eq), nv.substr(eq + 1));
+    }
+    return c;
+}
+
+// The child under callgrind: every configuration of the plan file, still then moving, each
+// through countedFrames() (one dump each, in this order).
+int runInstructionsChild(const BenchArgs& a) {
+    std::ifstream plan(a.instructionsChild);
+    if (!plan) throw UsageError("--instructions-child: cannot read '" + a.instructionsChild + "'");
     BenchRig rig(toBackend(a.backend));
-    for (const BenchConfig& c : benchConfigs(a, tree)) {
-        if (!countsInstructions(c)) continue;
+    for (std::string line; std::getline(plan, line);) {
+        if (line.empty()) continue;
+        BenchConfig c = parsePlanLine(line);
         for (bool moving : {false, true}) {
             rig.prepare(c);
             rig.time(1, 0, moving);  // uncounted: the stage switch re-creates the map
@@ -160,9 +194,14 @@ void countInstructions(const BenchArgs& a, std::vector<Measured>& results) {
     makeOutputDir(dir);
     std::string out = dir + "/frames.out";
     std::system(("rm -f " + shellQuote(out) + "*").c_str());
-    std::string args = "bench --instructions-child --out " + shellQuote(a.out) + " --glsl " +
-                       shellQuote(a.glsl) + " --backend " + shellQuote(a.backend) +
-                       (a.quick ? " --quick" : "") + " --only " + shellQuote(a.only);
+    std::string planFile = dir + "/plan.tsv";
+    std::string plan;
+    for (const Measured& m : results)
+        if (countsInstructions(m.config)) plan += planLine(m.config);
+    std::string err = writeTextFile(planFile, plan);
+    if (!err.empty()) throw UsageError("--out: " + err);
+    std::string args = "bench --instructions-child " + shellQuote(planFile) + " --backend " +
+                       shellQuote(a.backend);
     char exe[4096] = {0};
     ssize_t length = readlink("/proc/self/exe", exe, sizeof exe - 1);
     std::string self = length > 0 ? std::string(exe, length) : "/proc/self/exe";
@@ -201,7 +240,7 @@ int runBench(const BenchArgs& a) {
                         ? GlslTree::Legacy
                         : throw UsageError("--glsl: '" + a.glsl + "' is not one of core, legacy");
     Backend backend = toBackend(a.backend);
-    if (a.instructionsChild) return runInstructionsChild(a, tree);
+    if (!a.instructionsChild.empty()) return runInstructionsChild(a);
     int frames = a.frames > 0 ? a.frames : a.quick ? 3 : 60;
     int warmup = a.warmup > 0 ? a.warmup : a.quick ? 1 : 3;
     int blocks = std::min(frames, a.blocks > 0 ? a.blocks : a.quick ? 3 : 15);
@@ -250,6 +289,14 @@ int runBench(const BenchArgs& a) {
                      num(m.accuracy.errorPct, 3).c_str(), tty ? "\033[K" : "\n");
     }
     if (tty) std::fprintf(stderr, "\n");
+    if (a.equalAccuracy || !a.quick) {
+        auto log = [&](const std::string& line) {
+            std::fprintf(stderr, "equal accuracy: %s\n", line.c_str());
+        };
+        for (Measured& m : searchEqualAccuracy(rig, equalAccuracyCandidates(a.quick, tree, a.only),
+                                               framesPerBlock, blocks, AccuracyBar{}, log))
+            results.push_back(m);
+    }
     if (a.instructions) countInstructions(a, results);
     BenchReport report = writeBenchReport(a.out, machine, results);
     std::cout << report.summary;
@@ -277,9 +324,12 @@ Command addBenchCommand(CLI::App& app) {
     cmd->add_flag("--instructions", args->instructions,
                   "also count instructions per frame (640x480 configurations) under valgrind's "
                   "callgrind: slow, but repeatable on a loaded machine");
-    cmd->add_flag("--instructions-child", args->instructionsChild,
-                  "internal: the run under callgrind that --instructions starts")
+    cmd->add_option("--instructions-child", args->instructionsChild,
+                    "internal: the run under callgrind that --instructions starts (its plan file)")
         ->group("");
+    cmd->add_flag("--equal-accuracy", args->equalAccuracy,
+                  "search each method's cheapest configuration reaching edge p95 <= 2 px and "
+                  "error <= 0.1 % (always in a full run; with --quick on request)");
     cmd->add_option("--warmup", args->warmup, "untimed frames first (default 3; quick 1)")
         ->check(CLI::Range(1, 1000));
     cmd->add_option("--only", args->only,
