@@ -241,9 +241,9 @@ int runBench(const BenchArgs& a) {
                         : throw UsageError("--glsl: '" + a.glsl + "' is not one of core, legacy");
     Backend backend = toBackend(a.backend);
     if (!a.instructionsChild.empty()) return runInstructionsChild(a);
-    int frames = a.frames > 0 ? a.frames : a.quick ? 3 : 60;
+    int frames = a.frames > 0 ? a.frames : a.quick ? 3 : 40;
     int warmup = a.warmup > 0 ? a.warmup : a.quick ? 1 : 3;
-    int blocks = std::min(frames, a.blocks > 0 ? a.blocks : a.quick ? 3 : 15);
+    int blocks = std::min(frames, a.blocks > 0 ? a.blocks : a.quick ? 3 : 10);
     int framesPerBlock = std::max(1, frames / blocks);
     makeOutputDir(a.out);
     std::vector<BenchConfig> configs = benchConfigs(a, tree);
@@ -315,11 +315,11 @@ Command addBenchCommand(CLI::App& app) {
     cmd->add_option("--out", args->out, "output folder (default out/bench)");
     cmd->add_flag("--quick", args->quick, "a few frames, two map sizes, every stage (under 30 s)");
     cmd->add_option("--frames", args->frames,
-                    "timed frames per configuration and light, each side (default 60; quick 3)")
+                    "timed frames per configuration and light, each side (default 40; quick 3)")
         ->check(CLI::Range(1, 10000));
     cmd->add_option("--blocks", args->blocks,
                     "interleaved blocks (ABBA against phong) the frames are split into; the "
-                    "ratio is the median of the per-block ratios (default 15; quick 3)")
+                    "ratio is the median of the per-block ratios (default 10; quick 3)")
         ->check(CLI::Range(1, 1000));
     cmd->add_flag("--instructions", args->instructions,
                   "also count instructions per frame (640x480 configurations) under valgrind's "
