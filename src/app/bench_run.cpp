@@ -120,7 +120,7 @@ void countedFrames(BenchRig& rig, int frames, bool movingLight) {
 #ifdef SL_HAVE_CALLGRIND
     CALLGRIND_TOGGLE_COLLECT;  // on (the child runs with --collect-atstart=no)
     rig.time(0, frames, movingLight);
-    CALLGRIND_TOGGLE_COLLECT;             // off
+    CALLGRIND_TOGGLE_COLLECT;            // off
     CALLGRIND_DUMP_STATS_AT("counted");  // one dump file per call, in call order
 #else
     rig.time(0, frames, movingLight);
