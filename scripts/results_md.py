@@ -28,6 +28,25 @@ def f(value, digits=3):
     return f"{value:.{digits}g}"
 
 
+def ratio(r):
+    """A ratio to phong with its spread (half the interquartile range of the per-block ratios),
+    or why it is not a figure: a spread over 10 % of the ratio is flagged, not published."""
+    if r.get("ratio_to_phong") is None:
+        return "-"
+    if "ratio_trusted" not in r:  # a bench.json from before the per-block ratios
+        return f(r["ratio_to_phong"])
+    if not r["ratio_trusted"]:
+        spread = 100 * r["ratio_iqr"] / r["ratio_to_phong"] if r["ratio_to_phong"] else float("nan")
+        return f"not quoted (spread {spread:.0f} %)"
+    return f"{r['ratio_to_phong']:.2f} ± {r['ratio_iqr'] / 2:.2f}"
+
+
+def verdict(r, target):
+    if "ratio_trusted" in r and not r["ratio_trusted"]:
+        return "not judged (spread too wide)"
+    return "met" if r["ratio_to_phong"] <= target else "missed"
+
+
 def table(header, rows):
     out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     out += ["| " + " | ".join(f(c) for c in row) + " |" for row in rows]
@@ -48,10 +67,12 @@ def main():
     load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
     out.append(f"**Machine:** {bench['machine']}; load average {load} (1, 5, 15 min) when this "
                f"page was written. Generated {datetime.date.today()}. Times are "
-               "medians of 20 frames after warm-up, measured with glFinish and a steady clock; "
-               "each configuration is timed in four blocks alternating with `phong` on the same "
-               "context, and the ratio is of the two medians. The machine is shared and noisy: "
-               "compare ratios, not milliseconds across runs.\n")
+               "medians after warm-up, measured with glFinish and a steady clock. Each "
+               "configuration is timed in short blocks interleaved with `phong` on the same "
+               "context (ABBA order); its ratio is the median of the per-block ratios, ± half "
+               "their interquartile range, and a ratio whose spread is over 10 % of it is flagged "
+               "instead of quoted. `phong` draws no map, so one measurement serves its still and "
+               "moving rows. Milliseconds move with the machine's load: compare ratios.\n")
 
     out.append("## Each method at its defaults (640x480)\n")
     rs = []
@@ -62,9 +83,25 @@ def main():
                           and m["series"] == r["series"] and m["width"] == 640 and m["tree"] == r["tree"])
             rs.append([r["stage"], r["tree"], r["error_pct"], r["false_shadow_pct"], r["false_lit_pct"],
                        r["edge_p95_px"], r["mirror_id_pct"], r["frame_ms"], moving["frame_ms"],
-                       r["ratio_to_phong"], moving["ratio_to_phong"]])
+                       ratio(r), ratio(moving)])
     out.append(table(["stage", "tree", "error %", "false shadow %", "false lit %", "edge p95 px",
                       "mirror id %", "still ms", "moving ms", "x phong still", "x phong moving"], rs))
+    counted = [r for r in rows if r.get("instructions_per_frame") is not None and r["group"] != "map-size"]
+    if counted:
+        out.append("\n**Instructions per frame** (`bench --instructions`: valgrind's callgrind, "
+                   "`LP_NUM_THREADS=0`, counted over the steady frames only; they repeat to a "
+                   "fraction of a percent where milliseconds do not):\n")
+        irows = []
+        for r in counted:
+            if r["light"] != "still":
+                continue
+            moving = next(m for m in counted if m["light"] == "moving" and m["group"] == r["group"]
+                          and m["series"] == r["series"] and m["scene"] == r["scene"] and m["tree"] == r["tree"])
+            irows.append([r["stage"], r["tree"], r["scene"], r["instructions_per_frame"] / 1e6,
+                          r["instructions_ratio_to_phong"], moving["instructions_per_frame"] / 1e6,
+                          moving["instructions_ratio_to_phong"]])
+        out.append(table(["stage", "tree", "scene", "M instr still", "x phong still", "M instr moving",
+                          "x phong moving"], irows))
     out.append("\nerror % = (false shadow % + false lit %) / 2 outside the 1-pixel edge band "
                "(mirror: 100 - object-id agreement inside the mirror). `phong` has no shadows, so "
                "every true shadow is false lit: 50 %. `bias` keeps the slides' -0.5 under the "
@@ -76,16 +113,38 @@ def main():
     trs = []
     for r in hw:
         target = 1.3 if r["light"] == "moving" else 1.05
-        trs.append([f"hardware, light {r['light']}", r["frame_ms"], r["ratio_to_phong"], f"<= {target}",
-                    "met" if r["ratio_to_phong"] <= target else "missed"])
+        trs.append([f"hardware, light {r['light']}", r["frame_ms"], ratio(r), f"<= {target}",
+                    verdict(r, target)])
     for r in mirror:
-        trs.append([f"mirror (texture), light {r['light']}", r["frame_ms"], r["ratio_to_phong"], "<= 2.2",
-                    "met" if r["ratio_to_phong"] <= 2.2 else "missed"])
+        trs.append([f"mirror (texture), light {r['light']}", r["frame_ms"], ratio(r), "<= 2.2",
+                    verdict(r, 2.2)])
     out.append(table(["configuration", "ms/frame", "x phong", "target", "verdict"], trs))
     out.append("")
 
+    equal = bench.get("equal_accuracy", [])
+    if equal:
+        out.append("## Cost at equal accuracy (edge p95 <= 2 px, error <= 0.1 %)\n")
+        out.append("Per method the cheapest configuration (map size, light fit) that reaches the bar "
+                   "on the lecture scene, or, marked *not reached*, the one that came closest. "
+                   "See [bench.md](bench.md).\n")
+        def rq(value, iqr, trusted):
+            if value is None:
+                return "-"
+            return f"{value:.2f} ± {iqr / 2:.2f}" if trusted else f"not quoted (spread {100 * iqr / value:.0f} %)"
+        erows = [[e["method"], "yes" if e["reached"] else "*not reached*", e["settings"], e["edge_p95_px"],
+                  e["error_pct"], rq(e["ratio_still"], e["ratio_still_iqr"], e["ratio_still_trusted"]),
+                  rq(e["ratio_moving"], e["ratio_moving_iqr"], e["ratio_moving_trusted"]),
+                  "-" if e["instructions_moving"] is None else f"{e['instructions_moving'] / 1e6:.1f} M "
+                  f"({e['instructions_ratio_moving']:.2f}x)"] for e in equal]
+        out.append(table(["method", "reached", "configuration", "edge p95 px", "error %", "x phong still",
+                          "x phong moving", "instr/frame moving"], erows))
+        out.append("")
+
     out.append("## Charts\n")
-    for png, caption in [("error-vs-time.png", "Error against frame time, each method's Pareto front as a line"),
+    charts = [("error-vs-time.png", "Error against frame time, each method's Pareto front as a line")]
+    if os.path.exists(os.path.join(root, "bench", "error-vs-instructions.png")):
+        charts.append(("error-vs-instructions.png", "Error against instructions per frame (callgrind)"))
+    for png, caption in charts + [
                          ("time-vs-map-size.png", "Frame time against map size, light moving (map re-rendered every frame)"),
                          ("time-vs-window.png", "Frame time against window size, still light")]:
         out.append(f"**{caption}**\n\n![{caption}]({rel}/bench/{png})\n")
@@ -105,7 +164,7 @@ def main():
     out.append("")
 
     out.append("## Storage formats and the mirror (1024 map, 640x480, still light)\n")
-    frows = [[r["series"], r["settings"], r["frame_ms"], r["ratio_to_phong"], r["error_pct"], r["edge_p95_px"],
+    frows = [[r["series"], r["settings"], r["frame_ms"], ratio(r), r["error_pct"], r["edge_p95_px"],
               r["mirror_psnr_db"]]
              for r in rows if r["group"] in ("format", "mirror") and r["light"] == "still"]
     out.append(table(["configuration", "settings", "ms/frame", "x phong", "error %", "edge p95 px",

@@ -14,3 +14,14 @@ endforeach()
 add_test(NAME sweep_unknown_axis
          COMMAND sh -c "$<TARGET_FILE:shadowlab> sweep elevaton --out ${SL_BENCH_DIR} 2>&1; test $? -eq 2" )
 set_tests_properties(sweep_unknown_axis PROPERTIES LABELS bench PASS_REGULAR_EXPRESSION "did you mean 'elevation'")
+# `bench --instructions`: the child under callgrind counts every 640x480 row (phong included),
+# so instructions per frame and their ratio to phong are numbers on every row.
+add_test(NAME bench_instructions
+         COMMAND sh -c "$<TARGET_FILE:shadowlab> bench --quick --frames 2 --only hardware/nearest --instructions --out ${SL_BENCH_DIR}/instructions && python3 ${SL_CHECK_CSV} ${SL_BENCH_DIR}/instructions/bench.csv 6 instructions_per_frame instructions_ratio_to_phong && test -s ${SL_BENCH_DIR}/instructions/error-vs-instructions.png")
+set_tests_properties(bench_instructions PROPERTIES LABELS bench TIMEOUT 900)
+# The equal-accuracy search: one row per method searched, each either the cheapest configuration
+# reaching edge p95 <= 2 px and error <= 0.1 % or the closest one marked unreached, with its
+# figures; a reached row must really meet the bar.
+add_test(NAME bench_equal_accuracy
+         COMMAND sh -c "$<TARGET_FILE:shadowlab> bench --quick --frames 2 --equal-accuracy --only peers/normal --out ${SL_BENCH_DIR}/equal && python3 -c \"import json,sys; e=json.load(open('${SL_BENCH_DIR}/equal/bench.json'))['equal_accuracy']; print(e); ok=len(e)==1 and e[0]['method']=='peers/normal-offset' and e[0]['error_pct'] is not None and 'light-fit=' in e[0]['settings'] and (not e[0]['reached'] or (e[0]['edge_p95_px']<=2 and e[0]['error_pct']<=0.1)); sys.exit(0 if ok else 1)\"")
+set_tests_properties(bench_equal_accuracy PROPERTIES LABELS bench TIMEOUT 300)

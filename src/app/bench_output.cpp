@@ -54,8 +54,12 @@ std::string gnuplotBlocks(const std::vector<Series>& series) {
         if (!first) out << "\n\n";
         first = false;
         out << "\"" << s.title << "\" \"\"\n";
-        for (std::size_t k = 0; k < s.xs.size() && k < s.ys.size(); ++k)
-            out << num(s.xs[k], 8) << " " << num(s.ys[k], 8) << "\n";
+        bool bars = s.lo.size() == s.xs.size() && s.hi.size() == s.xs.size();
+        for (std::size_t k = 0; k < s.xs.size() && k < s.ys.size(); ++k) {
+            out << num(s.xs[k], 8) << " " << num(s.ys[k], 8);
+            if (bars) out << " " << num(s.lo[k], 8) << " " << num(s.hi[k], 8);
+            out << "\n";
+        }
     }
     return out.str();
 }

@@ -19,14 +19,17 @@ struct Table {
 // significant digits.
 std::string num(double value, int digits = 4);
 
-// One chart line: a title and its (x, y) points.
+// One chart line: a title and its (x, y) points, optionally with an error bar per point (lo, hi:
+// the quartiles of the axis that was timed).
 struct Series {
     std::string title;
     std::vector<double> xs, ys;
+    std::vector<double> lo, hi;  // empty, or one per point
 };
 
 // gnuplot data: one block per series, headed by its quoted title, blocks separated by two blank
-// lines (so `index i` picks one and `columnheader(1)` titles it). Empty series are skipped.
+// lines (so `index i` picks one and `columnheader(1)` titles it). Empty series are skipped. With
+// error bars the lines have four columns: x y lo hi.
 std::string gnuplotBlocks(const std::vector<Series>& series);
 
 // "2 cores, llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa 22.3.6" from the current

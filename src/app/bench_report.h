@@ -14,12 +14,18 @@ struct Measured {
     BenchConfig config;
     std::string scene;
     PassTimes still, moving;
-    PassTimes phongStill, phongMoving;  // phong measured in blocks alternating with this one
+    PassTimes phongStill, phongMoving;     // phong measured in blocks alternating with this one
+    RatioSummary ratioStill, ratioMoving;  // per-block ratios to phong (median, spread)
     Accuracy accuracy;
-    double ratio(bool movingLight) const {
-        return movingLight ? moving.frame.median / phongMoving.frame.median
-                           : still.frame.median / phongStill.frame.median;
+    // `bench --instructions`: callgrind's instructions per frame and their ratio to phong's in the
+    // same context (NaN when not counted).
+    struct Instructions {
+        double still = NAN, moving = NAN, ratioStill = NAN, ratioMoving = NAN;
+    } instructions;
+    const RatioSummary& ratios(bool movingLight) const {
+        return movingLight ? ratioMoving : ratioStill;
     }
+    double ratio(bool movingLight) const { return ratios(movingLight).median; }
 };
 
 // "tree/scene/WxH": configurations with the same key share a context and a phong baseline.

@@ -4,6 +4,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <sstream>
 
+#if __has_include(<valgrind/callgrind.h>)  // header only: the macros are no-ops outside valgrind
+#include <valgrind/callgrind.h>
+#define SL_HAVE_CALLGRIND 1
+#endif
+
 namespace sl {
 
 std::string BenchConfig::setsText() const {
@@ -53,21 +58,30 @@ PassTimes PassSamples::summary() const {
     return {summarize(frame), summarize(shadow), summarize(lit), summarize(mirror), mapRenders};
 }
 
-BenchRig::Paired BenchRig::timeBesidePhong(const BenchConfig& c, int frames, int rounds,
+BenchRig::Paired BenchRig::timeBesidePhong(const BenchConfig& c, int framesPerBlock, int blocks,
                                            bool movingLight) {
     BenchConfig phong = c;
     phong.stage = "phong";
     phong.sets.clear();
     phong.scene = c.sceneName();
     PassSamples config, base;
-    for (int k = 0; k < rounds; ++k) {
-        int n = frames / rounds + (k < frames % rounds ? 1 : 0);
-        prepare(phong);
-        base.append(time(1, n, movingLight));
-        prepare(c);
-        config.append(time(1, n, movingLight));
+    std::vector<double> configBlocks, baseBlocks;  // each block's median frame time
+    auto run = [&](const BenchConfig& which, PassSamples& into, std::vector<double>& medians) {
+        prepare(which);
+        PassSamples block = time(1, framesPerBlock, movingLight);
+        medians.push_back(summarize(block.frame).median);
+        into.append(block);
+    };
+    for (int k = 0; k < blocks; ++k) {
+        if (configFirst(k)) {
+            run(c, config, configBlocks);
+            run(phong, base, baseBlocks);
+        } else {
+            run(phong, base, baseBlocks);
+            run(c, config, configBlocks);
+        }
     }
-    return {config.summary(), base.summary()};
+    return {config.summary(), base.summary(), summarizeRatios(configBlocks, baseBlocks)};
 }
 
 PassSamples BenchRig::time(int warmup, int frames, bool movingLight) {
@@ -97,6 +111,17 @@ PassSamples BenchRig::time(int warmup, int frames, bool movingLight) {
     r.timePasses = false;
     r.lightPosition = home;
     return {frame, shadow, lit, mirror, r.stats.shadowMapRenders - rendersBefore};
+}
+
+void countedFrames(BenchRig& rig, int frames, bool movingLight) {
+#ifdef SL_HAVE_CALLGRIND
+    CALLGRIND_TOGGLE_COLLECT;  // on (the child runs with --collect-atstart=no)
+    rig.time(0, frames, movingLight);
+    CALLGRIND_TOGGLE_COLLECT;            // off
+    CALLGRIND_DUMP_STATS_AT("counted");  // one dump file per call, in call order
+#else
+    rig.time(0, frames, movingLight);
+#endif
 }
 
 }  // namespace sl

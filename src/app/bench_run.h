@@ -61,14 +61,21 @@ class BenchRig : public Evaluator {
     // the shadow map; otherwise it stays put and a cached map costs nothing.
     PassSamples time(int warmup, int frames, bool movingLight);
 
-    // The configuration and phong (same context, scene and light) measured in alternating
-    // blocks, `rounds` of each, so drift on a shared machine hits both alike: the ratio of the
-    // two medians is the figure that matters. Each block starts with one untimed frame (a stage
-    // switch re-creates its map).
+    // The configuration and phong (same context, scene and light) measured in `blocks` short
+    // interleaved blocks of `framesPerBlock` frames, in ABBA order (configFirst), so drift on a
+    // shared machine hits both alike. The figure that matters is the median of the per-block
+    // ratios (block median over block median) with its spread. Each block starts with one
+    // untimed frame (a stage switch re-creates its map).
     struct Paired {
         PassTimes config, phong;
+        RatioSummary ratio;
     };
-    Paired timeBesidePhong(const BenchConfig& c, int frames, int rounds, bool movingLight);
+    Paired timeBesidePhong(const BenchConfig& c, int framesPerBlock, int blocks, bool movingLight);
 };
+
+// The frames `bench --instructions` counts under callgrind (metrics/callgrind.h): `frames` frames
+// of the rig's current configuration, collected between two callgrind client requests and
+// dumped to a file of their own (valgrind's header; without it nothing is counted).
+void countedFrames(BenchRig& rig, int frames, bool movingLight);
 
 }  // namespace sl

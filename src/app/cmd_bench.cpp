@@ -2,12 +2,16 @@
 // the same run, with the accuracy figures of the same configuration; CSV, JSON and charts.
 #include <unistd.h>
 
+#include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 
+#include "app/bench_equal.h"
 #include "app/bench_output.h"
 #include "app/bench_report.h"
 #include "app/commands.h"
+#include "metrics/callgrind.h"
 
 namespace sl {
 
@@ -18,8 +22,12 @@ struct BenchArgs {
     std::string glsl = "core";
     std::string backend = "auto";
     bool quick = false;
-    std::string only;            // keep configurations whose series contains this
-    int frames = 0, warmup = 0;  // 0 = the default for the mode
+    std::string only;               // keep configurations whose series contains this
+    int frames = 0, warmup = 0;     // 0 = the default for the mode
+    int blocks = 0;                 // interleaved blocks per configuration; 0 = the mode's default
+    bool instructions = false;      // also count instructions per frame under callgrind
+    std::string instructionsChild;  // set: this process runs under callgrind, counting this plan
+    bool equalAccuracy = false;     // the equal-accuracy search (always in a full run)
 };
 
 // The configurations measured, in order. Baselines (phong) come first for each context.
@@ -57,6 +65,11 @@ std::vector<BenchConfig> plan(bool quick, GlslTree tree) {
         {"hardware/linear", "hardware", {}},
         {"hardware/nearest", "hardware", {{"filter", "nearest"}}},
         {"fixed", "fixed", {}},
+        {"hardware/pcf3x3", "hardware", {{"filter", "pcf3x3"}}},
+        // The tutorials' methods (stage peers), on the same axes as ours.
+        {"peers/learnopengl", "peers", {{"method", "learnopengl"}}},
+        {"peers/opengl-tutorial", "peers", {{"method", "opengl-tutorial"}}},
+        {"peers/normal-offset", "peers", {{"method", "normal-offset"}}},
     };
     for (const Variant& v : variants)
         for (int size : mapSizes) {
@@ -95,18 +108,9 @@ std::vector<BenchConfig> plan(bool quick, GlslTree tree) {
     return out;
 }
 
-int runBench(const BenchArgs& a) {
-    GlslTree tree = a.glsl == "core" ? GlslTree::Core
-                    : a.glsl == "legacy"
-                        ? GlslTree::Legacy
-                        : throw UsageError("--glsl: '" + a.glsl + "' is not one of core, legacy");
-    Backend backend = toBackend(a.backend);
-    int frames = a.frames > 0 ? a.frames : a.quick ? 3 : 20;
-    int warmup = a.warmup > 0 ? a.warmup : a.quick ? 1 : 3;
-    int rounds = std::min(frames, a.quick ? 1 : 4);
-    makeOutputDir(a.out);
-
-    // Phong at every (tree, scene, size) a configuration uses, measured right before it.
+// What a run measures: the plan, filtered by --only, with phong before the first configuration
+// of every context (tree, scene, size).
+std::vector<BenchConfig> benchConfigs(const BenchArgs& a, GlslTree tree) {
     std::vector<BenchConfig> configs;
     std::map<std::string, bool> baselined;
     for (BenchConfig& c : plan(a.quick, tree)) {
@@ -124,6 +128,125 @@ int runBench(const BenchArgs& a) {
         }
         configs.push_back(c);
     }
+    return configs;
+}
+
+// Which configurations `--instructions` counts: the 640x480 ones the charts and targets use.
+bool countsInstructions(const BenchConfig& c) {
+    return c.width == 640 && c.height == 480 &&
+           (c.group == "baseline" || c.group == "map-size" || c.group == "window" ||
+            c.group.rfind("equal-accuracy", 0) == 0);
+}
+
+constexpr int kCountedFrames = 2;  // callgrind's counts repeat: two frames are plenty
+
+// The plan the child counts, one configuration a line: stage, tree, scene, width, height and
+// the settings, tab-separated (the settings as NAME=VALUE separated by spaces).
+std::string planLine(const BenchConfig& c) {
+    std::string sets;
+    for (const auto& [name, value] : c.sets) sets += (sets.empty() ? "" : " ") + name + "=" + value;
+    return c.stage + "\t" + treeName(c.tree) + "\t" + c.sceneName() + "\t" +
+           std::to_string(c.width) + "\t" + std::to_string(c.height) + "\t" + sets + "\n";
+}
+
+BenchConfig parsePlanLine(const std::string& line) {
+    std::vector<std::string> field;
+    std::istringstream in(line);
+    for (std::string f; std::getline(in, f, '\t');) field.push_back(f);
+    if (field.size() < 5) throw UsageError("--instructions-child: bad plan line '" + line + "'");
+    BenchConfig c;
+    c.stage = field[0];
+    c.tree = field[1] == "legacy" ? GlslTree::Legacy : GlslTree::Core;
+    c.scene = field[2];
+    c.width = std::stoi(field[3]);
+    c.height = std::stoi(field[4]);
+    std::istringstream sets(field.size() > 5 ? field[5] : "");
+    for (std::string nv; sets >> nv;) {
+        std::size_t eq = nv.find('=');
+        if (eq != std::string::npos) c.sets.emplace_back(nv.substr(0, eq), nv.substr(eq + 1));
+    }
+    return c;
+}
+
+// The child under callgrind: every configuration of the plan file, still then moving, each
+// through countedFrames() (one dump each, in this order).
+int runInstructionsChild(const BenchArgs& a) {
+    std::ifstream plan(a.instructionsChild);
+    if (!plan) throw UsageError("--instructions-child: cannot read '" + a.instructionsChild + "'");
+    BenchRig rig(toBackend(a.backend));
+    for (std::string line; std::getline(plan, line);) {
+        if (line.empty()) continue;
+        BenchConfig c = parsePlanLine(line);
+        for (bool moving : {false, true}) {
+            rig.prepare(c);
+            rig.time(1, 0, moving);  // uncounted: the stage switch re-creates the map
+            countedFrames(rig, kCountedFrames, moving);
+        }
+    }
+    return kOk;
+}
+
+// Runs this program again under callgrind and fills each counted result's instructions.
+void countInstructions(const BenchArgs& a, std::vector<Measured>& results) {
+    if (std::system("command -v valgrind >/dev/null 2>&1") != 0)
+        throw UsageError("--instructions needs valgrind (apt-get install valgrind)");
+    std::string dir = a.out + "/callgrind";
+    makeOutputDir(dir);
+    std::string out = dir + "/frames.out";
+    std::system(("rm -f " + shellQuote(out) + "*").c_str());
+    std::string planFile = dir + "/plan.tsv";
+    std::string plan;
+    for (const Measured& m : results)
+        if (countsInstructions(m.config)) plan += planLine(m.config);
+    std::string err = writeTextFile(planFile, plan);
+    if (!err.empty()) throw UsageError("--out: " + err);
+    std::string args = "bench --instructions-child " + shellQuote(planFile) + " --backend " +
+                       shellQuote(a.backend);
+    char exe[4096] = {0};
+    ssize_t length = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    std::string self = length > 0 ? std::string(exe, length) : "/proc/self/exe";
+    std::string command =
+        callgrindCommand(self, out, args) + " >" + shellQuote(dir + "/valgrind.log") + " 2>&1";
+    std::fprintf(stderr, "counting instructions under callgrind (log: %s/valgrind.log)...\n",
+                 dir.c_str());
+    if (std::system(command.c_str()) != 0)
+        throw std::runtime_error("--instructions: the run under callgrind failed; see " + dir +
+                                 "/valgrind.log");
+    int dump = 0;
+    auto next = [&]() {
+        std::ifstream f(out + "." + std::to_string(++dump));
+        std::stringstream text;
+        text << f.rdbuf();
+        return instructionsPerFrame(parseCallgrindTotal(text.str()), kCountedFrames);
+    };
+    std::map<std::string, const Measured*> phong;
+    for (Measured& m : results) {
+        if (!countsInstructions(m.config)) continue;
+        m.instructions.still = next();
+        m.instructions.moving = next();
+        if (m.config.group == "baseline") phong[contextKey(m.config, m.scene)] = &m;
+    }
+    for (Measured& m : results) {
+        auto base = phong.find(contextKey(m.config, m.scene));
+        if (base == phong.end()) continue;
+        m.instructions.ratioStill = m.instructions.still / base->second->instructions.still;
+        m.instructions.ratioMoving = m.instructions.moving / base->second->instructions.moving;
+    }
+}
+
+int runBench(const BenchArgs& a) {
+    GlslTree tree = a.glsl == "core" ? GlslTree::Core
+                    : a.glsl == "legacy"
+                        ? GlslTree::Legacy
+                        : throw UsageError("--glsl: '" + a.glsl + "' is not one of core, legacy");
+    Backend backend = toBackend(a.backend);
+    if (!a.instructionsChild.empty()) return runInstructionsChild(a);
+    int frames = a.frames > 0 ? a.frames : a.quick ? 3 : 40;
+    int warmup = a.warmup > 0 ? a.warmup : a.quick ? 1 : 3;
+    int blocks = std::min(frames, a.blocks > 0 ? a.blocks : a.quick ? 3 : 10);
+    int framesPerBlock = std::max(1, frames / blocks);
+    makeOutputDir(a.out);
+    std::vector<BenchConfig> configs = benchConfigs(a, tree);
 
     BenchRig rig(backend);
     std::vector<Measured> results;
@@ -131,18 +254,26 @@ int runBench(const BenchArgs& a) {
     bool tty = isatty(STDERR_FILENO);
     for (std::size_t k = 0; k < configs.size(); ++k) {
         const BenchConfig& c = configs[k];
-        Measured m{c, c.sceneName(), {}, {}, {}, {}, {}};
-        if (c.group == "baseline") {  // phong on its own: its ratio is 1 by definition
+        Measured m{c, c.sceneName(), {}, {}, {}, {}, {}, {}, {}};
+        if (c.group == "baseline") {
+            // phong on its own: its ratio is 1 by definition. It draws no map, so a moving light
+            // costs it nothing: one measurement (still and moving blocks pooled) serves both rows,
+            // which therefore cannot disagree.
             rig.prepare(c);
-            m.still = m.phongStill = rig.time(warmup, frames, false).summary();
-            m.moving = m.phongMoving = rig.time(warmup, frames, true).summary();
+            PassSamples pooled;
+            for (int k = 0; k < blocks; ++k)
+                pooled.append(rig.time(k == 0 ? warmup : 1, framesPerBlock, k % 2 == 1));
+            m.still = m.phongStill = m.moving = m.phongMoving = pooled.summary();
+            m.ratioStill = m.ratioMoving = RatioSummary{blocks, 1.0, 1.0, 1.0};
         } else {
-            auto still = rig.timeBesidePhong(c, frames, rounds, false);
-            auto moving = rig.timeBesidePhong(c, frames, rounds, true);
+            auto still = rig.timeBesidePhong(c, framesPerBlock, blocks, false);
+            auto moving = rig.timeBesidePhong(c, framesPerBlock, blocks, true);
             m.still = still.config;
             m.phongStill = still.phong;
+            m.ratioStill = still.ratio;
             m.moving = moving.config;
             m.phongMoving = moving.phong;
+            m.ratioMoving = moving.ratio;
         }
         if (machine.empty()) machine = machineLine();
         rig.prepare(c);
@@ -158,6 +289,15 @@ int runBench(const BenchArgs& a) {
                      num(m.accuracy.errorPct, 3).c_str(), tty ? "\033[K" : "\n");
     }
     if (tty) std::fprintf(stderr, "\n");
+    if (a.equalAccuracy || !a.quick) {
+        auto log = [&](const std::string& line) {
+            std::fprintf(stderr, "equal accuracy: %s\n", line.c_str());
+        };
+        for (Measured& m : searchEqualAccuracy(rig, equalAccuracyCandidates(a.quick, tree, a.only),
+                                               framesPerBlock, blocks, AccuracyBar{}, log))
+            results.push_back(m);
+    }
+    if (a.instructions) countInstructions(a, results);
     BenchReport report = writeBenchReport(a.out, machine, results);
     std::cout << report.summary;
     if (!report.chartProblem.empty()) std::cerr << "shadowlab: " << report.chartProblem << "\n";
@@ -175,8 +315,21 @@ Command addBenchCommand(CLI::App& app) {
     cmd->add_option("--out", args->out, "output folder (default out/bench)");
     cmd->add_flag("--quick", args->quick, "a few frames, two map sizes, every stage (under 30 s)");
     cmd->add_option("--frames", args->frames,
-                    "timed frames per configuration (default 20; quick 3)")
+                    "timed frames per configuration and light, each side (default 40; quick 3)")
         ->check(CLI::Range(1, 10000));
+    cmd->add_option("--blocks", args->blocks,
+                    "interleaved blocks (ABBA against phong) the frames are split into; the "
+                    "ratio is the median of the per-block ratios (default 10; quick 3)")
+        ->check(CLI::Range(1, 1000));
+    cmd->add_flag("--instructions", args->instructions,
+                  "also count instructions per frame (640x480 configurations) under valgrind's "
+                  "callgrind: slow, but repeatable on a loaded machine");
+    cmd->add_option("--instructions-child", args->instructionsChild,
+                    "internal: the run under callgrind that --instructions starts (its plan file)")
+        ->group("");
+    cmd->add_flag("--equal-accuracy", args->equalAccuracy,
+                  "search each method's cheapest configuration reaching edge p95 <= 2 px and "
+                  "error <= 0.1 % (always in a full run; with --quick on request)");
     cmd->add_option("--warmup", args->warmup, "untimed frames first (default 3; quick 1)")
         ->check(CLI::Range(1, 1000));
     cmd->add_option("--only", args->only,

@@ -28,4 +28,18 @@ TimeSummary summarize(const std::vector<double>& values) {
     return s;
 }
 
+RatioSummary summarizeRatios(const std::vector<double>& config, const std::vector<double>& base) {
+    std::vector<double> ratios;
+    for (std::size_t k = 0; k < std::min(config.size(), base.size()); ++k)
+        if (config[k] > 0 && base[k] > 0) ratios.push_back(config[k] / base[k]);
+    RatioSummary r;
+    if (ratios.empty()) return r;
+    TimeSummary t = summarize(ratios);
+    r.blocks = t.count;
+    r.median = t.median;
+    r.p25 = t.p25;
+    r.p75 = t.p75;
+    return r;
+}
+
 }  // namespace sl

@@ -21,7 +21,8 @@ bool ShadowMapSettings::operator==(const ShadowMapSettings& o) const {
     return storage == o.storage && size == o.size && fit == o.fit && castersOnly == o.castersOnly &&
            farOverNear == o.farOverNear && offsetFactor == o.offsetFactor &&
            offsetUnits == o.offsetUnits && cullFront == o.cullFront && cullBack == o.cullBack &&
-           depthFlipped == o.depthFlipped && compare == o.compare && linear == o.linear;
+           depthFlipped == o.depthFlipped && compare == o.compare && linear == o.linear &&
+           everyFrame == o.everyFrame;
 }
 
 std::size_t ShadowMap::bytes() const {
@@ -135,7 +136,7 @@ void ShadowMap::update(FrameContext& f, const ShadowMapSettings& s, Program& pro
     settings_ = s;
     f.stats.mapSize = s.size;
     f.stats.lightViewProjection = lightViewProjection_;
-    bool stale = reallocate || f.lightPosition != renderedLight_ ||
+    bool stale = reallocate || s.everyFrame || f.lightPosition != renderedLight_ ||
                  f.sceneGeneration != renderedScene_ || f.allLit != renderedAllLit_ ||
                  program.id() != renderedProgram_ || s != renderedSettings_;
     if (!stale) return;

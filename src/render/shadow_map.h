@@ -25,6 +25,7 @@ struct ShadowMapSettings {
     bool depthFlipped = false;  // projection maps near to NDC +1, with glDepthRange(1, 0)
     bool compare = false;       // GL_COMPARE_REF_TO_TEXTURE (sampler2DShadow)
     bool linear = false;        // GL_LINEAR: with compare, 2x2 percentage-closer filtering
+    bool everyFrame = false;    // re-render even when nothing changed (as the tutorials' loops do)
     bool operator==(const ShadowMapSettings& o) const;
     bool operator!=(const ShadowMapSettings& o) const { return !(*this == o); }
 };

@@ -1,6 +1,6 @@
 // Stage 5: the hardware does the comparison: a depth texture with compare mode, sampled through
 // sampler2DShadow; polygon offset in the shadow pass instead of a margin; linear filtering
-// averages four compares (PCF).
+// averages four compares (PCF); filter=pcf3x3 averages nine.
 #include "stages/shadow_stage.h"
 
 namespace sl {
@@ -16,12 +16,18 @@ class HardwareStage : public ShadowStage {
         ShadowMapSettings s = commonShadowSettings(p);
         s.storage = parseStorage(p.choice("depth-format"));
         s.compare = true;
-        s.linear = p.is("filter", "linear");
+        s.linear = p.is("filter", "linear");  // pcf3x3: nine GL_NEAREST compares
         s.offsetFactor = static_cast<float>(p.number("offset-factor"));
         s.offsetUnits = static_cast<float>(p.number("offset-units"));
         s.cullFront = p.is("shadow-cull", "front");
         s.cullBack = p.is("shadow-cull", "back");
         return s;
+    }
+    std::string litPass(const ParamSet& p) const override {
+        return p.is("filter", "pcf3x3") ? "lit_pcf3x3" : "lit";
+    }
+    void setLitUniforms(Program& lit, const ParamSet&) const override {
+        lit.set("texelSize", 1.0f / static_cast<float>(settings_.size));
     }
 };
 
@@ -34,8 +40,9 @@ StageInfo hardwareStage() {
     s.lecture = "GL_COMPARE_REF_TO_TEXTURE + GL_LEQUAL, textureProj, glPolygonOffset(2, 4)";
     s.params = commonShadowParams("casters-only");
     s.params.push_back(
-        ParamSpec::choice("filter", {"linear", "nearest"},
-                          "linear: 2x2 percentage-closer filtering; nearest: one compare"));
+        ParamSpec::choice("filter", {"linear", "nearest", "pcf3x3"},
+                          "linear: 2x2 percentage-closer filtering; nearest: one compare; "
+                          "pcf3x3: nine compares one texel apart"));
     s.params.push_back(
         ParamSpec::number("offset-factor", 2.0, 0.0, 40.0, 1.0, "glPolygonOffset factor (slope)"));
     s.params.push_back(

@@ -55,7 +55,7 @@ void ShadowStage::render(FrameContext& f) {
         drawSceneLit(f.shaders.program("phong", "lit"), f,
                      Viewer{lf.view, lf.projection, f.lightPosition}, 0);
     } else {
-        Program& lit = f.shaders.program(id_, "lit");
+        Program& lit = f.shaders.program(id_, litPass(f.params));
         lit.use();
         map_.bind(0);
         lit.set("shadowMap", 0);

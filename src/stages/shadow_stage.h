@@ -27,6 +27,8 @@ protected:
     // Uniforms of this stage's shadow-pass and lit-pass programs (margin, encodings...).
     virtual void setShadowUniforms(Program&, const ParamSet&) const {}
     virtual void setLitUniforms(Program&, const ParamSet&) const {}
+    // The lit pass's program name in shaders_*/<id>/ (a stage with several lookups has one each).
+    virtual std::string litPass(const ParamSet&) const { return "lit"; }
     // z scale of the bias matrix the lit pass uses (+0.5 for OpenGL's projection).
     virtual float biasZ(const ParamSet&) const { return 0.5f; }
     // How the debug view decodes the map: 0 depth, 1 one 8-bit value, 2 packed RGB.

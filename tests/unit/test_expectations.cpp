@@ -19,7 +19,8 @@ const char* kMinimal = R"({"expectations": [
   {"stage": "hardware", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
   {"stage": "hardware", "scene": "lab", "outcome": "lab", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
   {"stage": "fixed", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
-  {"stage": "mirror", "outcome": "m", "why": "w", "limits": {"mirror_id_pct": {"min": 98}}}
+  {"stage": "mirror", "outcome": "m", "why": "w", "limits": {"mirror_id_pct": {"min": 98}}},
+  {"stage": "peers", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}}
 ]})";
 
 ParamSet values(const std::string& stage, std::vector<std::pair<std::string, std::string>> sets) {

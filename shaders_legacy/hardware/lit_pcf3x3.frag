@@ -1,0 +1,27 @@
+#version 120
+// Hardware 3x3 PCF: nine hardware compares (GL_NEAREST) one texel apart, averaged: ten levels
+// of visibility across an edge instead of the 2x2 filter's bilinear ramp.
+#include "common/phong.glsl"
+
+varying vec3 worldPosition;
+varying vec3 worldNormal;
+varying vec4 shadowCoord;
+
+uniform sampler2DShadow shadowMap;
+uniform float texelSize;  // 1 / map size
+
+float litFraction()
+{
+    if (shadowCoord.w <= 0.0) return 1.0;
+    vec3 p = shadowCoord.xyz / shadowCoord.w;
+    float lit = 0.0;
+    for (int x = -1; x <= 1; ++x)
+        for (int y = -1; y <= 1; ++y)
+            lit += shadow2D(shadowMap, vec3(p.xy + vec2(x, y) * texelSize, p.z)).r;
+    return lit / 9.0;
+}
+
+void main()
+{
+    gl_FragColor = shade(worldPosition, worldNormal, litFraction(), shadowCoord.z / shadowCoord.w);
+}

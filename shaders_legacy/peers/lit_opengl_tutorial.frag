@@ -1,0 +1,33 @@
+#version 120
+// opengl-tutorial's lookup: four hardware compares (each a GL_LINEAR 2x2 PCF) spread on a
+// Poisson disk about 1/700 of the map wide, with a bias of 0.005 tan(acos(N.L)) in [0, 0.01].
+// The tutorial darkens by 0.2 per shadowed tap; here the lit fraction of the four taps feeds
+// the shared lighting, so only the lookup differs from ours.
+#include "common/phong.glsl"
+
+varying vec3 worldPosition;
+varying vec3 worldNormal;
+varying vec4 shadowCoord;
+
+uniform sampler2DShadow shadowMap;
+
+const vec2 disk[4] = vec2[](vec2(-0.94, -0.40), vec2(0.95, -0.77), vec2(-0.09, -0.93), vec2(0.34, 0.29));
+
+float litFraction(vec3 N, vec3 L)
+{
+    if (shadowCoord.w <= 0.0) return 1.0;
+    vec3 p = shadowCoord.xyz / shadowCoord.w;
+    float cosTheta = clamp(dot(N, L), 0.0, 1.0);
+    float bias = clamp(0.005 * tan(acos(cosTheta)), 0.0, 0.01);
+    float lit = 0.0;
+    for (int i = 0; i < 4; ++i)
+        lit += shadow2D(shadowMap, vec3(p.xy + disk[i] / 700.0, p.z - bias)).r;
+    return lit / 4.0;
+}
+
+void main()
+{
+    vec3 N = normalize(worldNormal);
+    vec3 L = normalize(lightPosition - worldPosition);
+    gl_FragColor = shade(worldPosition, worldNormal, litFraction(N, L), shadowCoord.z / shadowCoord.w);
+}

@@ -1,0 +1,2 @@
+#version 120
+#include "peers/lit_vertex.glsl"
