@@ -111,7 +111,6 @@ std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCa
     return results;
 }
 
-
 std::map<std::string, double> CheckResult::figureMap() const {
     return {{"false_shadow_pct", figures.falseShadowPct},
             {"false_lit_pct", figures.falseLitPct},
@@ -156,8 +155,9 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
             r.truthLit = e.figures.truthLit;
             r.truthShadow = e.figures.truthShadow;
             if (!diffPath.empty()) {
-                std::string err = writePng(
-                    diffPath, diffImage(rig.reference(), e.shadowed, e.withShadows, e.renderedIds));
+                std::string err =
+                    writePng(diffPath, diffImage(rig.reference(), e.shadowed, e.withShadows,
+                                                 e.renderedIds, e.figures.band));
                 if (!err.empty()) throw UsageError("--diff: " + err);
                 r.diffFile = diffPath;
             }
@@ -303,6 +303,8 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
         a.edgeP95Px = numberFrom(f.at("edge_p95_px"));
         a.mirrorIdPct = numberFrom(f.at("mirror_id_pct"));
         a.mirrorPsnrDb = numberFrom(f.at("mirror_psnr_db"));
+        a.darkWithoutCasterPct = numberFrom(f.at("dark_without_caster_pct"));
+        a.falseShadowSpecklePct = numberFrom(f.at("false_shadow_speckle_pct"));
         if (!std::isnan(a.falseShadowPct)) a.errorPct = 0.5 * (a.falseShadowPct + a.falseLitPct);
         if (!std::isnan(a.mirrorIdPct)) a.errorPct = 100.0 - a.mirrorIdPct;
         const auto& pixels = j.at("pixels");

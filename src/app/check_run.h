@@ -61,7 +61,6 @@ std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCa
                                        const std::function<std::string(const CheckCase&)>& diffPath,
                                        const std::function<void(const CheckResult&)>& progress);
 
-
 // The fixed-width table a check prints: a header, then one line per result.
 std::string checkTableHeader();
 std::string checkTableLine(const CheckResult& r);

@@ -191,21 +191,20 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
         if (!rig) rig = std::make_unique<Evaluator>(backend);
         return checkStageJob(*rig, plan[k], diffPath);
     };
-    runBoundedSeries(limits, plan.size(), job,
-                     [&](std::size_t k, const WorkerOutcome& outcome) {
-                         std::vector<CheckResult> results;
-                         if (outcome.kind != WorkerOutcome::Kind::Ok) {
-                             results.push_back(unjudgedResult(plan[k].front().request, outcome, limits));
-                             std::cerr << "shadowlab: " << results.back().judgement.message << "\n";
-                         } else {
-                             for (const auto& j : outcome.value.at("results")) {
-                                 results.push_back(checkResultFromJson(j));
-                                 results.back().backend = outcome.value.at("backend");
-                                 results.back().machine = outcome.value.at("machine");
-                             }
-                         }
-                         each(k, std::move(results));
-                     });
+    runBoundedSeries(limits, plan.size(), job, [&](std::size_t k, const WorkerOutcome& outcome) {
+        std::vector<CheckResult> results;
+        if (outcome.kind != WorkerOutcome::Kind::Ok) {
+            results.push_back(unjudgedResult(plan[k].front().request, outcome, limits));
+            std::cerr << "shadowlab: " << results.back().judgement.message << "\n";
+        } else {
+            for (const auto& j : outcome.value.at("results")) {
+                results.push_back(checkResultFromJson(j));
+                results.back().backend = outcome.value.at("backend");
+                results.back().machine = outcome.value.at("machine");
+            }
+        }
+        each(k, std::move(results));
+    });
 }
 
 int runCheckCommand(const CheckArgs& a) {

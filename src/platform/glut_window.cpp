@@ -188,6 +188,9 @@ int runWindow(const WindowArgs& args) {
     if (args.keys.find('\x1b') != std::string::npos)
         throw UsageError("--keys: Esc would quit before the last frame; leave it out");
     if (args.shots.empty()) throw UsageError("--shots: give a folder (it is created if missing)");
+    // An unknown stage is a usage error before any display is opened (the session checks the
+    // rest once it has a context: fixed runs legacy, mirror brings its scene).
+    if (!findStage(request.stage)) validateRequest(request);
     g = &state;
 
     int argc = 1;

@@ -15,6 +15,21 @@ RESULT_FIELDS = {"stage": str, "tree": str, "scene": str, "size": list, "paramet
                  "expectation": dict, "verdict": str, "message": str, "seconds": float}
 
 
+SEVERITY = {"SKIP": 0, "PASS": 1, "FAIL": 2, "ERROR": 3, "TIMEOUT": 3, "CRASH": 3}
+
+
+def rows_of(results, key):
+    """The rows of STAGE/TREE (every view and lesson), or the row named KEY."""
+    named = [r for r in results if r.get("name") == key]
+    return named or [r for r in results if f"{r['stage']}/{r['tree']}" == key]
+
+
+def first_row(results, key):
+    """The row named KEY, or STAGE/TREE's first row (its defaults seen from the first view)."""
+    rows = rows_of(results, key)
+    return rows[:1]
+
+
 def main():
     args = sys.argv[1:]
     with open(args.pop(0)) as f:
@@ -62,16 +77,17 @@ def main():
             problems.append(f"{len(results)} results, expected {value}")
         elif flag == "--exit" and summary.get("exit_code") != int(value):
             problems.append(f"exit_code {summary.get('exit_code')}, expected {value}")
-        elif flag == "--verdict":
+        elif flag == "--verdict":  # STAGE/TREE: the worst of its rows; or a row's full name
             key, verdict = value.split("=")
-            got = [r["verdict"] for r in results if f"{r['stage']}/{r['tree']}" == key]
-            if got != [verdict]:
-                problems.append(f"{key}: verdict {got}, expected {verdict}")
+            got = [r["verdict"] for r in rows_of(results, key)]
+            worst = max(got, key=lambda v: SEVERITY.get(v, 9)) if got else None
+            if worst != verdict:
+                problems.append(f"{key}: verdict {worst} of {got}, expected {verdict}")
         elif flag == "--figure":
             key, name, op, bound = value.split(":")
             if op not in ("lt", "gt"):
                 sys.exit(f"usage: --figure STAGE/TREE:NAME:lt|gt:VALUE, not {value}")
-            got = [r["figures"][name] for r in results if f"{r['stage']}/{r['tree']}" == key]
+            got = [r["figures"][name] for r in first_row(results, key)]
             if len(got) != 1 or got[0] is None or not (
                     got[0] < float(bound) if op == "lt" else got[0] > float(bound)):
                 problems.append(f"{key}: {name} = {got}, expected {op} {bound}")

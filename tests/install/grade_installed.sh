@@ -23,13 +23,13 @@ stages=$(run stages) && grep -q hardware <<<"$stages" || fail "'shadowlab stages
 mkdir -p "$tmp/good/hardware" "$tmp/bad/hardware"
 cp "$src/shaders_core/hardware/lit.frag" "$tmp/good/hardware/"
 printf '#version 330 core\nvoid main() { oops }\n' > "$tmp/bad/hardware/lit.frag"
-out=$(run check --stage hardware --size 160x120 --shaders "$tmp/good" --report "$tmp/good.json") ||
+out=$(run check --stage hardware --set filter=linear --shaders "$tmp/good" --report "$tmp/good.json") ||
   fail "the correct submission did not pass: $out"
 echo "$out" | grep -q "check against $data/src/stages/expectations.json" ||
   fail "expectations not read from the prefix: $out"
 grep -q '"verdict": "PASS"' "$tmp/good.json" || fail "report lacks PASS"
 set +e
-run check --stage hardware --size 160x120 --shaders "$tmp/bad" --report "$tmp/bad.json" \
+run check --stage hardware --set filter=linear --shaders "$tmp/bad" --report "$tmp/bad.json" \
   >/dev/null 2>"$tmp/err"
 code=$?
 set -e

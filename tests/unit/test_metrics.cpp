@@ -314,7 +314,8 @@ TEST(Metrics, WorkingRangeWithoutABreakOrWithoutAWorkingPoint) {
     // One that fails at grazing light: the break is the first value past the working range.
     WorkingRange grazes = workingRange(elevation, {0.2, 0.3, 6.0, 1.0, 9.0}, 5.0);
     EXPECT_EQ(grazes.to, 45.0);
-    EXPECT_EQ(grazes.breaksAfter, 15.0);  // 5 degrees works again, but the range ends at the first break
+    EXPECT_EQ(grazes.breaksAfter,
+              15.0);  // 5 degrees works again, but the range ends at the first break
     // Never under the threshold: not working, best point still reported.
     WorkingRange never = workingRange(elevation, {9, 8, 7, 8, 9}, 5.0);
     EXPECT_FALSE(never.works);
