@@ -2,7 +2,10 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "io/files.h"
@@ -255,6 +258,17 @@ void requireKnownAttributes(GLuint program, const std::string& vertexFile) {
 
 }  // namespace
 
+namespace {
+
+bool sameContents(const std::string& a, const std::string& b) {
+    std::ifstream x(a, std::ios::binary), y(b, std::ios::binary);
+    if (!x || !y) return false;
+    return std::equal(std::istreambuf_iterator<char>(x), std::istreambuf_iterator<char>(),
+                      std::istreambuf_iterator<char>(y), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
 ShaderLibrary::ShaderLibrary(GlslTree tree, std::string treeRoot, std::string overlay)
     : tree_(tree), root_(std::move(treeRoot)), overlay_(std::move(overlay)) {
     realRoot_ = realPath(root_);
@@ -336,11 +350,13 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     e.program.setOrigin(files);
     e.files = vert.files;
     e.files.insert(e.files.end(), frag.files.begin(), frag.files.end());
-    for (const auto& f : e.files) {
-        e.stamps.push_back(modificationStamp(f));
-        if (!overlay_.empty() && f.rfind(overlay_ + "/", 0) == 0)
+    for (const auto& f : e.files) e.stamps.push_back(modificationStamp(f));
+    // Notes about unused uniforms are for the student's own pass files, and only when they differ
+    // from ours: an unmodified copy, or an overridden include alone, leaves our shader ours.
+    for (const std::string* f : {&vert.files[0], &frag.files[0]})
+        if (!overlay_.empty() && f->rfind(overlay_ + "/", 0) == 0 &&
+            !sameContents(*f, root_ + "/" + f->substr(overlay_.size() + 1)))
             e.program.reportMissingUniforms(true);
-    }
     return e;
 }
 
