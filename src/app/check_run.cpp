@@ -124,17 +124,22 @@ std::map<std::string, double> CheckResult::figureMap() const {
             {"mirror_psnr_db", figures.mirrorPsnrDb}};
 }
 
-CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath) {
-    if (request.view != ViewMode::Final)
-        throw UsageError("--view " + std::string(viewName(request.view)) +
-                         ": check judges the final picture; use --view final (or leave it out)");
-    auto start = std::chrono::steady_clock::now();
+CheckResult checkResultFor(const RenderRequest& request) {
     CheckResult r;
     r.stage = request.stage;
     r.tree = treeName(request.tree);
     r.overlay = request.overlay;
     r.width = request.width;
     r.height = request.height;
+    return r;
+}
+
+CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath) {
+    if (request.view != ViewMode::Final)
+        throw UsageError("--view " + std::string(viewName(request.view)) +
+                         ": check judges the final picture; use --view final (or leave it out)");
+    auto start = std::chrono::steady_clock::now();
+    CheckResult r = checkResultFor(request);
     Renderer& renderer = rig.prepare(request);
     r.backend = rig.context().backendName();
     r.machine = machineLine();

@@ -37,6 +37,9 @@ struct CheckResult {
     std::map<std::string, double> figureMap() const;
 };
 
+// A result naming what `request` checks (stage, tree, overlay, size), nothing measured yet.
+CheckResult checkResultFor(const RenderRequest& request);
+
 // Renders and judges `request` (its view must be final); writes the diff image to `diffPath`
 // when not empty (shadow stages only). A shader that does not build is caught: the result is an
 // ERROR with the compiler's first line, the full message goes to stderr and the rig is reset.

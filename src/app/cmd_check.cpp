@@ -144,12 +144,7 @@ void describeUnrendered(const RenderRequest& r, CheckResult& out) {
 // submission (exit 2), with the one line that names the stage and the limit.
 CheckResult unjudgedResult(const RenderRequest& r, const WorkerOutcome& outcome,
                            const Limits& limits) {
-    CheckResult out;
-    out.stage = r.stage;
-    out.tree = treeName(r.tree);
-    out.overlay = r.overlay;
-    out.width = r.width;
-    out.height = r.height;
+    CheckResult out = checkResultFor(r);
     if (const StageInfo* info = findStage(r.stage)) out.parameters = ParamSet(info->params);
     for (const auto& [name, value] : r.sets) out.parameters.set(name, value);
     describeUnrendered(r, out);
