@@ -66,6 +66,9 @@ TEST(Worker, AJobPastTheTimeLimitIsKilledInTime) {
 
 TEST(Worker, ACrashIsReportedWithItsSignal) {
     WorkerOutcome o = runBounded({5, 512}, []() -> nlohmann::json {
+        // A driver crash under a sanitizer would end in the sanitizer's own handler (an exit
+        // code); the default action is what a grading machine sees.
+        ::signal(SIGSEGV, SIG_DFL);
         ::raise(SIGSEGV);
         return nullptr;
     });
