@@ -11,7 +11,7 @@ uniform mat4 shadowMatrix;
 
 out vec3 worldPosition;
 out vec3 worldNormal;
-out vec4 shadowCoord;  // textureProj divides by w itself
+out vec4 shadowCoord;  // divided by w in the fragment shader
 
 void main()
 {

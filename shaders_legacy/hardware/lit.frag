@@ -12,11 +12,13 @@ uniform sampler2DShadow shadowMap;
 
 void main()
 {
-    // A fixed-point depth texture clamps the reference to [0, 1]; a float one (depth-format=32f)
-    // does not, and a receiver beyond the light's far plane would fail the compare against the
-    // cleared map. Clamp it here so both formats agree: beyond the far plane only a caster in
-    // the map can shadow.
-    vec4 coord = vec4(shadowCoord.xy, min(shadowCoord.z, shadowCoord.w), shadowCoord.w);
-    float visibility = shadowCoord.w > 0.0 ? shadow2DProj(shadowMap, coord).r : 1.0;
-    gl_FragColor = shade(worldPosition, worldNormal, visibility, shadowCoord.z / shadowCoord.w);
+    // The projective divide done once here (not by shadow2DProj) serves the lookup and the
+    // light-depth view alike: fewer instructions per pixel on llvmpipe (docs/bench.md, issue 14).
+    vec3 p = shadowCoord.xyz / shadowCoord.w;
+    // A fixed-point depth texture clamps the reference to [0, 1]; a float one (depth-format=32f,
+    // the default) does not, and a receiver beyond the light's far plane would fail the compare
+    // against the cleared map. Clamp it here so both formats agree: beyond the far plane only a
+    // caster in the map can shadow.
+    float visibility = shadowCoord.w > 0.0 ? shadow2D(shadowMap, vec3(p.xy, min(p.z, 1.0))).r : 1.0;
+    gl_FragColor = shade(worldPosition, worldNormal, visibility, p.z);
 }

@@ -11,7 +11,7 @@ uniform mat4 shadowMatrix;
 
 varying vec3 worldPosition;
 varying vec3 worldNormal;
-varying vec4 shadowCoord;  // shadow2DProj divides by w itself
+varying vec4 shadowCoord;  // divided by w in the fragment shader
 
 void main()
 {

@@ -48,8 +48,9 @@ StageInfo hardwareStage() {
     s.params.push_back(
         ParamSpec::number("offset-units", 4.0, 0.0, 100.0, 1.0, "glPolygonOffset units"));
     s.params.push_back(ParamSpec::choice(
-        "depth-format", {"24", "32f", "16"},
-        "depth texture format (bits): 16 halves the memory the map re-render writes"));
+        "depth-format", {"32f", "24", "16"},
+        "depth texture format (bits): 32f, the default, is the cheapest compare on llvmpipe (the "
+        "lit shader clamps its reference to 1); 16 halves the memory the map re-render writes"));
     s.params.push_back(ParamSpec::choice(
         "shadow-cull", {"back", "none", "front"},
         "back: skip closed casters' faces turned away from the light (same map, half the "
