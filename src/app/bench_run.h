@@ -49,7 +49,8 @@ struct PassSamples {
 // and the figures are the Evaluator's.
 class BenchRig : public Evaluator {
   public:
-    using Evaluator::Evaluator;
+    // Figures to the pixel (EdgeTolerance::Pixel): the bench compares map sizes and methods.
+    explicit BenchRig(Backend backend) : Evaluator(backend, EdgeTolerance::Pixel) {}
     using Evaluator::prepare;
     // Selects the stage and its parameters (defaults + sets) on a renderer for the config's
     // tree, the stage's default scene and size: the request below, built from the config. The

@@ -98,7 +98,9 @@ ShadowEvidence Evaluator::shadowEvidence() {
                                   int(r.scene().objects.size()), 1.0f);
     ShadowFigureInputs inputs;
     inputs.renderedIds = e.renderedIds;
-    inputs.bandPx = mapTexelOnScreen(ref, r.camera, r.stats.lightViewProjection, r.stats.mapSize);
+    if (tolerance_ == EdgeTolerance::MapTexel)
+        inputs.bandPx =
+            mapTexelOnScreen(ref, r.camera, r.stats.lightViewProjection, r.stats.mapSize);
     inputs.darkWithoutCaster = classifyShadowed(e.allLit, e.baseline);
     e.shadowed = classifyShadowed(e.withShadows, e.allLit);
     for (std::size_t k = 0; k < e.shadowed.size(); ++k)

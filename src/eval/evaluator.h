@@ -45,7 +45,14 @@ struct ShadowEvidence {
 // context.
 class Evaluator {
   public:
-    explicit Evaluator(Backend backend) : backend_(backend) {}
+    // How far from the true shadow edge a rendered edge may be before it counts as an error.
+    // Grading forgives one shadow-map texel as it lands on screen (a method cannot resolve less
+    // than its map); comparing methods and map sizes must not: there a coarse map would forgive
+    // itself, so the bench and the sweeps measure to the pixel.
+    enum class EdgeTolerance { MapTexel, Pixel };
+
+    explicit Evaluator(Backend backend, EdgeTolerance tolerance = EdgeTolerance::MapTexel)
+        : backend_(backend), tolerance_(tolerance) {}
     virtual ~Evaluator() = default;
     // Selects the request's stage on a renderer for its tree, scene, size, overlay and camera:
     // parameters start from the defaults, then the request's camera, light, view and --set
@@ -75,6 +82,7 @@ class Evaluator {
     Image renderWith(Renderer& r, const std::string& stage);
 
     Backend backend_;
+    EdgeTolerance tolerance_;
     std::string key_;
     std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<Renderer> renderer_;

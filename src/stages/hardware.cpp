@@ -48,9 +48,10 @@ StageInfo hardwareStage() {
     s.params.push_back(
         ParamSpec::number("offset-units", 4.0, 0.0, 100.0, 1.0, "glPolygonOffset units"));
     s.params.push_back(ParamSpec::choice(
-        "depth-format", {"32f", "24", "16"},
-        "depth texture format (bits): 32f, the default, is the cheapest compare on llvmpipe (the "
-        "lit shader clamps its reference to 1); 16 halves the memory the map re-render writes"));
+        "depth-format", {"24", "32f", "16"},
+        "depth texture format (bits): 24 as the slides; 32f is the cheapest compare on llvmpipe "
+        "but does not clamp the reference, so a shader must clamp it (ours does); 16 halves the "
+        "memory the map re-render writes"));
     s.params.push_back(ParamSpec::choice(
         "shadow-cull", {"back", "none", "front"},
         "back: skip closed casters' faces turned away from the light (same map, half the "
