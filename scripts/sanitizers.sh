@@ -13,10 +13,10 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:exitcode=99
 export LSAN_OPTIONS=suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:exitcode=98
 echo "sanitizers: built in $((SECONDS - start)) s"
-ctest --test-dir build-asan -L unit --output-on-failure -j"$(nproc)"
+failed=0  # a failing part is reported and the others still run
+ctest --test-dir build-asan -L unit --output-on-failure -j"$(nproc)" || failed=1
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-failed=0
 stages=$(build-asan/shadowlab stages | awk '$1 ~ /^[0-9]+$/ {print $2}')
 for tree in core legacy; do
   for stage in $stages; do
