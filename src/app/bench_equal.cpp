@@ -68,7 +68,7 @@ std::vector<Measured> searchEqualAccuracy(BenchRig& rig, const std::vector<Bench
         std::size_t k = v.cheapest ? *v.cheapest : *v.closest;
         BenchConfig c = candidates[k];
         c.group = v.cheapest ? "equal-accuracy" : "equal-accuracy-unreached";
-        Measured m{c, c.sceneName(), {}, {}, {}, {}, {}, {}, accuracy[k]};
+        Measured m{c, c.sceneName(), {}, {}, {}, {}, {}, {}, accuracy[k], {}};
         auto still = rig.timeBesidePhong(candidates[k], framesPerBlock, blocks, false);
         auto move = moving.count(k)
                         ? moving[k]

@@ -254,7 +254,7 @@ int runBench(const BenchArgs& a) {
     bool tty = isatty(STDERR_FILENO);
     for (std::size_t k = 0; k < configs.size(); ++k) {
         const BenchConfig& c = configs[k];
-        Measured m{c, c.sceneName(), {}, {}, {}, {}, {}, {}, {}};
+        Measured m{c, c.sceneName(), {}, {}, {}, {}, {}, {}, {}, {}};
         if (c.group == "baseline") {
             // phong on its own: its ratio is 1 by definition. It draws no map, so a moving light
             // costs it nothing: one measurement (still and moving blocks pooled) serves both rows,

@@ -147,8 +147,10 @@ int runSweep(const SweepArgs& a) {
         Series line{
             stage + (c.tree == GlslTree::Legacy && tree == GlslTree::Core ? " (legacy)" : ""),
             {},
+            {},
+            {},
             {}};
-        Series edge{line.title, {}, {}};
+        Series edge{line.title, {}, {}, {}, {}};
         for (double v : values) {
             BenchConfig at = c;
             std::optional<glm::vec3> light;
