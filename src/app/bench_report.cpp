@@ -13,8 +13,10 @@ namespace sl {
 
 namespace {
 
-// The speed targets of issue 6, at 640x480 with a 1024 map.
-constexpr double kHardwareMovingTarget = 1.3, kHardwareStillTarget = 1.05, kMirrorTarget = 2.2;
+// The speed targets at 640x480 with a 1024 map: issue 14's for hardware (2x2 PCF and nearest with
+// a still light; issue 6 had asked 1.05x for the 2x2 filter), issue 6's for the mirror.
+constexpr double kHardwareMovingTarget = 1.3, kHardwareStillTarget = 1.12,
+                 kNearestStillTarget = 1.06, kMirrorTarget = 2.2;
 
 const std::vector<std::string> kColumns = {"group",
                                            "series",
@@ -415,6 +417,13 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
                           verdict(m.ratioMoving, kHardwareMovingTarget).c_str(), still,
                           kHardwareStillTarget,
                           verdict(m.ratioStill, kHardwareStillTarget).c_str());
+            s << line;
+        }
+        if (c.series == "hardware/nearest" && mapSize(c) == 1024 && c.width == 640) {
+            std::snprintf(line, sizeof line,
+                          "target hardware filter=nearest, light still: %.2fx phong (<= %.2f: %s)\n",
+                          m.ratio(false), kNearestStillTarget,
+                          verdict(m.ratioStill, kNearestStillTarget).c_str());
             s << line;
         }
         if (mirror) {
