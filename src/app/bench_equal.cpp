@@ -73,12 +73,7 @@ std::vector<Measured> searchEqualAccuracy(BenchRig& rig, const std::vector<Bench
         auto move = moving.count(k)
                         ? moving[k]
                         : rig.timeBesidePhong(candidates[k], framesPerBlock, blocks, true);
-        m.still = still.config;
-        m.phongStill = still.phong;
-        m.ratioStill = still.ratio;
-        m.moving = move.config;
-        m.phongMoving = move.phong;
-        m.ratioMoving = move.ratio;
+        m.setTimes(still, move);
         progress(c.group + " " + c.series + ": " + c.setsText());
         out.push_back(m);
     }

@@ -26,6 +26,15 @@ struct Measured {
         return movingLight ? ratioMoving : ratioStill;
     }
     double ratio(bool movingLight) const { return ratios(movingLight).median; }
+    // Takes the times of a configuration measured beside phong, still light and moving.
+    void setTimes(const BenchRig::Paired& stillLight, const BenchRig::Paired& movingLight) {
+        still = stillLight.config;
+        phongStill = stillLight.phong;
+        ratioStill = stillLight.ratio;
+        moving = movingLight.config;
+        phongMoving = movingLight.phong;
+        ratioMoving = movingLight.ratio;
+    }
 };
 
 // "tree/scene/WxH": configurations with the same key share a context and a phong baseline.

@@ -267,13 +267,7 @@ int runBench(const BenchArgs& a) {
             m.ratioStill = m.ratioMoving = RatioSummary{blocks, 1.0, 1.0, 1.0};
         } else {
             auto still = rig.timeBesidePhong(c, framesPerBlock, blocks, false);
-            auto moving = rig.timeBesidePhong(c, framesPerBlock, blocks, true);
-            m.still = still.config;
-            m.phongStill = still.phong;
-            m.ratioStill = still.ratio;
-            m.moving = moving.config;
-            m.phongMoving = moving.phong;
-            m.ratioMoving = moving.ratio;
+            m.setTimes(still, rig.timeBesidePhong(c, framesPerBlock, blocks, true));
         }
         if (machine.empty()) machine = machineLine();
         rig.prepare(c);
