@@ -8,10 +8,14 @@ cd "$(dirname "$0")/.."
 bash scripts/deps.sh
 bash scripts/build.sh >/dev/null
 out=docs/results
+start=$SECONDS
 ./build/shadowlab bench --out "$out/bench" ${SL_INSTRUCTIONS:+--instructions}
+echo "results: bench took $((SECONDS - start)) s"
+start=$SECONDS
 for axis in elevation margin offset near-far map-size; do
   ./build/shadowlab sweep "$axis" --out "$out/sweep"
 done
+echo "results: sweeps took $((SECONDS - start)) s"
 python3 scripts/results_md.py "$out" > docs/results.md.tmp
 mv docs/results.md.tmp docs/results.md
 echo "wrote docs/results.md"

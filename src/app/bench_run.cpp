@@ -113,15 +113,16 @@ PassSamples BenchRig::time(int warmup, int frames, bool movingLight) {
     return {frame, shadow, lit, mirror, r.stats.shadowMapRenders - rendersBefore};
 }
 
-void countedFrames(BenchRig& rig, int frames, bool movingLight) {
+unsigned countedFrames(BenchRig& rig, int frames, bool movingLight) {
 #ifdef SL_HAVE_CALLGRIND
     CALLGRIND_TOGGLE_COLLECT;  // on (the child runs with --collect-atstart=no)
-    rig.time(0, frames, movingLight);
+    PassSamples counted = rig.time(0, frames, movingLight);
     CALLGRIND_TOGGLE_COLLECT;            // off
     CALLGRIND_DUMP_STATS_AT("counted");  // one dump file per call, in call order
 #else
-    rig.time(0, frames, movingLight);
+    PassSamples counted = rig.time(0, frames, movingLight);
 #endif
+    return counted.mapRenders;
 }
 
 }  // namespace sl

@@ -77,6 +77,6 @@ class BenchRig : public Evaluator {
 // The frames `bench --instructions` counts under callgrind (metrics/callgrind.h): `frames` frames
 // of the rig's current configuration, collected between two callgrind client requests and
 // dumped to a file of their own (valgrind's header; without it nothing is counted).
-void countedFrames(BenchRig& rig, int frames, bool movingLight);
+unsigned countedFrames(BenchRig& rig, int frames, bool movingLight);  // returns the map renders
 
 }  // namespace sl
