@@ -80,19 +80,24 @@ def front_section(rows):
             else:
                 unbeaten.append(f"{p['series']} {int(p['map_size'])} (error {f(p['error_pct'])} %, "
                                 f"{f(pc)}x phong)")
-        # The wording: a peer configuration both cheaper and more accurate than one of ours.
-        beats = [(p, o) for p in peers for o in ours
-                 if cost_of(p)[0] is not None and cost_of(o)[0] is not None
-                 and cost_of(p)[0] < cost_of(o)[0] and p["error_pct"] < o["error_pct"]]
+        # The wording: no peer configuration both cheaper and more accurate than a point
+        # of our front (our configurations no other of ours beats in both).
+        front = [o for o in ours if cost_of(o)[0] is not None and not any(
+            cost_of(x)[0] is not None and cost_of(x)[0] <= cost_of(o)[0]
+            and x["error_pct"] <= o["error_pct"] and (cost_of(x)[0], x["error_pct"]) != (cost_of(o)[0], o["error_pct"])
+            for x in ours)]
+        beats = [(p, o) for p in peers for o in front
+                 if cost_of(p)[0] is not None and cost_of(p)[0] < cost_of(o)[0]
+                 and p["error_pct"] < o["error_pct"]]
         lines.append(f"- light {light}, cost in {unit}: {beaten} of {len(peers)} peer configurations "
                      "have one of ours at most as costly and at most as wrong"
                      + ("." if not unbeaten else "; not matched: " + "; ".join(unbeaten) + ".")
-                     + f" Pairs where a peer configuration is both cheaper and more accurate than "
-                     f"one of ours: {len(beats)}"
-                     + ("." if not beats else ", e.g. " + "; ".join(
-                         f"{p['series']} {int(p['map_size'])} ({f(p['error_pct'])} %, {f(cost_of(p)[0])}x) "
-                         f"over {o['series']} {int(o['map_size'])} ({f(o['error_pct'])} %, {f(cost_of(o)[0])}x)"
-                         for p, o in beats[:3]) + "."))
+                     + f" Our front ({len(front)} points): "
+                     + ("no peer configuration is both cheaper and more accurate than a point of it."
+                        if not beats else "beaten in both by " + "; ".join(
+                            f"{p['series']} {int(p['map_size'])} ({f(p['error_pct'])} %, {f(cost_of(p)[0])}x) "
+                            f"over {o['series']} {int(o['map_size'])} ({f(o['error_pct'])} %, {f(cost_of(o)[0])}x)"
+                            for p, o in beats) + "."))
     out.append("\n".join(lines))
     out.append("\nOurs: `rgb`, `depth`, `bias`, `margin`, `hardware`, `fixed`; theirs: the `peers` "
                "stage (LearnOpenGL, opengl-tutorial, normal offset). With milliseconds the answer "

@@ -141,6 +141,10 @@ std::string chartScript(const std::string& machine, bool instructions) {
     g << "# Regenerate the charts from the .dat files beside this script: gnuplot charts.gp\n"
       << "set terminal pngcairo size 960,640 font 'sans,10'\n"
       << "set key outside right top\nset grid\n"
+      // gnuplot's default colours cycle after 8: more than 8 series (methods) would share one.
+      << "set linetype 9 lc rgb '#8c564b'\nset linetype 10 lc rgb '#7f7f7f'\n"
+      << "set linetype 11 lc rgb '#17becf'\nset linetype 12 lc rgb '#bcbd22'\n"
+      << "set linetype cycle 12\n"
       << "machine = '" << machine << "'\n"
       << "set output 'error-vs-time.png.tmp'\n"
       << "set title \"Error against frame time (640x480, light moving every frame)\\n\".machine\n"
@@ -161,14 +165,16 @@ std::string chartScript(const std::string& machine, bool instructions) {
       << (instructions
               ? "set output 'error-vs-instructions.png.tmp'\n"
                 "set title \"Error against instructions per frame (640x480, light moving; "
-                "callgrind, LP_NUM_THREADS=0)\\n\".machine\n"
+                "callgrind, LP_NUM_THREADS=0)\\n\".machine noenhanced\n"
                 "set xlabel 'instructions per frame, millions (deterministic)'\n"
+                "set xtics (20, 30, 40, 50, 70, 100, 150, 200, 300)\n"
                 "set label 1 \"lines: each method's Pareto front; an error of 0 is drawn at "
                 "0.001\" at graph 0.01, graph 0.03\n"
                 "plot for [i=0:*] 'instructions.dat' index i using 1:(shown($2)) with points pt 7 "
                 "ps 0.8 lc i+1 title columnheader(1), \\\n"
                 "     for [i=0:*] 'instructions-pareto.dat' index i using 1:(shown($2)) with lines "
                 "lw 2 lc i+1 notitle\n"
+                "set xtics autofreq\n"
               : "")
       << "unset logscale xy\nunset label 1\nset yrange [*:*]\n"
       << "set output 'time-vs-map-size.png.tmp'\n"
@@ -420,10 +426,11 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
             s << line;
         }
         if (c.series == "hardware/nearest" && mapSize(c) == 1024 && c.width == 640) {
-            std::snprintf(line, sizeof line,
-                          "target hardware filter=nearest, light still: %.2fx phong (<= %.2f: %s)\n",
-                          m.ratio(false), kNearestStillTarget,
-                          verdict(m.ratioStill, kNearestStillTarget).c_str());
+            std::snprintf(
+                line, sizeof line,
+                "target hardware filter=nearest, light still: %.2fx phong (<= %.2f: %s)\n",
+                m.ratio(false), kNearestStillTarget,
+                verdict(m.ratioStill, kNearestStillTarget).c_str());
             s << line;
         }
         if (mirror) {
