@@ -1,5 +1,6 @@
 #include "render_fixture.h"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -14,7 +15,8 @@
 namespace sl::test {
 
 Rendered renderHeadless(const RenderRequest& request, bool allLit) {
-    auto context = createHeadlessContext(Backend::Auto, request.tree, request.width, request.height);
+    auto context =
+        createHeadlessContext(Backend::Auto, request.tree, request.width, request.height);
     installGlDebugOutput();
     auto renderer = makeRenderer(request);
     renderer->allLit = allLit;
@@ -34,7 +36,8 @@ int runShadowlab(const std::string& arguments, std::string* output) {
     if (!pipe) return -1;
     std::string text;
     std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) text.append(buffer.data(), n);
+    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+        text.append(buffer.data(), n);
     int status = ::pclose(pipe);
     if (output) *output = text;
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -50,6 +53,36 @@ bool pixelOf(const RenderRequest& request, const glm::vec3& world, int& i, int& 
     i = static_cast<int>(px.x);
     j = static_cast<int>(px.y);
     return i >= 0 && j >= 0 && i < request.width && j < request.height;
+}
+
+RenderRequest smallRequest(const std::string& stage, GlslTree tree, Settings sets) {
+    RenderRequest r;
+    r.stage = stage;
+    r.tree = tree;
+    r.width = 320;
+    r.height = 240;
+    r.sets = std::move(sets);
+    return r;
+}
+
+float lumaAt(const Image& image, const RenderRequest& request, glm::vec3 world) {
+    int i = 0, j = 0;
+    EXPECT_TRUE(pixelOf(request, world, i, j)) << "point off screen";
+    return image.luma(i, j);
+}
+
+double darkenedNearLightShare(const Image& stage, const Image& phong,
+                              const RenderRequest& request) {
+    int dark = 0, total = 0;
+    for (float x = 0.9f; x <= 1.4f; x += 0.02f)
+        for (float z = -1.3f; z <= 1.3f; z += 0.05f) {
+            if (z > -0.9f && z < 0.6f && x < 1.0f) continue;
+            int i = 0, j = 0;
+            if (!pixelOf(request, {x, 0.0f, z}, i, j)) continue;
+            ++total;
+            dark += stage.luma(i, j) < 0.85f * phong.luma(i, j);
+        }
+    return total ? double(dark) / total : 0.0;
 }
 
 std::string tempDir(const std::string& tag) {

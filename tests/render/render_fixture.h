@@ -2,6 +2,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "metrics/image.h"
 #include "render/request.h"
@@ -24,6 +26,26 @@ int runShadowlab(const std::string& arguments, std::string* output = nullptr);
 
 // The pixel of the image where a world point lands for the request's camera.
 bool pixelOf(const RenderRequest& request, const glm::vec3& world, int& i, int& j);
+
+// The shadow tests' probes on the slides scene (light at (2,1,0)), at 320x240.
+using Settings = std::vector<std::pair<std::string, std::string>>;
+RenderRequest smallRequest(const std::string& stage, GlslTree tree, Settings sets = {});
+
+// Floor points deep inside each caster's shadow (found with the reference geometry: the segment
+// to the light crosses the caster well inside its outline): floating cube, standing cube, sphere
+// (visible past the floating cube).
+inline const glm::vec3 kDeepShadow[] = {
+    {-1.2f, 0.0f, 0.0f}, {-0.1f, 0.0f, 0.25f}, {0.0f, 0.0f, -0.667f}};
+// Floor points clearly lit: between the light and the casters, or off to the side.
+inline const glm::vec3 kClearlyLit[] = {
+    {1.2f, 0.0f, 0.6f}, {1.2f, 0.0f, -1.2f}, {-0.5f, 0.0f, 1.3f}};
+
+// Luma of the pixel where a world point lands (a failed expectation if it is off screen).
+float lumaAt(const Image& image, const RenderRequest& request, glm::vec3 world);
+
+// Share of the open floor near the light (where nothing casts a shadow) rendered darker than
+// phong: acne, or a broken map.
+double darkenedNearLightShare(const Image& stage, const Image& phong, const RenderRequest& request);
 
 // A fresh, empty temporary folder.
 std::string tempDir(const std::string& tag);

@@ -11,47 +11,9 @@ using namespace sl::test;
 
 namespace {
 
-using Sets = std::vector<std::pair<std::string, std::string>>;
-
-RenderRequest request(const std::string& stage, GlslTree tree, Sets sets = {}) {
-    RenderRequest r;
-    r.stage = stage;
-    r.tree = tree;
-    r.width = 320;
-    r.height = 240;
-    r.sets = std::move(sets);
-    return r;
-}
-
-// The same floor points as test_shadow_stages.cpp: deep inside each caster's shadow (light at
-// (2,1,0)), and clearly lit.
-const glm::vec3 kDeepShadow[] = {{-1.2f, 0.0f, 0.0f}, {-0.1f, 0.0f, 0.25f}, {0.0f, 0.0f, -0.667f}};
-const glm::vec3 kClearlyLit[] = {{1.2f, 0.0f, 0.6f}, {1.2f, 0.0f, -1.2f}, {-0.5f, 0.0f, 1.3f}};
-
-float luma(const Image& img, const RenderRequest& r, glm::vec3 p) {
-    int i = 0, j = 0;
-    EXPECT_TRUE(pixelOf(r, p, i, j));
-    return img.luma(i, j);
-}
-
-// Share of the open floor near the light (where nothing casts a shadow) rendered darker than
-// phong: acne.
-double acneShare(const Image& stage, const Image& phong, const RenderRequest& r) {
-    int dark = 0, total = 0;
-    for (float x = 0.9f; x <= 1.4f; x += 0.02f)
-        for (float z = -1.3f; z <= 1.3f; z += 0.05f) {
-            if (z > -0.9f && z < 0.6f && x < 1.0f) continue;
-            int i = 0, j = 0;
-            if (!pixelOf(r, {x, 0.0f, z}, i, j)) continue;
-            ++total;
-            dark += stage.luma(i, j) < 0.85f * phong.luma(i, j);
-        }
-    return total ? double(dark) / total : 0.0;
-}
-
 struct Method {
     std::string name, stage;
-    Sets sets;
+    Settings sets;
     bool acneNearLight;  // opengl-tutorial: its bias vanishes where N.L = 1
 };
 
@@ -72,21 +34,21 @@ class Peers : public ::testing::TestWithParam<std::tuple<Method, GlslTree>> {};
 
 TEST_P(Peers, ShadowsWhereTheReferencePutsThem) {
     auto [m, tree] = GetParam();
-    RenderRequest r = request(m.stage, tree, m.sets);
+    RenderRequest r = smallRequest(m.stage, tree, m.sets);
     Rendered out = renderHeadless(r);
     ASSERT_EQ(out.glErrors, 0);
-    RenderRequest phongRequest = request("phong", tree);
+    RenderRequest phongRequest = smallRequest("phong", tree);
     Image phong = renderHeadless(phongRequest).image;
     for (glm::vec3 p : kDeepShadow)
-        EXPECT_LT(luma(out.image, r, p), 0.6f * luma(phong, r, p))
+        EXPECT_LT(lumaAt(out.image, r, p), 0.6f * lumaAt(phong, r, p))
             << m.name << " should shadow the floor at " << p.x << "," << p.z;
-    double acne = acneShare(out.image, phong, r);
+    double acne = darkenedNearLightShare(out.image, phong, r);
     if (m.acneNearLight) {
         EXPECT_GT(acne, 0.05) << m.name << ": its bias is 0 where the light hits square on";
     } else {
         EXPECT_LT(acne, 0.02) << m.name;
         for (glm::vec3 p : kClearlyLit)
-            EXPECT_GT(luma(out.image, r, p), 0.9f * luma(phong, r, p))
+            EXPECT_GT(lumaAt(out.image, r, p), 0.9f * lumaAt(phong, r, p))
                 << m.name << " should light the floor at " << p.x << "," << p.z;
     }
 }
@@ -95,7 +57,7 @@ TEST_P(Peers, EveryDebugViewRendersWithoutGlErrors) {
     auto [m, tree] = GetParam();
     for (ViewMode v :
          {ViewMode::ShadowMap, ViewMode::Light, ViewMode::Visibility, ViewMode::LightDepth}) {
-        RenderRequest r = request(m.stage, tree, m.sets);
+        RenderRequest r = smallRequest(m.stage, tree, m.sets);
         r.view = v;
         EXPECT_EQ(renderHeadless(r).glErrors, 0) << m.name << " " << viewName(v);
     }
@@ -111,8 +73,8 @@ INSTANTIATE_TEST_SUITE_P(All, Peers,
 
 TEST(PeersTrees, CoreAndLegacyAgree) {
     for (const Method& m : kMethods) {
-        Image a = renderHeadless(request(m.stage, GlslTree::Core, m.sets)).image;
-        Image b = renderHeadless(request(m.stage, GlslTree::Legacy, m.sets)).image;
+        Image a = renderHeadless(smallRequest(m.stage, GlslTree::Core, m.sets)).image;
+        Image b = renderHeadless(smallRequest(m.stage, GlslTree::Legacy, m.sets)).image;
         long off = 0;  // under 0.5 % of the pixels differ by more than 8 levels
         for (int j = 0; j < a.height; ++j)
             for (int i = 0; i < a.width; ++i)
@@ -129,7 +91,7 @@ TEST(PeersTrees, CoreAndLegacyAgree) {
 // light or the scene changed.
 TEST(PeersMap, TheTutorialsRedrawEveryFrameNormalOffsetOnlyWhenStale) {
     for (const char* method : {"learnopengl", "opengl-tutorial", "normal-offset"}) {
-        RenderRequest r = request("peers", GlslTree::Core, {{"method", method}});
+        RenderRequest r = smallRequest("peers", GlslTree::Core, {{"method", method}});
         auto context = createHeadlessContext(Backend::Auto, r.tree, r.width, r.height);
         auto renderer = makeRenderer(r);
         for (int k = 0; k < 3; ++k) renderer->render(context->framebuffer(), r.width, r.height);
@@ -142,7 +104,7 @@ TEST(PeersMap, TheTutorialsRedrawEveryFrameNormalOffsetOnlyWhenStale) {
 // 3x3 PCF: nine compares give more distinct visibility levels on edges than one (nearest), and
 // only the ten multiples of 1/9.
 TEST(PeersPcf, NineComparesGiveGreysOnEdges) {
-    RenderRequest r = request("hardware", GlslTree::Core, {{"filter", "pcf3x3"}});
+    RenderRequest r = smallRequest("hardware", GlslTree::Core, {{"filter", "pcf3x3"}});
     r.view = ViewMode::Visibility;
     Image v = renderHeadless(r).image;
     int greys = 0, offLevel = 0;

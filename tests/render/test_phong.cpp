@@ -8,29 +8,10 @@
 using namespace sl;
 using namespace sl::test;
 
-namespace {
-
-RenderRequest phong(GlslTree tree) {
-    RenderRequest r;
-    r.stage = "phong";
-    r.tree = tree;
-    r.width = 320;
-    r.height = 240;
-    return r;
-}
-
-float lumaAt(const Image& img, const RenderRequest& r, glm::vec3 world) {
-    int i = 0, j = 0;
-    EXPECT_TRUE(pixelOf(r, world, i, j)) << "point off screen";
-    return img.luma(i, j);
-}
-
-}  // namespace
-
 class PhongBothTrees : public ::testing::TestWithParam<GlslTree> {};
 
 TEST_P(PhongBothTrees, BackgroundWhereNothingIs) {
-    RenderRequest r = phong(GetParam());
+    RenderRequest r = smallRequest("phong", GetParam());
     Rendered out = renderHeadless(r);
     ASSERT_EQ(out.glErrors, 0);
     // The top-left corner looks over the floor into the empty background.
@@ -41,7 +22,7 @@ TEST_P(PhongBothTrees, BackgroundWhereNothingIs) {
 }
 
 TEST_P(PhongBothTrees, FloorUnderTheLightIsBrighterThanAFaceTurnedAway) {
-    RenderRequest r = phong(GetParam());
+    RenderRequest r = smallRequest("phong", GetParam());
     Rendered out = renderHeadless(r);
     // Floor near the light (2,1,0) vs the floating cube's -x face, which the light cannot see.
     float floorNearLight = lumaAt(out.image, r, {1.2f, 0.0f, 0.6f});
@@ -51,7 +32,7 @@ TEST_P(PhongBothTrees, FloorUnderTheLightIsBrighterThanAFaceTurnedAway) {
 }
 
 TEST_P(PhongBothTrees, NoShadowsWhereTheCastersBlockTheLight) {
-    RenderRequest r = phong(GetParam());
+    RenderRequest r = smallRequest("phong", GetParam());
     Rendered out = renderHeadless(r);
     // On the floor behind the floating cube (away from the light) phong is still fully lit:
     // the picture the lecture starts from. Compare with open floor at a similar distance.
@@ -64,8 +45,8 @@ INSTANTIATE_TEST_SUITE_P(Trees, PhongBothTrees, ::testing::Values(GlslTree::Core
                          [](const auto& info) { return std::string(treeName(info.param)); });
 
 TEST(Phong, CoreAndLegacyAgree) {
-    Image a = renderHeadless(phong(GlslTree::Core)).image;
-    Image b = renderHeadless(phong(GlslTree::Legacy)).image;
+    Image a = renderHeadless(smallRequest("phong", GlslTree::Core)).image;
+    Image b = renderHeadless(smallRequest("phong", GlslTree::Legacy)).image;
     ASSERT_EQ(a.rgba.size(), b.rgba.size());
     // Tolerance: at most 2 levels per channel anywhere (the two trees run the same maths).
     int worst = 0;
@@ -74,7 +55,7 @@ TEST(Phong, CoreAndLegacyAgree) {
 }
 
 TEST(Phong, SphereSilhouetteIsRoundToHalfAPixel) {
-    RenderRequest r = phong(GlslTree::Core);
+    RenderRequest r = smallRequest("phong", GlslTree::Core);
     r.width = 640;
     r.height = 480;
     Rendered out = renderHeadless(r);
@@ -99,7 +80,7 @@ TEST(StudentOverlay, ACorrectShaderIsUsed) {
     std::ofstream(dir + "/phong/lit.frag") << "#version 330 core\n"
                                               "out vec4 fragColor;\n"
                                               "void main() { fragColor = vec4(1.0, 0.0, 1.0, 1.0); }\n";
-    RenderRequest r = phong(GlslTree::Core);
+    RenderRequest r = smallRequest("phong", GlslTree::Core);
     r.overlay = dir;
     Rendered out = renderHeadless(r);
     int i = 0, j = 0;
