@@ -13,8 +13,9 @@ namespace {
 // the one source of truth (`expectation` and `expected` below both come from it).
 const Expectation& defaultsEntry(const StageInfo& s) {
     std::string tree = s.legacyOnly ? "legacy" : "core";
-    return *findExpectation(expectations(), s.id, s.defaultScene.empty() ? "slides" : s.defaultScene,
-                            tree, ParamSet(s.params))
+    return *findExpectation(expectations(), s.id,
+                            s.defaultScene.empty() ? "slides" : s.defaultScene, tree,
+                            ParamSet(s.params))
                 .entry;
 }
 
@@ -48,10 +49,14 @@ int listStages(bool json) {
         nlohmann::json out = nlohmann::json::array();
         int key = 0;
         for (const auto& s : stageRegistry()) {
-            nlohmann::json j{{"id", s.id},           {"key", key++},
-                             {"title", s.title},     {"lecture", s.lecture},
-                             {"expectation", defaultsEntry(s).outcome + ": " + defaultsEntry(s).why},
-                             {"trees", s.legacyOnly ? nlohmann::json{"legacy"} : nlohmann::json{"core", "legacy"}}};
+            nlohmann::json j{
+                {"id", s.id},
+                {"key", key++},
+                {"title", s.title},
+                {"lecture", s.lecture},
+                {"expectation", defaultsEntry(s).outcome + ": " + defaultsEntry(s).why},
+                {"trees",
+                 s.legacyOnly ? nlohmann::json{"legacy"} : nlohmann::json{"core", "legacy"}}};
             j["expected"] = expectedJson(defaultsEntry(s));
             j["parameters"] = nlohmann::json::array();
             for (const auto& p : s.params) j["parameters"].push_back(paramJson(p));
@@ -64,15 +69,16 @@ int listStages(bool json) {
     }
     int key = 0;
     for (const auto& s : stageRegistry()) {
-        std::cout << key++ << "  " << s.id << "  " << s.title << (s.legacyOnly ? "  [legacy only]" : "")
-                  << "\n     " << s.lecture << "\n";
+        std::cout << key++ << "  " << s.id << "  " << s.title
+                  << (s.legacyOnly ? "  [legacy only]" : "") << "\n     " << s.lecture << "\n";
         const Expectation& e = defaultsEntry(s);
         std::string limits;
-        for (const Limit& l : e.limits) limits += (limits.empty() ? "" : ", ") + l.figure + " " + l.bound();
+        for (const Limit& l : e.limits)
+            limits += (limits.empty() ? "" : ", ") + l.figure + " " + l.bound();
         std::cout << "     expected: " << e.outcome << "; check: " << limits << "\n";
         for (const auto& p : s.params)
-            std::cout << "     --set " << p.name << "=" << p.defaultText() << "   (" << p.rangeText()
-                      << ") " << p.help << "\n";
+            std::cout << "     --set " << p.name << "=" << p.defaultText() << "   ("
+                      << p.rangeText() << ") " << p.help << "\n";
     }
     return kOk;
 }

@@ -9,7 +9,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     std::vector<sl::Command> commands = {sl::addStagesCommand(app), sl::addRenderCommand(app),
                                          sl::addWindowCommand(app), sl::addBenchCommand(app),
-                                         sl::addSweepCommand(app), sl::addCheckCommand(app),
+                                         sl::addSweepCommand(app),  sl::addCheckCommand(app),
                                          sl::addExampleCommand(app)};
     try {
         app.parse(argc, argv);

@@ -16,7 +16,7 @@ void report(const std::string& message) {
 }
 
 void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity,
-                             GLsizei length, const GLchar* message, const void* user) {
+                                 GLsizei length, const GLchar* message, const void* user) {
     // Only real errors count; performance and portability notes from llvmpipe are noise here.
     // Compile and link failures are the shader library's to report (as ShaderError, with file
     // and line, exit 2): counted here too they printed twice and made the window exit 3.
@@ -26,19 +26,31 @@ void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum s
 
 const char* errorName(GLenum e) {
     switch (e) {
-        case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
-        case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
-        case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
-        case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
-        case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
-        default: return "unknown GL error";
+        case GL_INVALID_ENUM:
+            return "GL_INVALID_ENUM";
+        case GL_INVALID_VALUE:
+            return "GL_INVALID_VALUE";
+        case GL_INVALID_OPERATION:
+            return "GL_INVALID_OPERATION";
+        case GL_INVALID_FRAMEBUFFER_OPERATION:
+            return "GL_INVALID_FRAMEBUFFER_OPERATION";
+        case GL_OUT_OF_MEMORY:
+            return "GL_OUT_OF_MEMORY";
+        default:
+            return "unknown GL error";
     }
 }
 }  // namespace
 
-PassScope::PassScope(const char* name) : previous_(g_pass) { g_pass = name; }
-PassScope::~PassScope() { g_pass = previous_; }
-const char* currentPass() { return g_pass; }
+PassScope::PassScope(const char* name) : previous_(g_pass) {
+    g_pass = name;
+}
+PassScope::~PassScope() {
+    g_pass = previous_;
+}
+const char* currentPass() {
+    return g_pass;
+}
 
 void installGlDebugOutput() {
     g_errors = 0;
@@ -49,9 +61,15 @@ void installGlDebugOutput() {
     }
 }
 
-int glErrorCount() { return g_errors; }
-void resetGlErrorCount() { g_errors = 0; }
-std::string lastGlError() { return g_lastError; }
+int glErrorCount() {
+    return g_errors;
+}
+void resetGlErrorCount() {
+    g_errors = 0;
+}
+std::string lastGlError() {
+    return g_lastError;
+}
 
 bool checkGlErrors(const char* file, int line) {
     bool ok = true;
@@ -66,18 +84,26 @@ bool checkGlErrors(const char* file, int line) {
 
 const char* framebufferStatusName(GLenum status) {
     switch (status) {
-        case GL_FRAMEBUFFER_COMPLETE: return "GL_FRAMEBUFFER_COMPLETE";
-        case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
-        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+        case GL_FRAMEBUFFER_COMPLETE:
+            return "GL_FRAMEBUFFER_COMPLETE";
+        case GL_FRAMEBUFFER_UNDEFINED:
+            return "GL_FRAMEBUFFER_UNDEFINED";
+        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
+            return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
         case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
             return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
-        case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
-        case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
-        case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
-        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+        case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER:
+            return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
+        case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER:
+            return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
+        case GL_FRAMEBUFFER_UNSUPPORTED:
+            return "GL_FRAMEBUFFER_UNSUPPORTED";
+        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
+            return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
         case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS:
             return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
-        default: return "unknown framebuffer status";
+        default:
+            return "unknown framebuffer status";
     }
 }
 

@@ -13,13 +13,13 @@ void installGlDebugOutput();
 
 // The pass in progress, named in every error message. Scoped: restores the previous name.
 class PassScope {
-public:
+  public:
     explicit PassScope(const char* name);
     ~PassScope();
     PassScope(const PassScope&) = delete;
     PassScope& operator=(const PassScope&) = delete;
 
-private:
+  private:
     const char* previous_;
 };
 const char* currentPass();

@@ -11,7 +11,7 @@ namespace sl {
 
 template <class Traits>
 class GlHandle {
-public:
+  public:
     GlHandle() = default;
     static GlHandle create() {
         GlHandle h;
@@ -37,20 +37,20 @@ public:
         id_ = 0;
     }
 
-private:
+  private:
     GLuint id_ = 0;
 };
 
 // Traits for each kind of object: how to make one and how to delete it.
-#define SL_GL_GEN_TRAITS(Name, gen, del)                  \
-    struct Name##Traits {                                 \
-        static GLuint make() {                            \
-            GLuint id = 0;                                \
-            gen(1, &id);                                  \
-            return id;                                    \
-        }                                                 \
-        static void destroy(GLuint id) { del(1, &id); }   \
-    };                                                    \
+#define SL_GL_GEN_TRAITS(Name, gen, del)                \
+    struct Name##Traits {                               \
+        static GLuint make() {                          \
+            GLuint id = 0;                              \
+            gen(1, &id);                                \
+            return id;                                  \
+        }                                               \
+        static void destroy(GLuint id) { del(1, &id); } \
+    };                                                  \
     using Name = GlHandle<Name##Traits>;
 
 SL_GL_GEN_TRAITS(Buffer, glGenBuffers, glDeleteBuffers)

@@ -4,6 +4,8 @@
 
 namespace sl {
 
-bool loadGl(GlProcLoader loader) { return gladLoadGL(reinterpret_cast<GLADloadfunc>(loader)) != 0; }
+bool loadGl(GlProcLoader loader) {
+    return gladLoadGL(reinterpret_cast<GLADloadfunc>(loader)) != 0;
+}
 
 }  // namespace sl

@@ -9,20 +9,20 @@
 namespace sl {
 
 class ScopedEnable {
-public:
+  public:
     ScopedEnable(GLenum cap, bool on) : cap_(cap), was_(glIsEnabled(cap)) { apply(on); }
     ~ScopedEnable() { apply(was_); }
     ScopedEnable(const ScopedEnable&) = delete;
     ScopedEnable& operator=(const ScopedEnable&) = delete;
 
-private:
+  private:
     void apply(bool on) { on ? glEnable(cap_) : glDisable(cap_); }
     GLenum cap_;
     bool was_;
 };
 
 class ScopedFramebuffer {
-public:
+  public:
     ScopedFramebuffer(GLuint fbo, int width, int height) {
         glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_);
         glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_);
@@ -38,14 +38,15 @@ public:
     ScopedFramebuffer(const ScopedFramebuffer&) = delete;
     ScopedFramebuffer& operator=(const ScopedFramebuffer&) = delete;
 
-private:
+  private:
     GLint draw_ = 0, read_ = 0;
     std::array<GLint, 4> viewport_{};
 };
 
 class ScopedPolygonOffset {
-public:
-    ScopedPolygonOffset(float factor, float units) : enable_(GL_POLYGON_OFFSET_FILL, factor != 0 || units != 0) {
+  public:
+    ScopedPolygonOffset(float factor, float units)
+        : enable_(GL_POLYGON_OFFSET_FILL, factor != 0 || units != 0) {
         glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &factor_);
         glGetFloatv(GL_POLYGON_OFFSET_UNITS, &units_);
         glPolygonOffset(factor, units);
@@ -54,13 +55,13 @@ public:
     ScopedPolygonOffset(const ScopedPolygonOffset&) = delete;
     ScopedPolygonOffset& operator=(const ScopedPolygonOffset&) = delete;
 
-private:
+  private:
     ScopedEnable enable_;
     GLfloat factor_ = 0, units_ = 0;
 };
 
 class ScopedCullFace {
-public:
+  public:
     // face = GL_NONE disables culling.
     explicit ScopedCullFace(GLenum face) : enable_(GL_CULL_FACE, face != GL_NONE) {
         glGetIntegerv(GL_CULL_FACE_MODE, &mode_);
@@ -70,13 +71,13 @@ public:
     ScopedCullFace(const ScopedCullFace&) = delete;
     ScopedCullFace& operator=(const ScopedCullFace&) = delete;
 
-private:
+  private:
     ScopedEnable enable_;
     GLint mode_ = GL_BACK;
 };
 
 class ScopedColorMask {
-public:
+  public:
     explicit ScopedColorMask(bool write) {
         glGetBooleanv(GL_COLOR_WRITEMASK, mask_.data());
         GLboolean w = write ? GL_TRUE : GL_FALSE;
@@ -86,12 +87,12 @@ public:
     ScopedColorMask(const ScopedColorMask&) = delete;
     ScopedColorMask& operator=(const ScopedColorMask&) = delete;
 
-private:
+  private:
     std::array<GLboolean, 4> mask_{};
 };
 
 class ScopedDepthRange {
-public:
+  public:
     ScopedDepthRange(double nearValue, double farValue) {
         glGetDoublev(GL_DEPTH_RANGE, range_.data());
         glDepthRange(nearValue, farValue);
@@ -100,12 +101,12 @@ public:
     ScopedDepthRange(const ScopedDepthRange&) = delete;
     ScopedDepthRange& operator=(const ScopedDepthRange&) = delete;
 
-private:
+  private:
     std::array<GLdouble, 2> range_{};
 };
 
 class ScopedDepthFunc {
-public:
+  public:
     explicit ScopedDepthFunc(GLenum func) {
         glGetIntegerv(GL_DEPTH_FUNC, &func_);
         glDepthFunc(func);
@@ -114,7 +115,7 @@ public:
     ScopedDepthFunc(const ScopedDepthFunc&) = delete;
     ScopedDepthFunc& operator=(const ScopedDepthFunc&) = delete;
 
-private:
+  private:
     GLint func_ = GL_LESS;
 };
 

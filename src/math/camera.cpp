@@ -20,7 +20,9 @@ glm::vec3 safeUp(const glm::vec3& eye, const glm::vec3& at, const glm::vec3& pre
     return {0, 1, 0};
 }
 
-glm::mat4 viewMatrix(const Camera& c) { return glm::lookAt(c.eye, c.at, safeUp(c.eye, c.at)); }
+glm::mat4 viewMatrix(const Camera& c) {
+    return glm::lookAt(c.eye, c.at, safeUp(c.eye, c.at));
+}
 
 glm::mat4 projectionMatrix(const Camera& c, float aspect) {
     return glm::perspective(glm::radians(c.fovyDegrees), aspect, c.zNear, c.zFar);
@@ -41,8 +43,8 @@ Ray pixelRay(const Camera& c, int i, int j, int width, int height) {
 }
 
 bool projectToPixel(const Camera& c, int width, int height, const glm::vec3& p, glm::vec2& pixel) {
-    glm::vec4 clip = projectionMatrix(c, float(width) / float(height)) * viewMatrix(c) *
-                     glm::vec4(p, 1.0f);
+    glm::vec4 clip =
+        projectionMatrix(c, float(width) / float(height)) * viewMatrix(c) * glm::vec4(p, 1.0f);
     if (clip.w <= 0.0f) return false;
     glm::vec2 ndc = glm::vec2(clip) / clip.w;
     pixel = {(ndc.x + 1.0f) * 0.5f * width, (1.0f - ndc.y) * 0.5f * height};

@@ -13,7 +13,7 @@ namespace sl {
 enum class Backend { OSMesa, Egl, Auto };
 
 class HeadlessContext {
-public:
+  public:
     virtual ~HeadlessContext() = default;
     // The framebuffer the renderer should draw into (0 for OSMesa's own buffer).
     virtual GLuint framebuffer() const = 0;
@@ -23,7 +23,7 @@ public:
     // Reads the framebuffer back, row 0 at the top.
     Image read() const;
 
-protected:
+  protected:
     int width_ = 0, height_ = 0;
 };
 

@@ -18,8 +18,9 @@ namespace sl {
 namespace {
 
 class OSMesaContextImpl : public HeadlessContext {
-public:
-    OSMesaContextImpl(OSMesaContext ctx, int w, int h) : ctx_(ctx), pixels_(std::size_t(w) * h * 4) {
+  public:
+    OSMesaContextImpl(OSMesaContext ctx, int w, int h)
+        : ctx_(ctx), pixels_(std::size_t(w) * h * 4) {
         width_ = w;
         height_ = h;
         if (!OSMesaMakeCurrent(ctx_, pixels_.data(), GL_UNSIGNED_BYTE, w, h))
@@ -30,23 +31,31 @@ public:
     GLuint framebuffer() const override { return 0; }
     const char* backendName() const override { return "osmesa"; }
 
-private:
+  private:
     OSMesaContext ctx_;
     std::vector<unsigned char> pixels_;
 };
 
 }  // namespace
 
-bool osmesaAvailable() { return true; }
+bool osmesaAvailable() {
+    return true;
+}
 
 std::unique_ptr<HeadlessContext> createOSMesaContext(GlslTree tree, int width, int height) {
     bool core = tree == GlslTree::Core;
-    const int attribs[] = {OSMESA_FORMAT,       OSMESA_RGBA,
-                           OSMESA_DEPTH_BITS,   24,
-                           OSMESA_STENCIL_BITS, 8,
-                           OSMESA_PROFILE,      core ? OSMESA_CORE_PROFILE : OSMESA_COMPAT_PROFILE,
-                           OSMESA_CONTEXT_MAJOR_VERSION, core ? 3 : 2,
-                           OSMESA_CONTEXT_MINOR_VERSION, core ? 3 : 1,
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           24,
+                           OSMESA_STENCIL_BITS,
+                           8,
+                           OSMESA_PROFILE,
+                           core ? OSMESA_CORE_PROFILE : OSMESA_COMPAT_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           core ? 3 : 2,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           core ? 3 : 1,
                            0};
     OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, nullptr);
     if (!ctx)
@@ -67,11 +76,14 @@ std::unique_ptr<HeadlessContext> createOSMesaContext(GlslTree tree, int width, i
 
 namespace sl {
 
-bool osmesaAvailable() { return false; }
+bool osmesaAvailable() {
+    return false;
+}
 
 std::unique_ptr<HeadlessContext> createOSMesaContext(GlslTree, int, int) {
-    throw std::runtime_error("this build has no OSMesa (configured with SHADOWLAB_WITH_OSMESA=OFF); "
-                             "use --backend egl");
+    throw std::runtime_error(
+        "this build has no OSMesa (configured with SHADOWLAB_WITH_OSMESA=OFF); "
+        "use --backend egl");
 }
 
 }  // namespace sl

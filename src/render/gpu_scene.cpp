@@ -34,9 +34,11 @@ void GpuScene::bindFixedFunction() {
         glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
         glEnableClientState(GL_VERTEX_ARRAY);
-        glVertexPointer(3, GL_FLOAT, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
+        glVertexPointer(3, GL_FLOAT, sizeof(Vertex),
+                        reinterpret_cast<void*>(offsetof(Vertex, position)));
         glEnableClientState(GL_NORMAL_ARRAY);
-        glNormalPointer(GL_FLOAT, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+        glNormalPointer(GL_FLOAT, sizeof(Vertex),
+                        reinterpret_cast<void*>(offsetof(Vertex, normal)));
     }
     glBindVertexArray(fixedVao_.id());
 }

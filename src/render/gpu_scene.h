@@ -7,7 +7,7 @@
 namespace sl {
 
 class GpuScene {
-public:
+  public:
     GpuScene(const Scene& scene, const Camera& camera, int imageHeight);
 
     void bind() const { glBindVertexArray(vao_.id()); }
@@ -19,7 +19,7 @@ public:
     const SceneMesh& mesh() const { return mesh_; }
     std::size_t triangleCount() const { return mesh_.indices.size() / 3; }
 
-private:
+  private:
     void draw(const MeshPart& part) const;
     SceneMesh mesh_;
     VertexArray vao_;

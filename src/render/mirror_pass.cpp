@@ -18,9 +18,12 @@ bool finite(const glm::vec3& v) {
 // Radius of the sphere around an object's centre that holds all of it.
 float boundingRadius(const Object& o) {
     switch (o.kind) {
-        case PrimitiveKind::Box: return 0.5f * glm::length(o.size);
-        case PrimitiveKind::Sphere: return o.radius;
-        case PrimitiveKind::Quad: return 0.5f * std::hypot(o.width, o.height);
+        case PrimitiveKind::Box:
+            return 0.5f * glm::length(o.size);
+        case PrimitiveKind::Sphere:
+            return o.radius;
+        case PrimitiveKind::Quad:
+            return 0.5f * std::hypot(o.width, o.height);
     }
     return 0.0f;
 }
@@ -128,13 +131,14 @@ ScopedFrontFace::ScopedFrontFace(GLenum mode) {
     glGetIntegerv(GL_FRONT_FACE, &mode_);
     glFrontFace(mode);
 }
-ScopedFrontFace::~ScopedFrontFace() { glFrontFace(static_cast<GLenum>(mode_)); }
+ScopedFrontFace::~ScopedFrontFace() {
+    glFrontFace(static_cast<GLenum>(mode_));
+}
 
 ScopedStencil::ScopedStencil(GLenum func, GLint ref, GLenum fail, GLenum depthFail, GLenum pass)
     : enabled_(glIsEnabled(GL_STENCIL_TEST)) {
-    const GLenum names[7] = {GL_STENCIL_FUNC,       GL_STENCIL_REF,
-                             GL_STENCIL_VALUE_MASK, GL_STENCIL_WRITEMASK,
-                             GL_STENCIL_FAIL,       GL_STENCIL_PASS_DEPTH_FAIL,
+    const GLenum names[7] = {GL_STENCIL_FUNC,           GL_STENCIL_REF,  GL_STENCIL_VALUE_MASK,
+                             GL_STENCIL_WRITEMASK,      GL_STENCIL_FAIL, GL_STENCIL_PASS_DEPTH_FAIL,
                              GL_STENCIL_PASS_DEPTH_PASS};
     for (int k = 0; k < 7; ++k) glGetIntegerv(names[k], &saved_[k]);
     glEnable(GL_STENCIL_TEST);

@@ -35,7 +35,7 @@ int stencilBits(GLuint fbo);
 // The render-to-texture target: an RGBA8 colour texture (linear filtering, clamped) and a
 // 24-bit depth renderbuffer attached to one framebuffer object.
 class MirrorTarget {
-public:
+  public:
     // (Re)allocates when the size changed. Throws std::runtime_error when the framebuffer is
     // incomplete or the size is beyond the driver's limits.
     void ensure(int width, int height);
@@ -45,7 +45,7 @@ public:
     int height() const { return height_; }
     std::size_t bytes() const { return std::size_t(width_) * height_ * (4 + 4); }
 
-private:
+  private:
     Texture colour_;
     Renderbuffer depth_;
     Framebuffer fbo_;
@@ -55,50 +55,50 @@ private:
 // glFrontFace, put back on destruction. A reflection has determinant -1: it turns
 // counter-clockwise triangles clockwise, so mirrored geometry is drawn with GL_CW in front.
 class ScopedFrontFace {
-public:
+  public:
     explicit ScopedFrontFace(GLenum mode);
     ~ScopedFrontFace();
     ScopedFrontFace(const ScopedFrontFace&) = delete;
     ScopedFrontFace& operator=(const ScopedFrontFace&) = delete;
 
-private:
+  private:
     GLint mode_ = GL_CCW;
 };
 
 // Stencil test on, with the front-and-back function and operations given; everything
 // (enable, function, reference, masks, operations) is put back on destruction.
 class ScopedStencil {
-public:
+  public:
     ScopedStencil(GLenum func, GLint ref, GLenum fail, GLenum depthFail, GLenum pass);
     ~ScopedStencil();
     ScopedStencil(const ScopedStencil&) = delete;
     ScopedStencil& operator=(const ScopedStencil&) = delete;
 
-private:
+  private:
     bool enabled_ = false;
     std::array<GLint, 7> saved_{};  // func, ref, value mask, write mask, fail, zfail, zpass
 };
 
 class ScopedDepthMask {
-public:
+  public:
     explicit ScopedDepthMask(bool write);
     ~ScopedDepthMask() { glDepthMask(saved_); }
     ScopedDepthMask(const ScopedDepthMask&) = delete;
     ScopedDepthMask& operator=(const ScopedDepthMask&) = delete;
 
-private:
+  private:
     GLboolean saved_ = GL_TRUE;
 };
 
 // Blending on with (src, dst) factors for colour and alpha; put back on destruction.
 class ScopedBlend {
-public:
+  public:
     ScopedBlend(GLenum src, GLenum dst);
     ~ScopedBlend();
     ScopedBlend(const ScopedBlend&) = delete;
     ScopedBlend& operator=(const ScopedBlend&) = delete;
 
-private:
+  private:
     bool enabled_ = false;
     std::array<GLint, 4> saved_{};  // src rgb, dst rgb, src alpha, dst alpha
 };

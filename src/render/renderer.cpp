@@ -44,8 +44,8 @@ void Renderer::render(GLuint target, int width, int height) {
     stats.notes.clear();
     stats.shadowMs = stats.litMs = stats.mirrorMs = 0;  // a pass that does not run costs 0
     stats.mapSize = 0;
-    FrameContext f{scene_, gpu_, shaders_, params(), camera, lightPosition, width, height, target,
-                   view, allLit, timePasses, sceneGeneration_, stats};
+    FrameContext f{scene_, gpu_,   shaders_, params(), camera,     lightPosition,    width,
+                   height, target, view,     allLit,   timePasses, sceneGeneration_, stats};
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, width, height);
     glEnable(GL_DEPTH_TEST);

@@ -11,7 +11,7 @@
 namespace sl {
 
 class Renderer {
-public:
+  public:
     // Needs a current GL context. `imageHeight` sets how finely spheres are tessellated.
     Renderer(Scene scene, ShaderLibrary shaders, int imageHeight);
 
@@ -42,7 +42,7 @@ public:
     // Call after moving the light or objects so cached shadow maps are re-rendered.
     void sceneChanged() { ++sceneGeneration_; }
 
-private:
+  private:
     Scene scene_;
     ShaderLibrary shaders_;
     GpuScene gpu_;

@@ -19,7 +19,8 @@ void validateRequest(const RenderRequest& r) {
         for (const auto& s : stageIds()) ids += (ids.empty() ? "" : ", ") + s;
         std::string hint = closestMatch(r.stage, stageIds());
         throw UsageError("--stage: unknown stage '" + r.stage + "'" +
-                         (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; stages: " + ids);
+                         (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
+                         "; stages: " + ids);
     }
     if (info->legacyOnly && r.tree == GlslTree::Core)
         throw UsageError("--glsl core: stage '" + r.stage +

@@ -35,8 +35,9 @@ void drawSceneLit(Program& program, const FrameContext& f, const Viewer& viewer,
     glBindVertexArray(0);
 }
 
-void drawSceneFromLight(Program& program, const FrameContext& f, const glm::mat4& lightViewProjection,
-                        bool castersOnly, const PerObject& perObject) {
+void drawSceneFromLight(Program& program, const FrameContext& f,
+                        const glm::mat4& lightViewProjection, bool castersOnly,
+                        const PerObject& perObject) {
     program.use();
     program.set("lightViewProjection", lightViewProjection);
     f.gpu.bind();

@@ -23,8 +23,9 @@ void drawSceneLit(Program& program, const FrameContext& f, const Viewer& viewer,
 
 // Depth-only style pass (shadow map): `lightViewProjection` as `lightViewProjection`, each
 // object's `model`; only shadow casters when `castersOnly`.
-void drawSceneFromLight(Program& program, const FrameContext& f, const glm::mat4& lightViewProjection,
-                        bool castersOnly, const PerObject& perObject = {});
+void drawSceneFromLight(Program& program, const FrameContext& f,
+                        const glm::mat4& lightViewProjection, bool castersOnly,
+                        const PerObject& perObject = {});
 
 // Clears the bound framebuffer to the scene's background.
 void clearToBackground(const FrameContext& f);

@@ -9,7 +9,8 @@ namespace sl {
 
 // How the map stores depth. Rgb8 is the slides' first attempt: gl_FragCoord.z written as colour.
 enum class MapStorage { Rgb8, Depth16, Depth24, Depth32F };
-MapStorage parseStorage(const std::string& text);  // "rgb8" | "depth16" | "depth24" | "depth32f" | "16" ...
+MapStorage parseStorage(
+    const std::string& text);  // "rgb8" | "depth16" | "depth24" | "depth32f" | "16" ...
 
 struct ShadowMapSettings {
     MapStorage storage = MapStorage::Depth24;
@@ -31,7 +32,7 @@ struct ShadowMapSettings {
 };
 
 class ShadowMap {
-public:
+  public:
     // Renders the map with `program` (its pass named "shadow") if anything it depends on changed.
     void update(FrameContext& f, const ShadowMapSettings& s, Program& program);
 
@@ -51,7 +52,7 @@ public:
     // Size of the texture in bytes, for the HUD.
     std::size_t bytes() const;
 
-private:
+  private:
     void allocate(const ShadowMapSettings& s);
     std::vector<Aabb> boundsInMap(const FrameContext& f, bool castersOnly) const;
 

@@ -13,9 +13,9 @@ enum class ParamKind { Number, Integer, Choice };
 struct ParamSpec {
     std::string name;
     ParamKind kind = ParamKind::Number;
-    double defaultValue = 0;           // Number / Integer
+    double defaultValue = 0;              // Number / Integer
     double min = 0, max = 1, step = 0.1;  // Number / Integer; step for +/- in the window
-    std::vector<std::string> choices;  // Choice; the first is the default
+    std::vector<std::string> choices;     // Choice; the first is the default
     std::string help;
     bool logStep = false;  // +/- multiplies/divides by (1 + step) instead of adding
 
@@ -31,14 +31,16 @@ struct ParamSpec {
 // Current values of a stage's parameters. Every successful change bumps `generation`, which
 // passes compare to know when cached work (the shadow map) is stale.
 class ParamSet {
-public:
+  public:
     ParamSet() = default;
     explicit ParamSet(const std::vector<ParamSpec>& specs);
 
     double number(const std::string& name) const;
     int integer(const std::string& name) const { return static_cast<int>(number(name)); }
     const std::string& choice(const std::string& name) const;
-    bool is(const std::string& name, const std::string& value) const { return choice(name) == value; }
+    bool is(const std::string& name, const std::string& value) const {
+        return choice(name) == value;
+    }
     std::string text(const std::string& name) const;
 
     // Sets from text; returns "" or a one-line error naming what is allowed.
@@ -50,14 +52,15 @@ public:
     const ParamSpec* find(const std::string& name) const;
     unsigned generation() const { return generation_; }
 
-private:
+  private:
     std::vector<ParamSpec> specs_;
     std::map<std::string, double> numbers_;
     std::map<std::string, std::string> choices_;
     unsigned generation_ = 0;
 };
 
-// The closest of `candidates` to `word` by edit distance, for "did you mean" hints ("" if none is close).
+// The closest of `candidates` to `word` by edit distance, for "did you mean" hints ("" if none is
+// close).
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
 
 }  // namespace sl

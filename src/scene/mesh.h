@@ -22,9 +22,9 @@ struct MeshPart {
 struct SceneMesh {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
-    std::vector<MeshPart> objects;      // one per scene object, same order
-    MeshPart unitQuad;                  // [-0.5,0.5]^2 in z=0 facing +z: mirrors, full-screen quads
-    std::vector<int> sphereSegments;    // per object, 0 for non-spheres (what tessellation chose)
+    std::vector<MeshPart> objects;    // one per scene object, same order
+    MeshPart unitQuad;                // [-0.5,0.5]^2 in z=0 facing +z: mirrors, full-screen quads
+    std::vector<int> sphereSegments;  // per object, 0 for non-spheres (what tessellation chose)
 };
 
 // Object space -> world space for an object (unit cube, unit sphere or unit quad).

@@ -2,7 +2,9 @@
 
 namespace sl {
 
-glm::vec3 mirrorRight(const Mirror& m) { return glm::normalize(glm::cross(m.up, m.normal)); }
+glm::vec3 mirrorRight(const Mirror& m) {
+    return glm::normalize(glm::cross(m.up, m.normal));
+}
 
 bool pointInside(const Object& o, const glm::vec3& p) {
     switch (o.kind) {
@@ -10,8 +12,10 @@ bool pointInside(const Object& o, const glm::vec3& p) {
             glm::vec3 d = glm::abs(p - o.center) - 0.5f * o.size;
             return d.x < 0 && d.y < 0 && d.z < 0;
         }
-        case PrimitiveKind::Sphere: return glm::length(p - o.center) < o.radius;
-        case PrimitiveKind::Quad: return false;
+        case PrimitiveKind::Sphere:
+            return glm::length(p - o.center) < o.radius;
+        case PrimitiveKind::Quad:
+            return false;
     }
     return false;
 }

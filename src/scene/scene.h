@@ -77,8 +77,12 @@ struct Scene {
 
 // Object ids used by the reference and the GL id pass: 0 = background, 1..N = objects[i-1],
 // N+1 = the mirror.
-inline int objectId(std::size_t objectIndex) { return static_cast<int>(objectIndex) + 1; }
-inline int mirrorId(const Scene& s) { return static_cast<int>(s.objects.size()) + 1; }
+inline int objectId(std::size_t objectIndex) {
+    return static_cast<int>(objectIndex) + 1;
+}
+inline int mirrorId(const Scene& s) {
+    return static_cast<int>(s.objects.size()) + 1;
+}
 
 // Corners of a mirror: bottom-left, bottom-right, top-right, top-left as seen from its front.
 struct MirrorCorners {

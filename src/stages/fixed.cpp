@@ -7,8 +7,8 @@
 
 #include "gl/state.h"
 #include "render/scene_pass.h"
-#include "stages/shadow_stage.h"
 #include "scene/mesh.h"
+#include "stages/shadow_stage.h"
 
 namespace sl {
 

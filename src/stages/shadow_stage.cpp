@@ -13,14 +13,18 @@ std::vector<ParamSpec> commonShadowParams(const std::string& castersDefault) {
     std::vector<std::string> casters = {"all", "casters-only"};
     if (castersDefault == "casters-only") std::swap(casters[0], casters[1]);
     return {
-        ParamSpec::integer("map-size", 512, 16, 8192, 1.0, "shadow map width and height in texels", true),
-        ParamSpec::choice("light-fit", {"tight", "sphere", "fixed"},
-                          "light frustum: tight box fit, the casters' bounding sphere, or the lab's "
-                          "frustum(-1,1,-1,1,1,100)"),
-        ParamSpec::choice("casters", casters, "what goes into the map: every object, or only shadow casters"),
+        ParamSpec::integer("map-size", 512, 16, 8192, 1.0, "shadow map width and height in texels",
+                           true),
+        ParamSpec::choice(
+            "light-fit", {"tight", "sphere", "fixed"},
+            "light frustum: tight box fit, the casters' bounding sphere, or the lab's "
+            "frustum(-1,1,-1,1,1,100)"),
+        ParamSpec::choice("casters", casters,
+                          "what goes into the map: every object, or only shadow casters"),
         ParamSpec::number("far-near", 0, 0, 100000, 1.0,
                           "light far/near ratio: 0 = as the fit chose; else near = far / this "
-                          "(depth precision)", true),
+                          "(depth precision)",
+                          true),
     };
 }
 
@@ -35,7 +39,8 @@ ShadowMapSettings commonShadowSettings(const ParamSet& p) {
 }
 
 std::vector<ViewMode> shadowViews() {
-    return {ViewMode::Final, ViewMode::ShadowMap, ViewMode::Light, ViewMode::Visibility, ViewMode::LightDepth};
+    return {ViewMode::Final, ViewMode::ShadowMap, ViewMode::Light, ViewMode::Visibility,
+            ViewMode::LightDepth};
 }
 
 void ShadowStage::render(FrameContext& f) {
@@ -72,7 +77,9 @@ void ShadowStage::render(FrameContext& f) {
     }
     if (f.timePasses) {
         glFinish();
-        f.stats.litMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        f.stats.litMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
     }
     describe(f);
 }
@@ -101,8 +108,9 @@ void ShadowStage::describe(FrameContext& f) {
     static const char* storage[] = {"rgb8", "depth16", "depth24", "depth32f"};
     char line[256];
     std::snprintf(line, sizeof line, "map %dx%d %s (%.1f MiB), rendered %u times%s", settings_.size,
-                  settings_.size, storage[static_cast<int>(settings_.storage)], map_.bytes() / 1048576.0,
-                  f.stats.shadowMapRenders, map_.addedColourAttachment() ? ", R32F colour added for completeness" : "");
+                  settings_.size, storage[static_cast<int>(settings_.storage)],
+                  map_.bytes() / 1048576.0, f.stats.shadowMapRenders,
+                  map_.addedColourAttachment() ? ", R32F colour added for completeness" : "");
     f.stats.notes.push_back(line);
     std::snprintf(line, sizeof line, "light fit %s: near %.3f far %.3f fovy %.1f (far/near %.1f)",
                   lightFitName(lf.used), lf.zNear, lf.zFar, lf.fovyDegrees, farOverNear(lf));
@@ -114,7 +122,8 @@ void ShadowStage::describe(FrameContext& f) {
             all += tris;
             if (f.scene.objects[i].castsShadow) drawn += tris;
         }
-        std::snprintf(line, sizeof line, "casters only: %zu of %zu triangles drawn into the map", drawn, all);
+        std::snprintf(line, sizeof line, "casters only: %zu of %zu triangles drawn into the map",
+                      drawn, all);
         f.stats.notes.push_back(line);
     }
     explainedBiasZ_ = biasZ(f.params);
@@ -134,7 +143,9 @@ std::string ShadowStage::explain() const {
     e << lf.note << "\n";
     mat("V_light (lookAt)", lf.view);
     mat("P_light", lf.projection);
-    e << "depth range " << (settings_.depthFlipped ? "(1, 0), projection flipped: near -> NDC z +1" : "(0, 1)") << "\n";
+    e << "depth range "
+      << (settings_.depthFlipped ? "(1, 0), projection flipped: near -> NDC z +1" : "(0, 1)")
+      << "\n";
     mat("bias (scale/bias)", biasMatrix(explainedBiasZ_));
     mat("bias * P_light * V_light", biasMatrix(explainedBiasZ_) * map_.lightViewProjection());
     return e.str();

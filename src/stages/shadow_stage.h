@@ -15,14 +15,14 @@ ShadowMapSettings commonShadowSettings(const ParamSet& p);
 std::vector<ViewMode> shadowViews();
 
 class ShadowStage : public Stage {
-public:
+  public:
     explicit ShadowStage(std::string id) : id_(std::move(id)) {}
     void render(FrameContext& f) override;
     // Built on demand from the last frame's map (formatting it every frame cost ~150,000
     // instructions a frame, callgrind).
     std::string explain() const override;
 
-protected:
+  protected:
     virtual ShadowMapSettings settings(const ParamSet& p) const = 0;
     // Uniforms of this stage's shadow-pass and lit-pass programs (margin, encodings...).
     virtual void setShadowUniforms(Program&, const ParamSet&) const {}
@@ -32,12 +32,14 @@ protected:
     // z scale of the bias matrix the lit pass uses (+0.5 for OpenGL's projection).
     virtual float biasZ(const ParamSet&) const { return 0.5f; }
     // How the debug view decodes the map: 0 depth, 1 one 8-bit value, 2 packed RGB.
-    virtual int mapEncoding(const ParamSet&) const { return settings_.storage == MapStorage::Rgb8 ? 1 : 0; }
+    virtual int mapEncoding(const ParamSet&) const {
+        return settings_.storage == MapStorage::Rgb8 ? 1 : 0;
+    }
 
     ShadowMap map_;
     ShadowMapSettings settings_;
 
-private:
+  private:
     void showMap(FrameContext& f);
     void describe(FrameContext& f);
     std::string id_;

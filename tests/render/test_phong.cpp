@@ -50,7 +50,8 @@ TEST(Phong, CoreAndLegacyAgree) {
     ASSERT_EQ(a.rgba.size(), b.rgba.size());
     // Tolerance: at most 2 levels per channel anywhere (the two trees run the same maths).
     int worst = 0;
-    for (std::size_t k = 0; k < a.rgba.size(); ++k) worst = std::max(worst, std::abs(a.rgba[k] - b.rgba[k]));
+    for (std::size_t k = 0; k < a.rgba.size(); ++k)
+        worst = std::max(worst, std::abs(a.rgba[k] - b.rgba[k]));
     EXPECT_LE(worst, 2);
 }
 
@@ -77,9 +78,10 @@ TEST(StudentOverlay, ACorrectShaderIsUsed) {
     std::string dir = tempDir("overlay");
     std::string cmd = "mkdir -p " + dir + "/phong";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
-    std::ofstream(dir + "/phong/lit.frag") << "#version 330 core\n"
-                                              "out vec4 fragColor;\n"
-                                              "void main() { fragColor = vec4(1.0, 0.0, 1.0, 1.0); }\n";
+    std::ofstream(dir + "/phong/lit.frag")
+        << "#version 330 core\n"
+           "out vec4 fragColor;\n"
+           "void main() { fragColor = vec4(1.0, 0.0, 1.0, 1.0); }\n";
     RenderRequest r = smallRequest("phong", GlslTree::Core);
     r.overlay = dir;
     Rendered out = renderHeadless(r);
@@ -103,7 +105,8 @@ TEST(StudentOverlay, ABrokenShaderExitsTwoNamingFileAndLine) {
                                               "    fragColor = vec4(1.0) +;\n"
                                               "}\n";
     std::string output;
-    int code = runShadowlab("render --stage phong --shaders " + dir + " --out " + dir + "/x.png", &output);
+    int code =
+        runShadowlab("render --stage phong --shaders " + dir + " --out " + dir + "/x.png", &output);
     EXPECT_EQ(code, 2) << output;
     EXPECT_NE(output.find(dir + "/phong/lit.frag:4"), std::string::npos) << output;
     std::ifstream png(dir + "/x.png");
@@ -120,10 +123,11 @@ TEST(StudentOverlay, AnErrorInAnIncludedFileNamesThatFile) {
                                                  "}\n";
     for (const char* tree : {"core", "legacy"}) {
         std::string output;
-        int code = runShadowlab(std::string("render --stage phong --glsl ") + tree + " --shaders " + dir +
-                                    " --out " + dir + "/x.png",
+        int code = runShadowlab(std::string("render --stage phong --glsl ") + tree + " --shaders " +
+                                    dir + " --out " + dir + "/x.png",
                                 &output);
         EXPECT_EQ(code, 2) << output;
-        EXPECT_NE(output.find(dir + "/common/phong.glsl:3"), std::string::npos) << tree << ": " << output;
+        EXPECT_NE(output.find(dir + "/common/phong.glsl:3"), std::string::npos)
+            << tree << ": " << output;
     }
 }

@@ -38,25 +38,32 @@ TEST(Scene, BuiltInLabScene) {
     EXPECT_EQ(s.objects[0].kind, PrimitiveKind::Quad);
 }
 
-TEST(Scene, MinimalSceneParses) { EXPECT_EQ(errorOf(kMinimal), ""); }
+TEST(Scene, MinimalSceneParses) {
+    EXPECT_EQ(errorOf(kMinimal), "");
+}
 
 TEST(Scene, MalformedFilesNameFilePathAndLine) {
     EXPECT_NE(errorOf("{\n  \"camera\": [1,\n").find("line 3"), std::string::npos);
-    std::string e = errorOf(R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]}, "light": {"position": [2, 1, 0]},
+    std::string e =
+        errorOf(R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]}, "light": {"position": [2, 1, 0]},
       "objects": [{"type": "sphere", "center": [0, 0.5, 0], "radius": "big"}]})");
     EXPECT_NE(e.find("t.json: /objects/0/radius: must be a number"), std::string::npos) << e;
     e = errorOf(R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]}, "light": {"position": [2, 1, 0]},
       "objects": [{"type": "cone", "center": [0, 0.5, 0]}]})");
     EXPECT_NE(e.find("unknown primitive 'cone'"), std::string::npos) << e;
-    e = errorOf(R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]}, "light": {"position": [0, 0.5, 0]},
+    e = errorOf(
+        R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]}, "light": {"position": [0, 0.5, 0]},
       "objects": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.5}]})");
     EXPECT_NE(e.find("inside this object"), std::string::npos) << e;
-    e = errorOf(R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]}, "light": {"position": [2, 1, 0]}, "objects": []})");
+    e = errorOf(
+        R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]}, "light": {"position": [2, 1, 0]}, "objects": []})");
     EXPECT_NE(e.find("/objects: is empty"), std::string::npos) << e;
-    e = errorOf(R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]}, "light": {"position": [2, 1, 0], "target": [2, 1, 0]},
+    e = errorOf(
+        R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]}, "light": {"position": [2, 1, 0], "target": [2, 1, 0]},
       "objects": [{"type": "box", "center": [0, 0, 0], "size": [1, 0, 1]}]})");
     EXPECT_NE(e.find("/light/target"), std::string::npos) << e;
-    EXPECT_NE(errorOf(R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]}, "lite": {}})").find("/lite: unknown field"),
+    EXPECT_NE(errorOf(R"({"camera": {"eye": [0, 2, 4], "at": [0, 0, 0]}, "lite": {}})")
+                  .find("/lite: unknown field"),
               std::string::npos);
 }
 
@@ -75,9 +82,11 @@ TEST(Tessellation, SphereSilhouetteWithinHalfAPixel) {
     for (int height : {240, 480, 1080}) {
         int n = sphereSegmentsForHalfPixel(sphere, s.camera, height);
         float distance = glm::length(sphere.center - s.camera.eye) - sphere.radius;
-        float radiusPx = sphere.radius / distance * 0.5f * height / std::tan(glm::radians(s.camera.fovyDegrees) / 2);
+        float radiusPx = sphere.radius / distance * 0.5f * height /
+                         std::tan(glm::radians(s.camera.fovyDegrees) / 2);
         EXPECT_LE(radiusPx * (1 - std::cos(3.14159265f / n)), 0.5f) << height;
-        EXPECT_GT(radiusPx * (1 - std::cos(3.14159265f / (n - 4))), 0.5f * 0.8f) << "not much finer than needed";
+        EXPECT_GT(radiusPx * (1 - std::cos(3.14159265f / (n - 4))), 0.5f * 0.8f)
+            << "not much finer than needed";
     }
 }
 
