@@ -223,15 +223,15 @@ def main():
                "move with the load.\n")
     trs = []
 
-    def target_row(label, r, light, target, instr=None):
-        instr = instr if instr is not None else r.get("instructions_ratio_to_phong")
+    def target_row(label, r, target):
+        instr = r.get("instructions_ratio_to_phong")
         trs.append([label, r["frame_ms"], ratio(r), f"<= {target}", verdict(r, target),
                     "-" if instr is None else f"{instr:.3f}",
                     "-" if instr is None else ("met" if instr <= target else "missed")])
 
-    def row(series, light, size=1024):
+    def row(series, light):  # the 1024 map
         m = [r for r in rows if r["group"] == "map-size" and r["series"] == series
-             and r["map_size"] == size and r["light"] == light]
+             and r["map_size"] == 1024 and r["light"] == light]
         return m[0] if m else None
 
     for series, light, target in (("hardware/linear", "still", 1.12),
@@ -239,7 +239,7 @@ def main():
                                   ("hardware/linear", "moving", 1.3)):
         r = row(series, light)
         if r:
-            target_row(f"{series}, 1024 map, light {light}", r, light, target)
+            target_row(f"{series}, 1024 map, light {light}", r, target)
     # "At the accuracy of the 1024 default": the cheapest hardware/linear map size (same light
     # fit) at most as wrong and with an edge p95 at most the 1024 row's.
     ref = row("hardware/linear", "moving")
@@ -251,16 +251,15 @@ def main():
             r = min(same, key=lambda r: cost_of(r)[0])
             target_row(f"hardware/linear, {int(r['map_size'])} map (as accurate as the 1024 default: "
                        f"error {f(r['error_pct'])} %, edge p95 {f(r['edge_p95_px'])} px), light moving",
-                       r, "moving", 1.3)
+                       r, 1.3)
     for e in bench.get("equal_accuracy", []):
         if e["method"] == "hardware/linear" and e["reached"]:
             r = [x for x in rows if x["group"] == "equal-accuracy" and x["series"] == e["method"]
                  and x["light"] == "moving"]
             if r:
-                target_row(f"hardware/linear at the bar ({e['settings']}), light moving", r[0],
-                           "moving", 1.3)
+                target_row(f"hardware/linear at the bar ({e['settings']}), light moving", r[0], 1.3)
     for r in [r for r in rows if r["series"] == "mirror/texture" and r["width"] == 640]:
-        target_row(f"mirror (texture), light {r['light']}", r, r["light"], 2.2)
+        target_row(f"mirror (texture), light {r['light']}", r, 2.2)
     out.append(table(["configuration", "ms/frame", "x phong (ms)", "target", "verdict (ms)",
                       "x phong (instructions)", "verdict (instructions)"], trs))
     out.append("\nWhere each miss goes and what was tried: [bench.md](bench.md), \"Where the time "

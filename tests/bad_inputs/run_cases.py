@@ -222,21 +222,21 @@ def statement_chain(count):
     return make
 
 
-def address_limit_applies(tmp, args):
-    """A setup: skip where the worker applies no address-space limit (AddressSanitizer builds)."""
-    with open(EXE, "rb") as f:
-        if b"__asan_init" in f.read():
-            raise Skip("an AddressSanitizer build applies no --memory-limit")
-    return args
+def skip_in_asan_build(reason):
+    """A setup: skip the case when the shadowlab under test is an AddressSanitizer build."""
+    def setup(tmp, args):
+        with open(EXE, "rb") as f:
+            if b"__asan_init" in f.read():
+                raise Skip(reason)
+        return args
+    return setup
 
 
-def release_speed(tmp, args):
-    """A setup: skip in an AddressSanitizer build, whose stages run several times slower than the
-    short time limit the case sets (every stage would time out, not only the slow shader's)."""
-    with open(EXE, "rb") as f:
-        if b"__asan_init" in f.read():
-            raise Skip("an AddressSanitizer build grades a stage slower than this case's limit")
-    return args
+# The worker applies no address-space limit under AddressSanitizer.
+address_limit_applies = skip_in_asan_build("an AddressSanitizer build applies no --memory-limit")
+# Under AddressSanitizer every stage runs slower than a short time limit, not only the slow shader.
+release_speed = skip_in_asan_build(
+    "an AddressSanitizer build grades a stage slower than this case's limit")
 
 
 def report_says(verdicts, graded):
