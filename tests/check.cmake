@@ -37,6 +37,13 @@ add_test(NAME check_diff_good
          COMMAND sh -c "${SL_EXE} check --stage margin --report ${SL_CHECK_DIR}/good.json --diff ${SL_CHECK_DIR}/good-diff.png && python3 ${SL_CHECK_PY}/diff_colours.py ${SL_CHECK_DIR}/good-diff.png ${SL_CHECK_DIR}/good.json margin core 0 0.02 0.05")
 set_tests_properties(check_diff_good PROPERTIES LABELS check TIMEOUT 300)
 
+# --diff with a bare file name (no folder): one image per lesson and view, each keeping the
+# .png extension (the view's name goes before it, not after).
+add_test(NAME check_diff_names_keep_the_extension
+         COMMAND sh -c "rm -rf names && mkdir names && cd names && ${SL_EXE} check --stage margin --diff d.png > /dev/null && test -s d.png && test -s d-grazing.png && test -s d-cube-on-cube-margin-kind=slope.png && test -z \"$(ls | grep -v '[.]png$')\""
+         WORKING_DIRECTORY ${SL_CHECK_DIR})
+set_tests_properties(check_diff_names_keep_the_extension PROPERTIES LABELS check TIMEOUT 300)
+
 # A student shader that does not compile: exit 2, the file and line named, and --all goes on
 # with the other stages (one ERROR in the report).
 add_test(NAME check_student_broken

@@ -162,7 +162,7 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
             if (!diffPath.empty()) {
                 std::string err =
                     writePng(diffPath, diffImage(rig.reference(), e.shadowed, e.withShadows,
-                                                 e.renderedIds, e.figures.band));
+                                                 e.figures.evaluatedMask, e.figures.band));
                 if (!err.empty()) throw UsageError("--diff: " + err);
                 r.diffFile = diffPath;
             }

@@ -264,8 +264,8 @@ int runCheckCommand(const CheckArgs& a) {
                    ".png";
         if (a.diff.empty() || (&c == &plan.front().front())) return a.diff;
         std::string stem = a.diff, ext;
-        std::size_t dot = stem.rfind('.');
-        if (dot != std::string::npos && dot > stem.rfind('/')) {
+        std::size_t dot = stem.rfind('.'), slash = stem.rfind('/');
+        if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) {
             ext = stem.substr(dot);
             stem.resize(dot);
         }

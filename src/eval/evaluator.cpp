@@ -45,6 +45,7 @@ void Evaluator::reset() {
     context_.reset();
     key_.clear();
     referenceKey_.clear();
+    shadowVisibleKey_.clear();
 }
 
 const ReferenceImage& Evaluator::reference() {
@@ -59,6 +60,16 @@ const ReferenceImage& Evaluator::reference() {
         referenceKey_ = key.str();
     }
     return reference_;
+}
+
+const std::vector<std::uint8_t>& Evaluator::shadowVisible() {
+    reference();
+    if (shadowVisibleKey_ != referenceKey_) {
+        Renderer& r = *renderer_;
+        shadowVisible_ = shadowVisiblePixels(r.scene(), r.camera, reference_, r.lightPosition);
+        shadowVisibleKey_ = referenceKey_;
+    }
+    return shadowVisible_;
 }
 
 Accuracy shadowAccuracy(const ShadowFigures& f) {
@@ -98,6 +109,7 @@ ShadowEvidence Evaluator::shadowEvidence() {
                                   int(r.scene().objects.size()), 1.0f);
     ShadowFigureInputs inputs;
     inputs.renderedIds = e.renderedIds;
+    inputs.shadowVisible = shadowVisible();
     if (tolerance_ == EdgeTolerance::MapTexel)
         inputs.bandPx =
             mapTexelOnScreen(ref, r.camera, r.stats.lightViewProjection, r.stats.mapSize);

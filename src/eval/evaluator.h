@@ -68,6 +68,8 @@ class Evaluator {
     Accuracy accuracy();
     // The reference for the current camera, light and size (traced once, then reused).
     const ReferenceImage& reference();
+    // Where a shadow could be seen at all for the current reference (shadowVisiblePixels).
+    const std::vector<std::uint8_t>& shadowVisible();
     // The shadow stages' half of accuracy(): the render with its map and with the map forced to
     // "everything lit", our own unshadowed lighting (phong) and an id render for coverage. A
     // pixel is shadowed where the render is clearly darker than the all-lit one, or the all-lit
@@ -92,6 +94,8 @@ class Evaluator {
     glm::vec3 sceneLight_{0};
     std::string referenceKey_;
     ReferenceImage reference_;
+    std::string shadowVisibleKey_;
+    std::vector<std::uint8_t> shadowVisible_;
 };
 
 }  // namespace sl

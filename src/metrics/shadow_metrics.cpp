@@ -157,13 +157,28 @@ std::vector<float> mapTexelOnScreen(const ReferenceImage& ref, const Camera& cam
     return band;
 }
 
+std::vector<std::uint8_t> shadowVisiblePixels(const Scene& scene, const Camera& camera,
+                                              const ReferenceImage& ref,
+                                              const glm::vec3& lightPosition, float margin,
+                                              const ClassifyOptions& options) {
+    ReferenceImage reached = ref, blocked = ref;
+    for (auto& p : reached.pixels) p.blocked = false;
+    for (auto& p : blocked.pixels) p.blocked = true;
+    ClassifyOptions stricter{options.relativeDrop * margin, options.absoluteDrop * margin};
+    return classifyShadowed(shadeReference(scene, camera, blocked, lightPosition),
+                            shadeReference(scene, camera, reached, lightPosition), stricter);
+}
+
 std::vector<std::uint8_t> evaluatedPixels(const ReferenceImage& ref,
-                                          const std::vector<int>& renderedIds) {
+                                          const std::vector<int>& renderedIds,
+                                          const std::vector<std::uint8_t>& shadowVisible) {
     if (!renderedIds.empty()) requireSize(ref, renderedIds.size(), "evaluatedPixels");
+    if (!shadowVisible.empty()) requireSize(ref, shadowVisible.size(), "evaluatedPixels");
     std::vector<std::uint8_t> evaluated(ref.pixels.size());
     for (std::size_t k = 0; k < ref.pixels.size(); ++k)
         evaluated[k] = isEvaluated(ref, ref.pixels[k]) &&
-                       (renderedIds.empty() || renderedIds[k] == ref.pixels[k].objectId);
+                       (renderedIds.empty() || renderedIds[k] == ref.pixels[k].objectId) &&
+                       (shadowVisible.empty() || shadowVisible[k]);
     return evaluated;
 }
 
@@ -176,7 +191,8 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
     const int w = ref.width, h = ref.height;
     auto index = [w](int i, int j) { return std::size_t(j) * w + i; };
 
-    const std::vector<std::uint8_t> evaluated = evaluatedPixels(ref, inputs.renderedIds);
+    const std::vector<std::uint8_t> evaluated =
+        evaluatedPixels(ref, inputs.renderedIds, inputs.shadowVisible);
     auto object = [&](std::size_t k) { return ref.pixels[k].objectId; };
     auto truth = [&](std::size_t k) -> std::uint8_t { return ref.pixels[k].blocked ? 1 : 0; };
     auto rendered = [&](std::size_t k) -> std::uint8_t { return shadowed[k] ? 1 : 0; };
@@ -214,16 +230,34 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
         return found == distance.end() ? std::numeric_limits<float>::infinity() : found->second[k];
     };
 
+    // A silhouette shadow edge as the render covers it: the reference's mark, or the mark of a
+    // neighbour of the same object the rasterizer left out (the render's silhouette one pixel
+    // inside the reference's), so the edge is not lost with that pixel.
+    auto marksSilhouetteEdge = [&](int i, int j) {
+        const std::size_t k = index(i, j);
+        if (ref.pixels[k].shadowEdgeAtSilhouette) return true;
+        const int offsets[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+        for (const auto& o : offsets) {
+            int ni = i + o[0], nj = j + o[1];
+            if (ni < 0 || nj < 0 || ni >= w || nj >= h) continue;
+            std::size_t n = index(ni, nj);
+            if (!evaluated[n] && object(n) == object(k) && ref.pixels[n].shadowEdgeAtSilhouette)
+                return true;
+        }
+        return false;
+    };
+
     // The true edge and the rendered one. At a silhouette the render cannot show the other
     // side, so a marked silhouette pixel the render gets right counts as a rendered edge too.
     ShadowFigures figures;
+    figures.evaluatedMask = evaluated;
     std::vector<std::uint8_t> trueEdge(ref.pixels.size(), 0), renderedEdge(ref.pixels.size(), 0);
     std::vector<std::uint8_t> straddling(ref.pixels.size(), 0);  // both sides of the true edge
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
             std::size_t k = index(i, j);
             if (!evaluated[k]) continue;
-            const bool atSilhouette = ref.pixels[k].shadowEdgeAtSilhouette;
+            const bool atSilhouette = marksSilhouetteEdge(i, j);
             const bool acrossTruth = hasOtherNeighbour(i, j, truth);
             trueEdge[k] = atSilhouette || (truth(k) && acrossTruth);
             straddling[k] = atSilhouette || acrossTruth;
@@ -284,10 +318,12 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
 }
 
 Image diffImage(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed,
-                const Image& withShadows, const std::vector<int>& renderedIds,
+                const Image& withShadows, const std::vector<std::uint8_t>& evaluatedMask,
                 const std::vector<std::uint8_t>& band) {
     requireSize(ref, shadowed.size(), "diffImage");
-    const std::vector<std::uint8_t> evaluated = evaluatedPixels(ref, renderedIds);
+    if (!evaluatedMask.empty()) requireSize(ref, evaluatedMask.size(), "diffImage");
+    const std::vector<std::uint8_t> evaluated =
+        evaluatedMask.empty() ? evaluatedPixels(ref, {}) : evaluatedMask;
     if (!band.empty()) requireSize(ref, band.size(), "diffImage");
     if (withShadows.width != ref.width || withShadows.height != ref.height)
         throw std::invalid_argument("diffImage: the render does not match the reference size");

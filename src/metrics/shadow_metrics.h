@@ -25,9 +25,11 @@ std::vector<std::uint8_t> classifyShadowed(const Image& withShadows, const Image
                                            const ClassifyOptions& options = {});
 
 // Definitions (all on the reference image grid; GUIDE section 4, pictures in docs/check.md):
-//   evaluated   the reference sees a light-facing, non-mirror object there and the render shows
+//   evaluated   the reference sees a light-facing, non-mirror object there, the render shows
 //               the same object (`renderedIds`, when given: a pixel the rasterizer gives to the
-//               background or a neighbour is a silhouette difference, not a shadow).
+//               background or a neighbour is a silhouette difference, not a shadow), and a
+//               shadow there could be seen at all (`shadowVisible`, when given: near a
+//               terminator the light adds too little for any render to show its loss).
 //   neighbours  only evaluated pixels of the same object are neighbours: a boundary against the
 //               background, another object or a face turned away is no shadow edge.
 //   truth       shadowed when the reference says `blocked`.
@@ -68,6 +70,7 @@ struct ShadowFigures {
     bool edgeDefined = false;
     long renderedBoundary = 0, trueBoundary = 0;
     std::vector<std::uint8_t> band;  // per pixel, 1 inside the edge band (for the diff image)
+    std::vector<std::uint8_t> evaluatedMask;  // per pixel, 1 where counted (for the diff image)
 };
 
 // The inputs beyond the reference and the classification. Every vector is per pixel, row-major,
@@ -76,6 +79,7 @@ struct ShadowFigureInputs {
     std::vector<int> renderedIds;                 // the object the render shows (0 background)
     std::vector<std::uint8_t> darkWithoutCaster;  // dark with the map forced "everything lit"
     std::vector<float> bandPx;                    // edge tolerance in pixels (>= 1)
+    std::vector<std::uint8_t> shadowVisible;      // shadowVisiblePixels
 };
 
 // `shadowed` comes from classifyShadowed (one byte per pixel, non-zero = shadowed) and must match
@@ -91,17 +95,29 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
 std::vector<float> mapTexelOnScreen(const ReferenceImage& ref, const Camera& camera,
                                     const glm::mat4& lightViewProjection, int mapSize);
 
+// Where a shadow can be seen at all: the reference's own shading (shadeReference, the scene's
+// material) with the light reaching the point and without it differ by more than `margin` times
+// the classifier's thresholds. Not so within a few degrees of a terminator, where the light adds
+// too little: there a correct shadow and a missing one render alike, so such a pixel is neither
+// false lit nor false shadow (it would otherwise count against every method). The margin keeps
+// pixels whose drop is only just over the threshold (a Gouraud pass, a student's Blinn) out too.
+std::vector<std::uint8_t> shadowVisiblePixels(const Scene& scene, const Camera& camera,
+                                              const ReferenceImage& ref,
+                                              const glm::vec3& lightPosition, float margin = 1.5f,
+                                              const ClassifyOptions& options = {});
+
 // Which pixels the figures count (the `evaluated` definition above).
 std::vector<std::uint8_t> evaluatedPixels(const ReferenceImage& ref,
-                                          const std::vector<int>& renderedIds);
+                                          const std::vector<int>& renderedIds,
+                                          const std::vector<std::uint8_t>& shadowVisible = {});
 
 // A picture of the disagreement: red (220,40,40) false shadow, blue (40,80,230) false lit, their
 // pale versions (240,170,170) and (170,190,240) for a disagreement inside the edge band `band`
 // (forgiven: within a map texel of the true edge), grey where render and reference agree (the
 // luma of withShadows squeezed into 60..200 so it never reads as a colour), white where the
-// pixel is not evaluated (evaluatedPixels).
+// pixel is not evaluated (`evaluated`, ShadowFigures::evaluatedMask; empty = evaluatedPixels(ref)).
 Image diffImage(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed,
-                const Image& withShadows, const std::vector<int>& renderedIds = {},
+                const Image& withShadows, const std::vector<std::uint8_t>& evaluated = {},
                 const std::vector<std::uint8_t>& band = {});
 
 // Exact Euclidean distance transform: for every pixel of a width x height grid, the distance in

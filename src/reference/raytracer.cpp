@@ -220,8 +220,10 @@ bool shadowRayBlocked(const Scene& scene, const glm::vec3& position, const glm::
 namespace {
 
 // Does the surface of pixel k, continued under the ray of pixel (i, j) along its tangent plane,
-// change shadow state there? The continuation must stay within a few pixels' width of the hit
-// point (at a sphere's limb the tangent plane runs off almost parallel to the ray).
+// change shadow state there? The continuation goes no further than a few pixels' width from the
+// hit point, in the direction of that ray's hit: at a sphere's limb, or a floor seen near
+// grazing, the tangent plane runs off almost parallel to the ray and the full continuation
+// would land far beyond the edge, in some other shadow.
 bool shadowChangesBeyond(const Scene& scene, const Camera& camera, const glm::vec3& light,
                          const ReferencePixel& p, int i, int j, int width, int height) {
     Ray ray = pixelRay(camera, i, j, width, height);
@@ -232,7 +234,8 @@ bool shadowChangesBeyond(const Scene& scene, const Camera& camera, const glm::ve
     glm::vec3 beyond = ray.origin + t * ray.direction;
     float pixelWidth = glm::length(p.position - camera.eye) * 2.0f *
                        std::tan(glm::radians(camera.fovyDegrees) * 0.5f) / float(height);
-    if (glm::length(beyond - p.position) > 4.0f * pixelWidth) return false;
+    const float reach = glm::length(beyond - p.position), most = 4.0f * pixelWidth;
+    if (reach > most) beyond = p.position + (beyond - p.position) * (most / reach);
     if (glm::dot(p.normal, light - beyond) <= 0.0f) return false;  // continued past the terminator
     return shadowRayBlocked(scene, beyond, p.normal, light) != p.blocked;
 }

@@ -394,6 +394,23 @@ TEST(Metrics, PixelsTheRenderGivesToAnotherObjectAreNotEvaluated) {
     EXPECT_GT(shadowFigures(ref, maskRect(30, 10, 0, 0, 29, 10)).falseLitPct, 3.0);
 }
 
+TEST(Metrics, ShadowsThatCannotBeSeenAreNotEvaluated) {
+    // Columns 20-29 are near a terminator: a shadow there would not show, so the render's "lit"
+    // there is neither right nor wrong, and the diff image paints it white.
+    ReferenceImage ref = evaluatedEverywhere(30, 10);
+    blockRect(ref, 10, 0, 30, 10);
+    ShadowFigureInputs inputs;
+    inputs.shadowVisible = maskRect(30, 10, 0, 0, 20, 10);
+    std::vector<std::uint8_t> render = maskRect(30, 10, 10, 0, 20, 10);
+    ShadowFigures f = shadowFigures(ref, render, inputs);
+    EXPECT_EQ(f.evaluated, 200);
+    EXPECT_EQ(f.falseLitPct, 0.0);
+    EXPECT_GT(shadowFigures(ref, render).falseLitPct, 40.0);  // counted without the mask
+    Image shown(30, 10);
+    Image diff = diffImage(ref, render, shown, f.evaluatedMask, f.band);
+    expectColor(diff, 25, 5, 255, 255, 255);
+}
+
 TEST(Metrics, DarkWithoutACasterAndSpeckle) {
     ReferenceImage ref = evaluatedEverywhere(20, 20);
     // A checkerboard of false shadow (acne-like specks) over the lit scene ...

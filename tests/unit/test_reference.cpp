@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "math/camera.h"
+#include "metrics/shadow_metrics.h"
 #include "reference/raytracer.h"
 
 using namespace sl;
@@ -356,6 +357,58 @@ TEST(Reference, MirrorPixelsShowTheBounceSlightlyDarkened) {
     EXPECT_NEAR(p[0], 113, 1);
     EXPECT_EQ(p[0], p[1]);
     EXPECT_EQ(p[0], p[2]);
+}
+
+// Near a terminator the light adds too little for a shadow to show: a floor lit from 1 degree
+// above the horizon looks the same shadowed or not, so no pixel of it can be judged; lit from
+// above, every pixel can.
+TEST(Reference, ShadowsAreVisibleOnlyWhereTheLightAddsEnough) {
+    Scene s;
+    s.objects = {box("floor", {0, -0.05f, 0}, {3, 0.1f, 3})};
+    s.camera.eye = {0, 4, 0.01f};
+    s.camera.at = {0, 0, 0};
+    s.camera.fovyDegrees = 30;
+    auto visibleAtCentre = [&](const glm::vec3& light) {
+        ReferenceImage ref = traceReference(s, s.camera, light, 64, 48, 1);
+        EXPECT_EQ(ref.at(32, 24).objectId, objectId(0));
+        EXPECT_TRUE(ref.at(32, 24).facesLight);
+        return shadowVisiblePixels(s, s.camera, ref, light)[std::size_t(24) * 64 + 32] != 0;
+    };
+    EXPECT_FALSE(visibleAtCentre({100, 1.7f, 0}));  // N.L = 0.017
+    EXPECT_TRUE(visibleAtCentre({0, 5, 0}));        // N.L = 1
+    EXPECT_TRUE(visibleAtCentre({4, 1, 0}));        // N.L = 0.24, as the lecture's far floor
+}
+
+// The lecture's grazing view: the standing cube's top edge throws its shadow exactly onto the
+// floor's far-left edge (x = -1.5), where the floor meets the background. Continued past that
+// silhouette (a few pixels at most: seen this flat, the full tangent-plane continuation lands
+// metres away, in the floating cube's shadow) the floor is lit, so the boundary is a shadow
+// edge there. Pixels inside the floor are never marked.
+TEST(Reference, ShadowEdgeOnTheFloorsFarEdgeSeenNearGrazing) {
+    Scene s = lectureScene();
+    Camera grazing;
+    grazing.eye = {2.6f, 0.35f, 1.2f};
+    grazing.at = {0, 0.3f, 0};
+    grazing.fovyDegrees = 45;
+    ReferenceImage ref = traceReference(s, grazing, s.light.position, kWidth, kHeight, 2);
+    int farEdge = 0, marked = 0, markedInside = 0;
+    for (int j = 1; j < kHeight - 1; ++j)
+        for (int i = 1; i < kWidth - 1; ++i) {
+            const ReferencePixel& p = ref.at(i, j);
+            if (p.objectId != objectId(0) || p.normal.y < 0.5f) continue;
+            const bool silhouette = ref.at(i, j - 1).objectId == 0;
+            if (silhouette && p.blocked && p.position.x < -1.49f) {
+                ++farEdge;
+                marked += p.shadowEdgeAtSilhouette;
+            }
+            bool inside = true;
+            for (auto [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
+                inside = inside && ref.at(i + di, j + dj).objectId == objectId(0);
+            markedInside += inside && p.shadowEdgeAtSilhouette;
+        }
+    EXPECT_GE(farEdge, 10);
+    EXPECT_GE(marked, 10) << "of " << farEdge;
+    EXPECT_EQ(markedInside, 0);
 }
 
 TEST(Reference, RejectsAnEmptyImage) {
