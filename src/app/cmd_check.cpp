@@ -140,8 +140,23 @@ void describeUnrendered(const RenderRequest& r, CheckResult& out) {
     if (r.light) out.light = *r.light;
 }
 
+// What a stage's job threw, as `render` would say it (a shader error may add the log's lines).
+std::string jobErrorText(const CheckResult& r, const WorkerOutcome& outcome) {
+    const std::string& kind = outcome.errorKind;
+    if (kind == "shader") return "shader error: " + outcome.errorWhat;
+    if (kind == "scene") return "scene error: " + outcome.errorWhat;
+    std::string stage = "stage " + r.stage + " (" + r.tree + "): ";
+    if (kind == "runtime") return stage + "GL or platform failure: " + outcome.errorWhat;
+    return stage + outcome.errorWhat;
+}
+
+std::string firstLine(const std::string& text) {
+    return text.substr(0, text.find('\n'));
+}
+
 // The result of a stage whose worker ran out of time or died: TIMEOUT or CRASH, an error of the
-// submission (exit 2), with the one line that names the stage and the limit.
+// submission (exit 2), with the one line that names the stage and the limit. A stage whose job
+// threw is ERROR with what it threw: the other stages are still graded, the report written.
 CheckResult unjudgedResult(const RenderRequest& r, const WorkerOutcome& outcome,
                            const Limits& limits) {
     CheckResult out = checkResultFor(r);
@@ -151,9 +166,14 @@ CheckResult unjudgedResult(const RenderRequest& r, const WorkerOutcome& outcome,
     out.expectation =
         findExpectation(expectations(), out.stage, out.scene, out.tree, out.parameters);
     out.error = true;
-    out.errorVerdict = outcome.kind == WorkerOutcome::Kind::Timeout ? "TIMEOUT" : "CRASH";
-    out.judgement = {Verdict::Fail, workerFailureLine("stage " + out.stage + " (" + out.tree + ")",
-                                                      outcome, limits)};
+    out.errorVerdict = outcome.kind == WorkerOutcome::Kind::Timeout ? "TIMEOUT"
+                       : outcome.kind == WorkerOutcome::Kind::Error ? "ERROR"
+                                                                    : "CRASH";
+    out.judgement = {
+        Verdict::Fail,
+        outcome.kind == WorkerOutcome::Kind::Error
+            ? printableName(firstLine(jobErrorText(out, outcome)))
+            : workerFailureLine("stage " + out.stage + " (" + out.tree + ")", outcome, limits)};
     out.seconds = outcome.seconds;
     return out;
 }
@@ -179,7 +199,7 @@ nlohmann::json checkStageJob(Evaluator& rig, const std::vector<CheckCase>& cases
 // thrown again here. `each(k, results)` gets each stage's results as they come.
 void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
                     const std::function<std::string(const CheckCase&)>& diffPath, Backend backend,
-                    const Limits& limits,
+                    const Limits& limits, bool& platformFailure,
                     const std::function<void(std::size_t, std::vector<CheckResult>)>& each) {
     std::unique_ptr<Evaluator> rig;  // made in each worker, kept for its next stages
     auto job = [&](std::size_t k) {
@@ -190,7 +210,13 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
         std::vector<CheckResult> results;
         if (outcome.kind != WorkerOutcome::Kind::Ok) {
             results.push_back(unjudgedResult(plan[k].front().request, outcome, limits));
-            std::cerr << "shadowlab: " << results.back().judgement.message << "\n";
+            // Not the submission's fault (ours or the machine's): exit 3 once the report is out.
+            if (outcome.kind == WorkerOutcome::Kind::Error && outcome.errorKind == "runtime")
+                platformFailure = true;
+            std::string text = outcome.kind == WorkerOutcome::Kind::Error
+                                   ? printable(jobErrorText(results.back(), outcome))
+                                   : results.back().judgement.message;
+            std::cerr << "shadowlab: " << text << (text.back() == '\n' ? "" : "\n");
         } else {
             for (const auto& j : outcome.value.at("results")) {
                 results.push_back(checkResultFromJson(j));
@@ -278,7 +304,8 @@ int runCheckCommand(const CheckArgs& a) {
                 checkOutputPath(a.diffDir.empty() ? "--diff" : "--diff-dir", path);
         }
     std::size_t done = 0;
-    checkInWorkers(plan, diffPath, backend, a.limits,
+    bool platformFailure = false;
+    checkInWorkers(plan, diffPath, backend, a.limits, platformFailure,
                    [&](std::size_t, std::vector<CheckResult> stageResults) {
                        for (CheckResult& result : stageResults) {
                            if (machine.empty()) {
@@ -300,6 +327,7 @@ int runCheckCommand(const CheckArgs& a) {
             exitCode = kBadInput;
         else if (r.judgement.verdict == Verdict::Fail && exitCode == kOk)
             exitCode = kCheckFailed;
+    if (platformFailure) exitCode = kGlFailure;
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::json report = reportJson(results, exitCode, seconds, backendName, machine);

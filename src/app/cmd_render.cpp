@@ -78,9 +78,7 @@ void renderInWorker(const RenderArgs& a, const RenderRequest& request) {
     std::vector<double> steady(times.begin() + 1, times.end());
     std::sort(steady.begin(), steady.end());
     double median = steady.empty() ? first : steady[steady.size() / 2];
-    if (glErrorCount() > 0)
-        throw std::runtime_error("the render raised " + std::to_string(glErrorCount()) +
-                                 " GL error(s); last: " + lastGlError());
+    throwGlFailure(glErrorCount() > 0, "the render");
     std::string err = writePng(a.out, context->read());
     if (!err.empty()) throw UsageError("--out: " + err);
     std::cout << "rendered " << request.stage << " (" << treeName(request.tree) << ", "

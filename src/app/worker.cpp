@@ -60,9 +60,11 @@ std::pair<std::string, std::string> classify(const std::exception_ptr& error) {
     }
 }
 
-[[noreturn]] void rethrowCarried(const nlohmann::json& error) {
-    const std::string kind = error.value("kind", "runtime");
-    const std::string what = error.value("what", "");
+}  // namespace
+
+[[noreturn]] void rethrowJobError(const WorkerOutcome& outcome) {
+    const std::string& kind = outcome.errorKind;
+    const std::string& what = outcome.errorWhat;
     if (kind == "shader") throw ShaderError(what);
     if (kind == "scene") throw SceneError(what);
     if (kind == "usage") throw UsageError(what);
@@ -70,6 +72,8 @@ std::pair<std::string, std::string> classify(const std::exception_ptr& error) {
     if (kind == "invalid_argument") throw std::invalid_argument(what);
     throw std::runtime_error(what);
 }
+
+namespace {
 
 void applyLimits(const Limits& limits, std::size_t jobs) {
     if (limits.seconds > 0) {  // a backstop: the wall clock ends a job first
@@ -235,6 +239,8 @@ std::string WorkerOutcome::detail() const {
             return outOfMemory ? "ran out of memory" : "killed by " + signalName(signal);
         case Kind::Failed:
             return "exited with code " + std::to_string(exitCode) + " without a result";
+        case Kind::Error:
+            return errorWhat;
     }
     return "";
 }
@@ -266,6 +272,8 @@ std::string workerFailureLine(const std::string& what, const WorkerOutcome& o,
                    ")";
         case WorkerOutcome::Kind::Failed:
             return what + ": its worker " + o.detail() + " (" + memory + ")";
+        case WorkerOutcome::Kind::Error:
+            return what + ": " + o.errorWhat;
     }
     return what;
 }
@@ -369,9 +377,11 @@ void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& 
             WorkerOutcome out;
             if (read == Read::Line) {
                 nlohmann::json message = nlohmann::json::parse(line, nullptr, false);
-                if (message.is_object() && message.contains("error"))
-                    rethrowCarried(message["error"]);  // ~Worker ends the child
-                if (message.is_object() && message.contains("ok")) {
+                if (message.is_object() && message.contains("error")) {
+                    out.kind = WorkerOutcome::Kind::Error;  // ~Worker ends the child
+                    out.errorKind = message["error"].value("kind", "runtime");
+                    out.errorWhat = message["error"].value("what", "");
+                } else if (message.is_object() && message.contains("ok")) {
                     out.value = std::move(message["ok"]);
                 } else {
                     out.kind = WorkerOutcome::Kind::Crash;
@@ -404,6 +414,7 @@ WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::jso
     runBoundedSeries(
         limits, 1, [&](std::size_t) { return job(); },
         [&](std::size_t, const WorkerOutcome& o) { outcome = o; });
+    if (outcome.kind == WorkerOutcome::Kind::Error) rethrowJobError(outcome);
     return outcome;
 }
 

@@ -15,26 +15,31 @@ struct Limits {
     long memoryMb = 2048;  // address space (RLIMIT_AS) of one worker; 0 = none
 };
 
-// How a worker ended. Ok carries the job's value. The job's exceptions are not outcomes: they
-// are thrown again in the parent with their type (UsageError, SceneError, ShaderError,
-// ExpectationError, std::invalid_argument, else std::runtime_error), so the exit codes stay
-// what they would be without the worker.
+// How a worker ended. Ok carries the job's value; Error an exception the job threw, by kind
+// ("shader", "scene", "usage", "expectation", "invalid_argument", "runtime") and message:
+// rethrowJobError throws it again with its type (UsageError, SceneError, ShaderError, ...), so
+// the exit codes stay what they would be without the worker; runBounded does.
 struct WorkerOutcome {
     enum class Kind {
         Ok,
         Timeout,  // past the wall-clock limit (killed) or the CPU limit (SIGXCPU)
         Crash,    // killed by a signal, or out of memory (std::bad_alloc under the limit)
         Failed,   // exited without a result (exit code in `exitCode`)
+        Error,    // the job threw: errorKind, errorWhat
     };
     Kind kind = Kind::Ok;
     nlohmann::json value;
     int signal = 0;    // Crash by a signal
     int exitCode = 0;  // Failed
     bool outOfMemory = false;
+    std::string errorKind, errorWhat;  // Error
     double seconds = 0;
     // "killed by SIGSEGV", "ran out of memory", "exited with code 1 without a result", ...
     std::string detail() const;
 };
+
+// Throws an Error outcome's exception again, with its type.
+[[noreturn]] void rethrowJobError(const WorkerOutcome& outcome);
 
 // Forks, and in the child applies the limits, runs `job`, sends its value back through a pipe
 // and _exits; the parent waits up to the time limit, then kills the child's process group.
@@ -45,7 +50,8 @@ WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::jso
 // may be: one worker runs them one after the other and sends each value back as it finishes,
 // so what a job sets up in the worker (a GL context) serves the next, and the time limit starts
 // again with each job. A job that runs out of time or ends its worker gets that outcome and a
-// fresh worker goes on with the next. `done(k, outcome)` is called for each, in order.
+// fresh worker goes on with the next; so does one that threw (Error). `done(k, outcome)` is
+// called for each, in order.
 using SeriesJob = std::function<nlohmann::json(std::size_t)>;
 void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& job,
                       const std::function<void(std::size_t, const WorkerOutcome&)>& done);

@@ -1,6 +1,9 @@
 #include "gl/debug.h"
 
 #include <cstdio>
+#include <stdexcept>
+
+#include "gl/shader_library.h"
 
 namespace sl {
 
@@ -8,11 +11,15 @@ namespace {
 const char* g_pass = "setup";
 int g_errors = 0;
 std::string g_lastError;
+std::string g_programFiles;  // the student's files behind the program in use, or ""
+std::string g_errorFiles;    // g_programFiles at the first error since the reset
 
 void report(const std::string& message) {
-    ++g_errors;
+    if (++g_errors == 1) g_errorFiles = g_programFiles;
     g_lastError = message;
-    std::fprintf(stderr, "shadowlab: GL error in pass '%s': %s\n", g_pass, message.c_str());
+    // A student's program: the ShaderError that follows is the one line to show.
+    if (g_programFiles.empty())
+        std::fprintf(stderr, "shadowlab: GL error in pass '%s': %s\n", g_pass, message.c_str());
 }
 
 void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity,
@@ -53,7 +60,7 @@ const char* currentPass() {
 }
 
 void installGlDebugOutput() {
-    g_errors = 0;
+    resetGlErrorCount();
     if (GLAD_GL_KHR_debug || GLAD_GL_VERSION_4_3) {
         glEnable(GL_DEBUG_OUTPUT);
         glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);  // errors arrive inside the call that caused them
@@ -66,16 +73,36 @@ int glErrorCount() {
 }
 void resetGlErrorCount() {
     g_errors = 0;
+    g_errorFiles.clear();
 }
 std::string lastGlError() {
     return g_lastError;
 }
 
+void setProgramInUse(const std::string& studentFiles) {
+    g_programFiles = studentFiles;
+}
+std::string glErrorShaderFiles() {
+    return g_errors > 0 ? g_errorFiles : std::string();
+}
+
+void throwGlFailure(bool failed, const std::string& what) {
+    if (!failed) return;
+    if (!glErrorShaderFiles().empty())
+        throw ShaderError(glErrorShaderFiles() + ": drawing with this shader raised " +
+                          lastGlError() +
+                          " (it breaks a GL rule at draw time, e.g. two sampler types on one "
+                          "texture unit)");
+    throw std::runtime_error(what + " raised " + std::to_string(g_errors) +
+                             " GL error(s); last: " + lastGlError());
+}
+
 bool checkGlErrors(const char* file, int line) {
     bool ok = true;
     for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError()) {
-        // The callback already counted this one when debug output is on; count it once.
-        if (!(GLAD_GL_KHR_debug || GLAD_GL_VERSION_4_3))
+        // The callback already counted this one when it is installed in this context (check's
+        // contexts have none); count it once.
+        if (!((GLAD_GL_KHR_debug || GLAD_GL_VERSION_4_3) && glIsEnabled(GL_DEBUG_OUTPUT)))
             report(std::string(errorName(e)) + " at " + file + ":" + std::to_string(line));
         ok = false;
     }

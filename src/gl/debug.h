@@ -29,6 +29,16 @@ int glErrorCount();
 void resetGlErrorCount();
 std::string lastGlError();
 
+// The student's files behind the program in use ("" for ours, or none): set by Program::use.
+// A GL error raised while a student's program draws (two sampler types on one texture unit, an
+// output the framebuffer cannot take) is the shader's fault, not the platform's.
+void setProgramInUse(const std::string& studentFiles);
+// The student's files that were in use at the first GL error since the last reset, or "".
+std::string glErrorShaderFiles();
+// Throws when `failed`: a ShaderError naming the student's files when one of their programs
+// raised the errors (exit 2, ERROR in check), else std::runtime_error("WHAT raised a GL error").
+void throwGlFailure(bool failed, const std::string& what);
+
 // Polls glGetError, reports each error with file, line and pass. Returns false on error.
 bool checkGlErrors(const char* file, int line);
 #define SL_CHECK_GL() ::sl::checkGlErrors(__FILE__, __LINE__)

@@ -5,9 +5,16 @@
 #include <string>
 #include <unordered_map>
 
+#include "gl/debug.h"
 #include "gl/handles.h"
 
 namespace sl {
+
+// No program (fixed function): a GL error after this is not a student's shader's.
+inline void useNoProgram() {
+    glUseProgram(0);
+    setProgramInUse("");
+}
 
 class Program {
   public:
@@ -18,7 +25,10 @@ class Program {
     GLuint id() const { return handle_.id(); }
     const std::string& name() const { return name_; }
     explicit operator bool() const { return bool(handle_); }
-    void use() const { glUseProgram(handle_.id()); }
+    void use() const {
+        glUseProgram(handle_.id());
+        setProgramInUse(studentFiles_);  // a GL error while it draws is then theirs
+    }
 
     // -1 when the program has no active uniform of that name (setting it is then a no-op, as GL
     // does).
@@ -26,10 +36,16 @@ class Program {
     bool has(const char* uniform) { return location(uniform) >= 0; }
     // A student's program: say once per name on stderr when a uniform the stage sets is not
     // active in it (a typo, or unused), instead of ignoring it silently.
-    void reportMissingUniforms(bool on) { reportMissing_ = on; }
+    // `ours`: the source of our own shader for the pass; only uniforms it names get a note.
+    void reportMissingUniforms(bool on, std::string ours = {}) {
+        reportMissing_ = on;
+        ours_ = std::move(ours);
+    }
 
     // The files it was built from, named when a uniform's declared type does not fit.
     void setOrigin(std::string files) { origin_ = std::move(files); }
+    // The student's files in it ("" when every file is ours), named by a GL error in a draw.
+    void setStudentFiles(std::string files) { studentFiles_ = std::move(files); }
 
     // Each setter checks the uniform's declared type first: `uniform int margin;` set with a
     // float is a ShaderError naming the files (the shader's fault), not a GL error.
@@ -56,6 +72,8 @@ class Program {
     ProgramHandle handle_;
     std::string name_;
     std::string origin_;
+    std::string studentFiles_;
+    std::string ours_;
     std::unordered_map<std::string, GLint> locations_;
     std::unordered_map<GLint, GLenum> types_;  // by location, filled on first use
     bool reportMissing_ = false;

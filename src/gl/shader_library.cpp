@@ -126,12 +126,12 @@ class Preprocessor {
         ShaderLibrary::Found found = lib_.find(relative);
         if (!found.refused.empty())
             throw ShaderError(site.empty() ? found.refused : site + ": " + found.refused);
+        const std::string shown = printableName(found.shown);  // one line whatever the name
         if (found.real.empty())
-            throw ShaderError(found.shown + ": cannot read shader file (missing?)" + where);
+            throw ShaderError(shown + ": cannot read shader file (missing?)" + where);
         std::string text;
         std::string why = readRegularFile(found.real, kMaxFileBytes, text, true);
-        if (!why.empty())
-            throw ShaderError(found.shown + ": cannot read shader file: " + why + where);
+        if (!why.empty()) throw ShaderError(shown + ": cannot read shader file: " + why + where);
         int source = static_cast<int>(out.files.size());
         out.files.push_back(found.shown);
         std::size_t begin = 0;
@@ -146,7 +146,7 @@ class Preprocessor {
             any = any || line.find_first_not_of(" \t\r") != std::string::npos;
             std::string name;
             if (matchInclude(line, name)) {
-                std::string here = found.shown + ":" + std::to_string(number);
+                std::string here = shown + ":" + std::to_string(number);
                 if (name.size() > kMaxIncludeName)
                     throw ShaderError(here + ": #include name of " + std::to_string(name.size()) +
                                       " characters; at most " + std::to_string(kMaxIncludeName));
@@ -161,11 +161,11 @@ class Preprocessor {
                 out.text += '\n';
             }
             if (out.text.size() > kMaxExpandedBytes)
-                throw ShaderError(found.shown + ":" + std::to_string(number) +
+                throw ShaderError(shown + ":" + std::to_string(number) +
                                   ": the source with its includes exceeds " +
                                   std::to_string(kMaxExpandedBytes) + " bytes");
         }
-        if (!any) throw ShaderError(found.shown + ":1: shader file is empty");
+        if (!any) throw ShaderError(shown + ":1: shader file is empty");
     }
 
   private:
@@ -205,7 +205,8 @@ std::string mapLog(const std::string& log, const std::vector<std::string>& files
             if (!digits(line, j, l) || j >= line.size() || line[j] != '(') continue;
             ++j;
             if (!digits(line, j, c) || j >= line.size() || line[j] != ')') continue;
-            std::string file = s < files.size() ? files[s] : "source " + std::to_string(s);
+            std::string file =
+                s < files.size() ? printableName(files[s]) : "source " + std::to_string(s);
             line = line.substr(0, i) + file + ":" +
                    line.substr(lineStart, line.find('(', lineStart) - lineStart) + ":" +
                    std::to_string(c) + line.substr(j + 1);
@@ -229,7 +230,7 @@ ShaderHandle compile(const Expanded& src, const char* kind) {
         glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
         std::string log(std::max(length, 1), '\0');
         glGetShaderInfoLog(shader.id(), length, nullptr, log.data());
-        throw ShaderError(src.files[0] + ": " + kind + " shader did not compile:\n" +
+        throw ShaderError(printableName(src.files[0]) + ": " + kind + " shader did not compile:\n" +
                           mapLog(log.c_str(), src.files));
     }
     return shader;
@@ -278,30 +279,43 @@ ShaderLibrary::ShaderLibrary(GlslTree tree, std::string treeRoot, std::string ov
 ShaderLibrary::Found ShaderLibrary::find(const std::string& relative) const {
     Found f;
     std::string name = normalizedRelative(relative);
-    std::string allowed =
-        "allowed: files under " + (overlay_.empty() ? std::string() : overlay_ + " and ") + root_;
+    std::string allowed = "allowed: files under " +
+                          (overlay_.empty() ? std::string() : printableName(overlay_) + " and ") +
+                          printableName(root_);
     if (name.empty()) {
         bool absolute = !relative.empty() && relative[0] == '/';
-        f.refused = "#include \"" + relative + "\": " +
+        f.refused = "#include \"" + printableName(relative) + "\": " +
                     (absolute ? "an absolute path" : "a path that leaves the shader folder") +
                     "; " + allowed;
         return f;
     }
     f.shown = root_ + "/" + name;
+    bool student = false;
     if (!overlay_.empty()) {
         std::string candidate = overlay_ + "/" + name;
         struct stat st;
-        // A folder of that name is not a replacement (ours is used); anything else is, and must
-        // then pass the checks below (a FIFO or a link out of the folder is refused, not skipped).
-        if (::lstat(candidate.c_str(), &st) == 0 &&
-            !(S_ISDIR(st.st_mode) || (::stat(candidate.c_str(), &st) == 0 && S_ISDIR(st.st_mode))))
+        // Whatever the overlay holds under that name replaces ours and must pass the checks
+        // below: a folder, a FIFO or a link out of the folder is refused, never skipped (a
+        // folder named lit.frag graded as our shader would pass a submission that has none).
+        if (::lstat(candidate.c_str(), &st) == 0) {
             f.shown = candidate;
+            student = true;
+        }
     }
     f.real = realPath(f.shown);
     if (f.real.empty()) return f;  // missing: reported as such when read
     if (!inside(f.real, realOverlay_) && !inside(f.real, realRoot_)) {
-        f.refused =
-            f.shown + ": resolves outside the shader folders (a symbolic link?); " + allowed;
+        f.refused = printableName(f.shown) +
+                    ": resolves outside the shader folders (a symbolic link?); " + allowed;
+        f.real.clear();
+        return f;
+    }
+    // A hard link is a second name of a file that may live anywhere on the disk (another
+    // student's, a secret): no path check can see where, so a student's file must have one name.
+    struct stat st;
+    if (student && ::stat(f.real.c_str(), &st) == 0 && !S_ISDIR(st.st_mode) && st.st_nlink > 1) {
+        f.refused = printableName(f.shown) + ": has " + std::to_string(st.st_nlink) +
+                    " hard links; a file in the shader folder must have one name (copy it)";
         f.real.clear();
     }
     return f;
@@ -332,18 +346,18 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
         glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
         std::string log(std::max(length, 1), '\0');
         glGetProgramInfoLog(program.id(), length, nullptr, log.data());
-        throw ShaderError(vert.files[0] + " + " + frag.files[0] + ": program did not link:\n" +
-                          mapLog(log.c_str(), vert.files));
+        throw ShaderError(printableName(vert.files[0]) + " + " + printableName(frag.files[0]) +
+                          ": program did not link:\n" + mapLog(log.c_str(), vert.files));
     }
     glDetachShader(program.id(), vs.id());
     glDetachShader(program.id(), fs.id());
-    requireKnownAttributes(program.id(), vert.files[0]);
+    requireKnownAttributes(program.id(), printableName(vert.files[0]));
     // A type mismatch names the student's file(s) of this program, or both when none is theirs.
     std::string files;
     for (const std::string* f : {&vert.files[0], &frag.files[0]})
         if (!overlay_.empty() && f->rfind(overlay_ + "/", 0) == 0)
-            files += (files.empty() ? "" : " + ") + *f;
-    if (files.empty()) files = vert.files[0] + " + " + frag.files[0];
+            files += (files.empty() ? "" : " + ") + printableName(*f);
+    if (files.empty()) files = printableName(vert.files[0]) + " + " + printableName(frag.files[0]);
 
     Entry e;
     e.program = Program(std::move(program), stage + "/" + pass);
@@ -351,12 +365,34 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     e.files = vert.files;
     e.files.insert(e.files.end(), frag.files.begin(), frag.files.end());
     for (const auto& f : e.files) e.stamps.push_back(modificationStamp(f));
+    // Any file from the overlay (a pass file or an include) makes it the student's program.
+    std::string student;
+    for (const auto& f : e.files)
+        if (!overlay_.empty() && f.rfind(overlay_ + "/", 0) == 0 &&
+            student.find(printableName(f)) == std::string::npos)
+            student += (student.empty() ? "" : " + ") + printableName(f);
+    e.program.setStudentFiles(student);
     // Notes about unused uniforms are for the student's own pass files, and only when they differ
     // from ours: an unmodified copy, or an overridden include alone, leaves our shader ours.
+    bool theirs = false;
     for (const std::string* f : {&vert.files[0], &frag.files[0]})
         if (!overlay_.empty() && f->rfind(overlay_ + "/", 0) == 0 &&
             !sameContents(*f, root_ + "/" + f->substr(overlay_.size() + 1)))
+            theirs = true;
+    if (theirs) {
+        // Only uniforms our own pass uses: the stage sets some that ours ignores too (margin's
+        // lit pass has no shadowMatrix), and a note about those would be noise.
+        ShaderLibrary ours(tree_, root_, "");
+        Preprocessor shipped(ours, tree_);
+        Expanded v, f;
+        try {
+            shipped.expand(stage + "/" + pass + ".vert", v, 0, "");
+            shipped.expand(stage + "/" + pass + ".frag", f, 0, "");
+            e.program.reportMissingUniforms(true, v.text + f.text);
+        } catch (const ShaderError&) {  // no such pass of ours: every uniform is worth a note
             e.program.reportMissingUniforms(true);
+        }
+    }
     return e;
 }
 

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <vector>
 
 namespace sl {
@@ -99,29 +100,72 @@ std::string outputPathProblem(const std::string& path) {
     return {};
 }
 
+namespace {
+
+// Writes all `size` bytes to `fd`; 0 or the errno of the failed write.
+int writeAll(int fd, const char* p, std::size_t size) {
+    while (size > 0) {
+        ssize_t n = ::write(fd, p, size);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return n < 0 ? errno : ENOSPC;
+        p += n;
+        size -= std::size_t(n);
+    }
+    return 0;
+}
+
+// A temporary name beside `path` that no one can guess ahead: path.tmpPID-COUNT-NANOSECONDS.
+std::string temporaryName(const std::string& path) {
+    static unsigned counter = 0;
+    struct timespec now;
+    ::clock_gettime(CLOCK_MONOTONIC, &now);
+    char suffix[64];
+    std::snprintf(suffix, sizeof suffix, ".tmp%d-%u-%ld", int(::getpid()), counter++,
+                  long(now.tv_nsec));
+    return path + suffix;
+}
+
+// The data in an unnamed file in the target's folder (O_TMPFILE), then given a temporary name
+// with linkat (which never replaces an existing name nor follows a link planted there) and
+// renamed over `path`: a process killed while writing (a worker at its time limit) leaves
+// nothing behind. -1: the file system or a missing /proc cannot; the caller falls back.
+int writeUnnamed(const std::string& path, const void* data, std::size_t size, mode_t mode) {
+    int fd = ::open(folderOf(path).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, mode);
+    if (fd < 0) return -1;
+    int error = writeAll(fd, static_cast<const char*>(data), size);
+    std::string source = "/proc/self/fd/" + std::to_string(fd), tmp;
+    for (int attempt = 0; !error && tmp.empty() && attempt < 100; ++attempt) {
+        std::string name = temporaryName(path);
+        if (::linkat(AT_FDCWD, source.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0)
+            tmp = name;
+        else if (errno != EEXIST) {
+            ::close(fd);
+            return -1;
+        }
+    }
+    if (::close(fd) != 0 && !error) error = errno;
+    if (!error && tmp.empty()) error = EEXIST;
+    if (!error && std::rename(tmp.c_str(), path.c_str()) != 0) error = errno;
+    if (error && !tmp.empty()) ::unlink(tmp.c_str());
+    return error;
+}
+
+}  // namespace
+
 std::string writeFileAtomically(const std::string& path, const void* data, std::size_t size) {
     if (std::string err = outputPathProblem(path); !err.empty()) return err;
-    // mkstemp creates the name with O_EXCL: a planted file or symlink at a guessed temporary
-    // name makes it pick another, never write through it.
+    mode_t mask = ::umask(0);
+    ::umask(mask);
+    int error = writeUnnamed(path, data, size, 0666 & ~mask);
+    if (error > 0) return failure(path, std::strerror(error));
+    if (error == 0) return {};
+    // No O_TMPFILE here: mkstemp creates the name with O_EXCL, so a planted file or symlink at
+    // a guessed temporary name makes it pick another, never write through it.
     std::string tmp = path + ".tmpXXXXXX";
     int fd = ::mkostemp(tmp.data(), O_CLOEXEC);
     if (fd < 0) return failure(path, std::strerror(errno));
-    mode_t mask = ::umask(0);
-    ::umask(mask);
     ::fchmod(fd, 0666 & ~mask);  // mkstemp's 0600 would make outputs unreadable to others
-    const char* p = static_cast<const char*>(data);
-    std::size_t left = size;
-    int error = 0;
-    while (left > 0 && !error) {
-        ssize_t n = ::write(fd, p, left);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0)
-            error = n < 0 ? errno : ENOSPC;
-        else {
-            p += n;
-            left -= std::size_t(n);
-        }
-    }
+    error = writeAll(fd, static_cast<const char*>(data), size);
     if (::close(fd) != 0 && !error) error = errno;
     if (!error && std::rename(tmp.c_str(), path.c_str()) != 0) error = errno;
     if (error) {
@@ -169,6 +213,15 @@ std::string validUtf8(const std::string& text) {
             out += '?';
             ++i;
         }
+    }
+    return out;
+}
+
+std::string printableName(const std::string& name) {
+    std::string out = validUtf8(name);
+    for (char& c : out) {
+        unsigned char u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u == 0x7f) c = '?';
     }
     return out;
 }

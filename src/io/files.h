@@ -22,9 +22,11 @@ std::string readRegularFile(const std::string& path, std::size_t maxBytes, std::
 // symlink, folder, device or read-only file).
 std::string outputPathProblem(const std::string& path);
 
-// Writes `size` bytes atomically: into a temporary file created exclusively beside `path`
-// (mkstemp: never through an existing name or link), every write and close checked, then
-// renamed over `path`. On failure nothing is left. Returns "" or the error.
+// Writes `size` bytes atomically: into an unnamed file in `path`'s folder (O_TMPFILE, so a
+// process killed meanwhile leaves nothing), linked to a fresh temporary name and renamed over
+// `path`; where O_TMPFILE is not offered, into a temporary file created exclusively beside it
+// (mkstemp). Never through an existing name or link; every write and close checked; on failure
+// nothing is left. Returns "" or the error.
 std::string writeFileAtomically(const std::string& path, const void* data, std::size_t size);
 
 // `text` with control characters (other than newline and tab) replaced by '?': for terminal
@@ -33,5 +35,9 @@ std::string printable(const std::string& text);
 
 // `text` with every byte that is not part of valid UTF-8 replaced by '?'.
 std::string validUtf8(const std::string& text);
+
+// A file name as a message shows it: valid UTF-8, every control character (newline and tab
+// included) as '?', so that a name from a student's folder keeps a message on one line.
+std::string printableName(const std::string& name);
 
 }  // namespace sl

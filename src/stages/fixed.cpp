@@ -37,7 +37,7 @@ class FixedStage : public Stage {
         start = std::chrono::steady_clock::now();
         PassScope pass("lit");
         clearToBackground(f);
-        glUseProgram(0);
+        useNoProgram();
         glm::mat4 view = viewMatrix(f);
         glMatrixMode(GL_PROJECTION);
         glLoadMatrixf(glm::value_ptr(cameraViewer(f).projection));
@@ -165,7 +165,7 @@ class FixedStage : public Stage {
             ScopedFramebuffer bind(fbo_.id(), size, size);
             ScopedPolygonOffset offset(factor, units);
             glClear(GL_DEPTH_BUFFER_BIT);
-            glUseProgram(0);
+            useNoProgram();
             glMatrixMode(GL_PROJECTION);
             glLoadMatrixf(glm::value_ptr(lf.projection));
             glMatrixMode(GL_MODELVIEW);

@@ -6,6 +6,7 @@ usage: run_cases.py SHADOWLAB_EXE [--only TEXT]
 """
 import json
 import os
+import re
 import resource
 import shlex
 import signal
@@ -23,8 +24,11 @@ class Case:
     """`one_line`: a failing command's stderr is one line. `check --all` prints one line per
     stage that fails (and its notes), so its cases set it False and name the line they expect."""
     def __init__(self, name, expect, fragment, args, timeout=TIMEOUT, setup=None, check=None,
-                 preexec=None, one_line=True, crashes=False):
+                 preexec=None, one_line=True, crashes=False, stdin=None, kill_after=None):
         self.name, self.expect, self.fragment, self.args = name, expect, fragment, args
+        # stdin(tmp): what the command reads as stdin (a file object, or None for /dev/null).
+        # kill_after: (seconds, signal): a grading harness's timeout ends shadowlab itself.
+        self.stdin, self.kill_after = stdin, kill_after
         self.timeout, self.setup, self.check, self.preexec = timeout, setup, check, preexec
         self.one_line = one_line
         # A case whose worker dies inside Mesa: under AddressSanitizer the signal must reach
@@ -72,15 +76,20 @@ def run(exe, case):
     existed = bool(target) and os.path.lexists(target)  # a case's own file: refused, kept
     before = os.listdir(tmp)
     start = time.monotonic()
-    try:
-        p = subprocess.run([exe] + shlex.split(args), capture_output=True, text=True,
-                           errors="replace", timeout=case.timeout, preexec_fn=case.preexec,
-                           env=case.env)
-    except subprocess.TimeoutExpired:
-        return [f"did not finish within {case.timeout} s (hang?)"], args
+    stdin = case.stdin(tmp) if case.stdin else subprocess.DEVNULL
+    if case.kill_after:
+        p, problems = run_and_kill(exe, args, case, stdin)
+    else:
+        problems = []
+        try:
+            p = subprocess.run([exe] + shlex.split(args), capture_output=True, text=True,
+                               errors="replace", timeout=case.timeout,
+                               preexec_fn=case.preexec, env=case.env, stdin=stdin)
+        except subprocess.TimeoutExpired:
+            return [f"did not finish within {case.timeout} s (hang?)"], args
     seconds = time.monotonic() - start
-    problems = []
-    if p.returncode < 0:
+    CASE_SECONDS[case.name] = seconds
+    if p.returncode < 0 and not case.kill_after:
         problems.append(f"killed by signal {-p.returncode} (crash)")
     elif p.returncode != case.expect:
         problems.append(f"exit code {p.returncode}, expected {case.expect}")
@@ -91,16 +100,19 @@ def run(exe, case):
         if bad in p.stderr:
             problems.append(f"stderr reports '{bad}'")
     lines = [l for l in p.stderr.splitlines() if l.strip()]
-    if case.expect != 0:
+    if case.kill_after:
+        pass  # killed: whatever it printed so far
+    elif case.expect != 0:
         if not lines or not lines[0].startswith("shadowlab:"):
             problems.append("stderr's first line does not start with 'shadowlab:'")
         elif case.one_line and len(lines) > 1 and "shader error:" not in lines[0]:
             problems.append(f"stderr has {len(lines)} lines, expected one")
         if target and target.startswith(tmp) and os.path.isfile(target) and not existed:
             problems.append(f"a file was left at {target}")
-    elif target and not is_png(target):
+    elif target and not is_png(target) and not case.kill_after:
         problems.append(f"{target} is not a PNG")
-    left = [f for f in os.listdir(tmp) if ".tmp" in f and f not in before]
+    left = [os.path.relpath(os.path.join(base, f), tmp) for base, _, names in os.walk(tmp)
+            for f in names if ".tmp" in f and f not in before]
     if left:
         problems.append(f"temporary files left behind: {left}")
     if case.check:
@@ -109,6 +121,60 @@ def run(exe, case):
         problems.append(f"stderr: {p.stderr.strip()[:600]!r} ({seconds:.1f} s)")
     subprocess.run(["rm", "-rf", tmp])
     return problems, args
+
+
+CASE_SECONDS = {}  # each case's wall time, printed with --times
+
+
+class Completed:
+    def __init__(self, returncode, stdout, stderr):
+        self.returncode, self.stdout, self.stderr = returncode, stdout, stderr
+
+
+def shadowlab_processes_under(pid):
+    """Every live (not zombie) process whose parent chain reaches `pid`, or which is in a
+    process group a child of `pid` led: the workers and anything they started."""
+    found = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                fields = f.read().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        state, ppid, pgrp = fields[0], int(fields[1]), int(fields[2])
+        if state != "Z" and (ppid == pid or pgrp in WORKER_GROUPS.get(pid, ())):
+            found.append(int(entry))
+    return found
+
+
+WORKER_GROUPS = {}
+
+
+def run_and_kill(exe, args, case, stdin):
+    """Starts shadowlab, kills it after kill_after = (seconds, signal) as a harness's timeout
+    would, and checks that no worker of it is left running a second later."""
+    seconds, sig = case.kill_after
+    p = subprocess.Popen([exe] + shlex.split(args), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         stdin=stdin, env=case.env)
+    time.sleep(seconds)
+    workers = shadowlab_processes_under(p.pid)
+    WORKER_GROUPS[p.pid] = set(workers)
+    problems = [] if workers else ["no worker was running when the signal came"]
+    p.send_signal(sig)
+    out, err = p.communicate(timeout=case.timeout)
+    deadline = time.monotonic() + 2
+    alive = shadowlab_processes_under(p.pid)
+    while alive and time.monotonic() < deadline:
+        time.sleep(0.05)
+        alive = shadowlab_processes_under(p.pid)
+    if alive:
+        problems.append(f"workers still running after the parent died: {alive}")
+        for pid in alive:
+            os.kill(pid, signal.SIGKILL)
+    return Completed(p.returncode, out.decode(errors="replace"), err.decode(errors="replace")), \
+        problems
 
 
 def is_png(path):
@@ -342,12 +408,15 @@ def student(files, links=(), fifos=(), name="student"):
         for rel, target in dict(links).items():
             path = os.path.join(folder, rel.encode())
             os.makedirs(os.path.dirname(path), exist_ok=True)
+            target = target.replace("{cwd-relative secret}", "/proc/self/cwd/" + os.path.relpath(
+                os.path.join(tmp, "secret", "app.conf")))
             os.symlink(target.replace("{tmp}", tmp), path)
         for rel in fifos:
             path = os.path.join(folder, rel.encode())
             os.makedirs(os.path.dirname(path), exist_ok=True)
             os.mkfifo(path)
-        return args.replace("{student}", folder.decode(errors="surrogateescape"))
+        return args.replace("{student}",
+                            shlex.quote(folder.decode(errors="surrogateescape")))
     return setup
 
 
@@ -363,12 +432,15 @@ def no_secret(tmp, p):
     problems = []
     if "S3CRET" in p.stdout + p.stderr:
         problems.append("the secret's content appears in the output")
+    secret = os.path.join(tmp, "secret", "app.conf")
     for base, _, names in os.walk(tmp):
         if os.path.join(tmp, "secret") in base:
             continue
         for n in names:
             path = os.path.join(base, n)
-            if os.path.isfile(path) and not os.path.islink(path):
+            # A hard link the case planted is the secret itself, not something the run wrote.
+            if os.path.isfile(path) and not os.path.islink(path) and not (
+                    os.path.exists(secret) and os.path.samefile(path, secret)):
                 with open(path, "rb") as f:
                     if b"S3CRET" in f.read():
                         problems.append(f"the secret's content appears in {path}")
@@ -564,14 +636,432 @@ def hostile_cases():
     ]
 
 
+# ---- more hostile folders, scenes, outputs and harnesses (issue 12, second round) -------------
+# Each kind was tried against the first round's mechanisms; those that got through (a hard link
+# to the secret, a folder at a stage file's name, a newline in a folder's name splitting the
+# message, a draw-time GL error from a student's shader ending check without a report, a full
+# diff folder ending it likewise) are fixed in the mechanism, not per case.
+
+def exactly_one_line(tmp, p):
+    lines = [l for l in p.stderr.splitlines() if l.strip()]
+    return [] if len(lines) == 1 else [f"stderr has {len(lines)} lines, expected one"]
+
+
+def both(*checks):
+    def check(tmp, p):
+        return [problem for c in checks for problem in c(tmp, p)]
+    return check
+
+
+def secret_at_stdin(tmp):
+    return open(os.path.join(tmp, "secret", "app.conf"), "rb")
+
+
+def with_secret(setup):
+    """A setup that first writes the secret (for cases whose folder is made by `setup`)."""
+    def wrapped(tmp, args):
+        os.makedirs(os.path.join(tmp, "secret"), exist_ok=True)
+        with open(os.path.join(tmp, "secret", "app.conf"), "w") as f:
+            f.write(SECRET + "\n")
+        return setup(tmp, args)
+    return wrapped
+
+
+def hard_links(*relatives):
+    """After student(): each relative path in the overlay a hard link to the secret."""
+    def setup(tmp, args):
+        for rel in relatives:
+            path = os.path.join(tmp, "student", rel)
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            os.link(os.path.join(tmp, "secret", "app.conf"), path)
+        return args
+    return setup
+
+
+def chain(*setups):
+    def setup(tmp, args):
+        for s in setups:
+            args = s(tmp, args)
+        return args
+    return setup
+
+
+def folder_at(relative):
+    def setup(tmp, args):
+        os.makedirs(os.path.join(tmp, "student", relative))
+        return args
+    return setup
+
+
+def linked_overlay(tmp, args):
+    """{student} given through a symlink to the real folder."""
+    os.symlink(os.path.join(tmp, "student"), os.path.join(tmp, "link"))
+    return args.replace(os.path.join(tmp, "student"), os.path.join(tmp, "link"))
+
+
+def margin_with(function, call):
+    text = shipped("margin/lit.frag").decode()
+    text = text.replace("void main()", function + "\nvoid main()")
+    return {"margin/lit.frag": text.replace("fragColor = shade(",
+                                            f"fragColor = 1e-9 * {call} + shade(").encode()}
+
+
+# A loop too long to unroll: it runs. llvmpipe ends a shader's loops after 65,535 iterations in
+# all, so each iteration does 200 sines: 13 million a pixel or vertex, minutes for a frame.
+BUSY = ("{ float s = x; for (int i = 0; i < 2000000000; i++) { " + "s = sin(s + y); " * 200 +
+        "} return s; }")
+RUNTIME_LOOP = margin_with("float busy(float x, float y) " + BUSY,
+                           "busy(worldPosition.x, worldPosition.y)")
+# A million floats in a function: Mesa's compiler takes gigabytes or minutes, never a result.
+GIANT_ARRAY = margin_with("float big(vec3 p) { float a[1000000]; for (int i = 0; i < 1000000; "
+                          "i++) a[i] = p.x * float(i); return a[int(p.y)]; }", "big(worldPosition)")
+
+
+def vertex_loop():
+    text = shipped("phong/lit.vert").decode()
+    text = text.replace("void main()", "float spin(float x, float y) " + BUSY + "\nvoid main()")
+    return {"phong/lit.vert": text.replace("gl_Position = ", "gl_Position = 1e-9 * spin("
+                                           "position.x, position.y) * vec4(1.0) + ", 1).encode()}
+
+
+def two_sampler_types():
+    """Two samplers of different types on texture unit 0: GL_INVALID_OPERATION at draw time."""
+    text = shipped("phong/lit.frag").decode()
+    text = text.replace("out vec4 fragColor;", "out vec4 fragColor;\nuniform sampler2D flat2d;\n"
+                        "uniform sampler3D deep3d;", 1)
+    text = text.replace("fragColor = ", "fragColor = 1e-9 * (texture(flat2d, vec2(0.5)) + "
+                        "texture(deep3d, vec3(0.5))) + ", 1)
+    return {"phong/lit.frag": text.encode()}
+
+
+def many_files(count):
+    """`count` small files in the overlay (common/fNNNN.glsl), a chain of 200 of them included."""
+    files = {f"common/f{k:05d}.glsl": f"float f{k};\n".encode() for k in range(count)}
+    files["common/chain.glsl"] = "".join(f'#include "common/f{k:05d}.glsl"\n'
+                                         for k in range(200)).encode()
+    files["phong/lit.frag"] = lit_including("common/chain.glsl").encode()
+    return files
+
+
+def growing_scene(tmp, args):
+    """A scene file a writer keeps appending to while shadowlab reads it."""
+    import threading
+    path = os.path.join(tmp, "grow.json")
+    with open(path, "w") as f:
+        f.write('{"objects": [')
+    stop = threading.Event()
+
+    def grow():
+        with open(path, "a") as f:
+            while not stop.is_set() and f.tell() < 64 << 20:
+                f.write('{"type": "sphere", "center": [0, 0, 0], "radius": 1},' * 1000)
+                f.flush()
+    thread = threading.Thread(target=grow, daemon=True)
+    thread.start()
+    time.sleep(0.2)
+    GROWERS.append((stop, thread))
+    return args.replace("{scene}", path)
+
+
+GROWERS = []
+
+
+def stop_growing(tmp, p):
+    for stop, thread in GROWERS:
+        stop.set()
+        thread.join()
+    GROWERS.clear()
+    return []
+
+
+def deep_json(levels):
+    def setup(tmp, args):
+        path = os.path.join(tmp, "deep.json")
+        with open(path, "w") as f:
+            f.write('{"camera": ' + "[" * levels + "]" * levels + "}")
+        return args.replace("{scene}", path)
+    return setup
+
+
+def diff_dir_with(kind):
+    """{tmp}/diffs with the first diff image's name taken: a symlink to a victim, or dangling."""
+    def setup(tmp, args):
+        diffs = os.path.join(tmp, "diffs")
+        os.mkdir(diffs)
+        with open(os.path.join(tmp, "victim"), "wb") as f:
+            f.write(b"victim")
+        target = os.path.join(tmp, "victim") if kind == "link" else "/nonexistent/victim"
+        os.symlink(target, os.path.join(diffs, "phong-core-lecture.png"))
+        return args
+    return setup
+
+
+def diff_dir_linked(tmp, args):
+    os.mkdir(os.path.join(tmp, "real"))
+    os.symlink(os.path.join(tmp, "real"), os.path.join(tmp, "diffs"))
+    return args
+
+
+def images_in(folder, count):
+    def check(tmp, p):
+        names = sorted(os.listdir(os.path.join(tmp, folder)))
+        bad = [n for n in names if not is_png(os.path.join(tmp, folder, n))]
+        if len(names) != count or bad:
+            return [f"{folder} holds {names}, expected {count} PNG images"]
+        return []
+    return check
+
+
+def full_disk_for(kib):
+    """A tmpfs of `kib` KiB at {disk}: a report of 10 KB does not fit in 4, diff images of 4 KB
+    one by one fill 8."""
+    def setup(tmp, args):
+        disk = os.path.join(tmp, "full")
+        os.mkdir(disk)
+        if subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={kib}k", "tmpfs", disk],
+                          capture_output=True).returncode != 0:
+            raise Skip("cannot mount a tmpfs here (needs root)")
+        return args.replace("{disk}", disk)
+    return setup
+
+
+def report_json_says(verdicts, exit_code, name="report.json"):
+    """{tmp}/NAME is valid strict-UTF-8 JSON, each stage/tree has its verdict (every row of it),
+    and its summary's exit code."""
+    def check(tmp, p):
+        try:
+            with open(os.path.join(tmp, name), "rb") as f:
+                report = json.loads(f.read().decode("utf-8"))
+        except (OSError, ValueError) as e:
+            return [f"no valid report: {e}"]
+        problems = []
+        for key, verdict in verdicts.items():
+            got = {r["verdict"] for r in report["results"] if f"{r['stage']}/{r['tree']}" == key}
+            if got != {verdict}:
+                problems.append(f"report: {key} is {sorted(got)}, expected {verdict}")
+        if report["summary"]["exit_code"] != exit_code:
+            problems.append(f"report: exit_code {report['summary']['exit_code']}, "
+                            f"expected {exit_code}")
+        return problems
+    return check
+
+
+def no_report(tmp, p):
+    return ["a report was written by a killed run"] if os.path.exists(
+        os.path.join(tmp, "report.json")) else []
+
+
+def parallel_agree(runs):
+    """Runs `runs` of the same check at once and compares every verdict and figure with theirs
+    and with the case's own run (alone)."""
+    def check(tmp, p):
+        reports = []
+        procs = []
+        for k in range(runs):
+            args = [EXE, "check", "--all", "--glsl", "core", "--size", "160x120", "--shaders",
+                    os.path.join(tmp, "student"), "--report", os.path.join(tmp, f"r{k}.json")]
+            procs.append(subprocess.Popen(args, stdout=subprocess.DEVNULL,
+                                          stderr=subprocess.DEVNULL))
+        for proc in procs:
+            proc.wait(timeout=TIMEOUT * 2)
+        for k in range(runs):
+            with open(os.path.join(tmp, f"r{k}.json")) as f:
+                report = json.load(f)
+            reports.append([(r["stage"], r["tree"], r["view"], r["verdict"],
+                             json.dumps(r.get("figures"), sort_keys=True))
+                            for r in report["results"]])
+        with open(os.path.join(tmp, "report.json")) as f:
+            first = json.load(f)
+        reports.append([(r["stage"], r["tree"], r["view"], r["verdict"],
+                         json.dumps(r.get("figures"), sort_keys=True)) for r in first["results"]])
+        return [] if all(r == reports[0] for r in reports) else [
+            "parallel check runs disagree on verdicts or figures"]
+    return check
+
+
+def attack_cases():
+    lit = "phong/lit.frag"
+    R = "{R} --shaders {student}"
+    sandbox = "a path that leaves the shader folder"
+    outside = "resolves outside the shader folders"
+    cases = [
+        # Include names that climb out however they are spelled.
+        Case("#include \"./../secret\"", 2, sandbox, R, timeout=20, check=no_secret,
+             setup=student({lit: lit_including("./../secret/app.conf").encode()})),
+        Case("#include \"common/../../secret\"", 2, sandbox, R, timeout=20, check=no_secret,
+             setup=student({lit: lit_including("common/../../secret/app.conf").encode()})),
+        Case("#include \"common//../..//secret\"", 2, sandbox, R, timeout=20, check=no_secret,
+             setup=student({lit: lit_including("common//../..//secret/app.conf").encode()})),
+        Case("#include of the overlay folder itself (\".\")", 2, sandbox, R, timeout=20,
+             setup=student({lit: lit_including(".").encode()})),
+        Case("#include of a folder (\"common/.\")", 2, "it is a folder, not a regular file", R,
+             timeout=20, setup=student({lit: lit_including("common/.").encode()})),
+        Case("#include with tabs and spaces around every part", 2, sandbox, R, timeout=20,
+             check=no_secret, setup=student({lit: shipped(lit).replace(
+                 b'#include "common/phong.glsl"\n',
+                 b'#include "common/phong.glsl"\n \t#\t include \t"../secret/app.conf"\t \r\n')})),
+        # The preprocessor expands before the compiler sees comments or #if: still refused.
+        Case("#include inside a block comment", 2, sandbox, R, timeout=20, check=no_secret,
+             setup=student({lit: shipped(lit).replace(b"void main", b'/*\n#include '
+                                                      b'"../secret/app.conf"\n*/\nvoid main')})),
+        Case("#include inside #if 0", 2, sandbox, R, timeout=20, check=no_secret,
+             setup=student({lit: shipped(lit).replace(b"void main", b'#if 0\n#include '
+                                                      b'"../secret/app.conf"\n#endif\nvoid main')})),
+        # Links that end outside, however indirectly.
+        Case("a symlink chain inside the overlay that ends outside", 2, outside, R, timeout=20,
+             check=no_secret, setup=student({lit: lit_including("common/l1.glsl").encode()},
+                                            links={"common/l1.glsl": "l2", "common/l2": "l3",
+                                                   "common/l3": "{tmp}/secret/app.conf"})),
+        Case("a symlink through /proc/self/root", 2, outside, R, timeout=20, check=no_secret,
+             setup=student({lit: lit_including("common/r.glsl").encode()},
+                           links={"common/r.glsl": "/proc/self/root{tmp}/secret/app.conf"})),
+        Case("a symlink through /proc/self/cwd", 2, outside, R, timeout=20, check=no_secret,
+             setup=student({lit: lit_including("common/c.glsl").encode()},
+                           links={"common/c.glsl": "{cwd-relative secret}"})),
+        Case("a symlink to /proc/self/fd/0 (the secret open as stdin)", 2, outside, R,
+             timeout=20, check=no_secret, stdin=secret_at_stdin,
+             setup=student({lit: lit_including("common/fd.glsl").encode()},
+                           links={"common/fd.glsl": "/proc/self/fd/0"})),
+        Case("the overlay given through a symlink, #include ../secret", 2, sandbox, R,
+             timeout=20, check=no_secret,
+             setup=chain(student({lit: lit_including("../secret/app.conf").encode()}),
+                         linked_overlay)),
+        # A hard link is the secret under a name inside the folder: refused by its link count.
+        Case("an include that is a hard link to a file outside", 2, "has 2 hard links", R,
+             timeout=20, check=no_secret,
+             setup=chain(student({lit: lit_including("common/h.glsl").encode()}),
+                         hard_links("common/h.glsl"))),
+        Case("a stage file that is a hard link to a file outside", 2, "has 2 hard links", R,
+             timeout=20, check=no_secret, setup=chain(student({}), hard_links(lit))),
+        Case("a stage file that is a folder", 2, "lit.frag: cannot read shader file: it is a "
+             "folder", R, timeout=20, setup=chain(student({}), folder_at(lit))),
+        # Names that would break the one-line message or the terminal.
+        Case("a newline and an ESC in the overlay folder's name", 2, "cannot read shader file",
+             R, timeout=20, check=both(exactly_one_line, report_valid_or_none),
+             setup=student({lit: lit_including("common/missing.glsl").encode()},
+                           name=b"stu\ndent\x1b[2J")),
+        Case("an include name with an ESC and bytes that are not UTF-8", 2,
+             "cannot read shader file (missing?)", R, timeout=20, check=exactly_one_line,
+             setup=student({lit: shipped(lit).replace(
+                 b'#include "common/phong.glsl"\n',
+                 b'#include "common/phong.glsl"\n#include "common/a\x1b[31m\xff.glsl"\n')})),
+        Case("5,000 small files, a chain of 200 includes", 0, "rendered phong", R, timeout=30,
+             setup=student(many_files(5000))),
+        # Shaders that hang or balloon when they RUN, not when they compile.
+        Case("a fragment shader looping 2e9 times a pixel (render)", 2,
+             "stage margin (core): no result within the time limit of 3 s (--time-limit)",
+             "{R} --stage margin --shaders {student} --time-limit 3", timeout=30,
+             setup=student(RUNTIME_LOOP)),
+        Case("a fragment shader looping 2e9 times a pixel (check)", 2,
+             "stage margin (core): no result within the time limit of 3 s (--time-limit)",
+             CHECK + " --stage margin --time-limit 3", timeout=30, one_line=False,
+             setup=chain(release_speed, student(RUNTIME_LOOP)),
+             check=report_json_says({"margin/core": "TIMEOUT"}, 2)),
+        Case("a vertex shader looping 2e9 times a vertex", 2,
+             "stage phong (core): no result within the time limit of 3 s (--time-limit)",
+             "{R} --shaders {student} --time-limit 3", timeout=30, setup=student(vertex_loop())),
+        Case("a million-float array in a function", 2, "stage margin (core): ",
+             CHECK + " --stage margin --time-limit 3 --memory-limit 1024", timeout=30,
+             one_line=False, crashes=True, setup=student(GIANT_ARRAY),
+             check=lambda tmp, p: [] if re.search(r"\b(TIMEOUT|CRASH)\b", p.stdout) else [
+                 "margin is neither TIMEOUT nor CRASH"]),
+        # A GL rule broken at draw time is the shader's fault, and check goes on.
+        Case("two sampler types on one texture unit (render)", 2,
+             "drawing with this shader raised GL_INVALID_OPERATION", R, timeout=20,
+             check=exactly_one_line, setup=student(two_sampler_types())),
+        Case("two sampler types on one texture unit (check --all)", 2,
+             "drawing with this shader raised GL_INVALID_OPERATION", CHECK + " --all",
+             timeout=120, one_line=False, setup=student(two_sampler_types()),
+             check=both(report_valid(("phong", "ERROR"), ("hardware", "PASS")),
+                        report_json_says({"phong/core": "ERROR"}, 2))),
+        # Scenes that are not plain files, or not plain JSON.
+        Case("scene /proc/self/environ (a regular file of size 0 that streams)", 2,
+             "scene error: /proc/self/environ: not valid JSON",
+             "{R} --scene /proc/self/environ", timeout=20),
+        Case("scene /dev/stdin, a pipe", 2, "it is a FIFO, not a regular file",
+             "{R} --scene /dev/stdin", timeout=20, stdin=lambda tmp: subprocess.PIPE),
+        Case("scene a folder", 2, "cannot read scene file: it is a folder", "{R} --scene {tmp}",
+             timeout=20),
+        Case("scene growing while it is read", 2, "at most 16777216 are allowed",
+             "{R} --scene {scene}", timeout=30, setup=growing_scene, check=stop_growing),
+        Case("scene nested 4,000,000 levels deep inside a field", 2, "/camera: must be an object",
+             "{R} --scene {scene}", timeout=30, setup=deep_json(4000000)),
+        Case("scene with NaN", 2, "not valid JSON", "{R} --scene {scene}", timeout=20,
+             setup=lambda tmp, args: write_raw_scene(tmp, args, "NaN")),
+        Case("scene with Infinity", 2, "not valid JSON", "{R} --scene {scene}", timeout=20,
+             setup=lambda tmp, args: write_raw_scene(tmp, args, "Infinity")),
+        # Outputs: links inside --diff-dir refused before any GL work, never written through.
+        Case("--diff-dir holding a symlink at an image's name", 2, "it is a symbolic link",
+             "check --stage phong --glsl core --size 160x120 --diff-dir {tmp}/diffs "
+             "--report {tmp}/report.json", timeout=20, setup=diff_dir_with("link"),
+             check=both(unchanged("victim", b"victim"), no_file("report.json"))),
+        Case("--diff-dir holding a dangling symlink at an image's name", 2,
+             "it is a symbolic link", "check --stage phong --glsl core --size 160x120 "
+             "--diff-dir {tmp}/diffs", timeout=20, setup=diff_dir_with("dangling"),
+             check=lambda tmp, p: [] if not os.path.exists("/nonexistent/victim") else [
+                 "written through a dangling link"]),
+        Case("--diff-dir a symlink to a folder (the grader's own choice: followed)", 0, "",
+             "check --stage phong --glsl core --size 160x120 --diff-dir {tmp}/diffs",
+             timeout=30, setup=diff_dir_linked, check=images_in("real", 5)),
+        Case("--report on a full disk, written at the end", 2,
+             "--report: cannot write", "check --stage phong --glsl core --size 160x120 "
+             "--report {disk}/report.json --junit {disk}/junit.xml", timeout=30,
+             setup=full_disk_for(4), check=unmount_and_check),
+        Case("--diff-dir on a full disk: a note per image, the report still written", 0,
+             "no diff image: cannot write", "check --stage phong --glsl core --size 160x120 "
+             "--diff-dir {disk}/diffs --report {tmp}/report.json", timeout=30, one_line=False,
+             setup=full_disk_for(8),
+             check=both(report_json_says({"phong/core": "PASS"}, 0), unmount_keeping_images)),
+        # A grading harness's timeout kills shadowlab: its workers die too, no report is left.
+    ]
+    for sig in (signal.SIGTERM, signal.SIGKILL, signal.SIGINT):
+        cases.append(Case(f"shadowlab killed by {sig.name} during check --all", -sig, "",
+                          "check --all --glsl core --report {tmp}/report.json "
+                          "--diff-dir {tmp}/diffs", timeout=30, kill_after=(2.5, sig),
+                          check=no_report))
+    cases.append(Case("check --all of one submission: 3 at once agree with one alone", 2, "",
+                      CHECK + " --all", timeout=120, one_line=False,
+                      setup=student(margin_int()), check=parallel_agree(3)))
+    return cases
+
+
+def write_raw_scene(tmp, args, number):
+    with open(os.path.join(ROOT, "scenes", "slides.json")) as f:
+        text = f.read()
+    path = os.path.join(tmp, "raw.json")
+    with open(path, "w") as f:
+        f.write(re.sub(r'"fovy":\s*[0-9.]+', f'"fovy": {number}', text, count=1))
+    return args.replace("{scene}", path)
+
+
+def unmount_keeping_images(tmp, p):
+    """The images that fitted are whole PNGs, nothing else (no temporary) is on the disk."""
+    disk = os.path.join(tmp, "full")
+    left = [os.path.join(base, n) for base, _, names in os.walk(disk) for n in names]
+    problems = [f"{path} is not a whole PNG" for path in left if not is_png(path)]
+    subprocess.run(["umount", disk])
+    return problems
+
+
+def no_file(name):
+    def check(tmp, p):
+        return [f"{name} was written"] if os.path.exists(os.path.join(tmp, name)) else []
+    return check
+
+
+def report_valid_or_none(tmp, p):
+    return [] if not os.path.exists(os.path.join(tmp, "report.json")) else report_valid()(tmp, p)
+
+
 EXE = None  # the shadowlab under test
 
 
 def main():
     global EXE
     exe = EXE = sys.argv[1]
-    only = sys.argv[3] if len(sys.argv) > 3 and sys.argv[2] == "--only" else ""
-    cases = parse_cases(os.path.join(HERE, "cases.txt")) + generated_cases() + hostile_cases()
+    only = sys.argv[sys.argv.index("--only") + 1] if "--only" in sys.argv else ""
+    cases = (parse_cases(os.path.join(HERE, "cases.txt")) + generated_cases() +
+             hostile_cases() + attack_cases())
     passed = failed = skipped = 0
     for case in cases:
         if only and only not in case.name and only not in case.args:
@@ -589,6 +1079,9 @@ def main():
                 print(f"     {problem}")
         else:
             passed += 1
+    if "--times" in sys.argv:  # how long each case took, slowest first
+        for name, seconds in sorted(CASE_SECONDS.items(), key=lambda item: -item[1]):
+            print(f"{seconds:6.1f} s  {name}")
     print(f"{passed} passed, {failed} failed" + (f", {skipped} skipped" if skipped else ""))
     return 1 if failed else 0
 
