@@ -156,8 +156,11 @@ def run_and_kill(exe, args, case, stdin):
     """Starts shadowlab, kills it after kill_after = (seconds, signal) as a harness's timeout
     would, and checks that no worker of it is left running a second later."""
     seconds, sig = case.kill_after
+    # A shell's background job inherits SIGINT ignored: give shadowlab the default action, as
+    # a harness's child has.
     p = subprocess.Popen([exe] + shlex.split(args), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                         stdin=stdin, env=case.env)
+                         stdin=stdin, env=case.env,
+                         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     time.sleep(seconds)
     workers = shadowlab_processes_under(p.pid)
     WORKER_GROUPS[p.pid] = set(workers)
