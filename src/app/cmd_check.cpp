@@ -265,7 +265,7 @@ int runCheckCommand(const CheckArgs& a) {
     std::vector<CheckResult> results;
     std::string machine, backendName;
     std::cout << "check against " << expectationsPath() << ", " << base.width << "x" << base.height
-              << (base.overlay.empty() ? "" : ", shaders " + printable(base.overlay)) << "\n"
+              << (base.overlay.empty() ? "" : ", shaders " + printableName(base.overlay)) << "\n"
               << "        " << checkTableHeader();
     // Every (stage, tree) with its lessons and views, planned before any GL work.
     const bool narrowed = !base.sets.empty() || base.sceneGiven;

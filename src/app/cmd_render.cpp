@@ -57,7 +57,7 @@ void drawMirrorFigure(const RenderRequest& request, const std::string& path) {
 void renderInWorker(const RenderArgs& a, const RenderRequest& request) {
     auto context = createHeadlessContext(toBackend(a.common.backend), request.tree, request.width,
                                          request.height);
-    installGlDebugOutput();
+    installGlDebugOutput(true);
     auto renderer = makeRenderer(request);
     renderer->timePasses = true;
     // The first frame compiles shaders and renders the map; later frames show the steady cost.

@@ -25,7 +25,8 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
     if (key.str() != key_) {
         reset();
         context_ = createHeadlessContext(backend_, r.tree, r.width, r.height);
-        installGlDebugOutput();  // a GL error is caught in the draw that raised it (whose shader)
+        installGlDebugOutput(
+            true);  // a GL error is caught in the draw that raised it (whose shader)
         renderer_ = makeRenderer(r);
         sceneLight_ = renderer_->scene().light.position;
         key_ = key.str();

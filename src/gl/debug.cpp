@@ -13,12 +13,13 @@ int g_errors = 0;
 std::string g_lastError;
 std::string g_programFiles;  // the student's files behind the program in use, or ""
 std::string g_errorFiles;    // g_programFiles at the first error since the reset
+bool g_raisesStudentErrors = false;
 
 void report(const std::string& message) {
     if (++g_errors == 1) g_errorFiles = g_programFiles;
     g_lastError = message;
-    // A student's program: the ShaderError that follows is the one line to show.
-    if (g_programFiles.empty())
+    // A student's program on a headless path: the ShaderError that follows is the one line.
+    if (g_programFiles.empty() || !g_raisesStudentErrors)
         std::fprintf(stderr, "shadowlab: GL error in pass '%s': %s\n", g_pass, message.c_str());
 }
 
@@ -59,7 +60,8 @@ const char* currentPass() {
     return g_pass;
 }
 
-void installGlDebugOutput() {
+void installGlDebugOutput(bool raisesStudentErrors) {
+    g_raisesStudentErrors = raisesStudentErrors;
     resetGlErrorCount();
     if (GLAD_GL_KHR_debug || GLAD_GL_VERSION_4_3) {
         glEnable(GL_DEBUG_OUTPUT);

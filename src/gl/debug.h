@@ -9,7 +9,9 @@
 namespace sl {
 
 // Installs the debug-output callback (when the context offers KHR_debug) and resets the count.
-void installGlDebugOutput();
+// `raisesStudentErrors`: the caller turns errors raised while a student's program draws into one
+// ShaderError line (throwGlFailure), so the callback does not print them too (headless paths).
+void installGlDebugOutput(bool raisesStudentErrors = false);
 
 // The pass in progress, named in every error message. Scoped: restores the previous name.
 class PassScope {

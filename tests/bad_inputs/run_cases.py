@@ -353,7 +353,10 @@ def generated_cases():
         # other seven are graded, the report is written.
         Case("worker: 20 nested loops, check", 2,
              "stage margin (core): no result within the time limit of 5 s (--time-limit)",
-             "check --all --glsl core --shaders {overlay} --time-limit 5 --report {tmp}/report.json",
+             # 160x120: the other stages well inside 5 s on a loaded machine (peers at 640x480
+             # took over 5 s in a parallel ctest run).
+             "check --all --glsl core --size 160x120 --shaders {overlay} --time-limit 5 "
+             "--report {tmp}/report.json",
              timeout=90, one_line=False,
              setup=lambda tmp, args: overlay(nested_loops(20))(tmp, release_speed(tmp, args)),
              check=report_says({"margin/core": "TIMEOUT"}, 7)),
@@ -987,8 +990,8 @@ def attack_cases():
              timeout=20),
         Case("scene growing while it is read", 2, "at most 16777216 are allowed",
              "{R} --scene {scene}", timeout=30, setup=growing_scene, check=stop_growing),
-        Case("scene nested 4,000,000 levels deep inside a field", 2, "/camera: must be an object",
-             "{R} --scene {scene}", timeout=30, setup=deep_json(4000000)),
+        Case("scene nested 1,000,000 levels deep inside a field", 2, "/camera: must be an object",
+             "{R} --scene {scene}", timeout=30, setup=deep_json(1000000)),
         Case("scene with NaN", 2, "not valid JSON", "{R} --scene {scene}", timeout=20,
              setup=lambda tmp, args: write_raw_scene(tmp, args, "NaN")),
         Case("scene with Infinity", 2, "not valid JSON", "{R} --scene {scene}", timeout=20,

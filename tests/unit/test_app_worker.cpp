@@ -133,17 +133,25 @@ TEST(Worker, ASeriesSharesItsWorkerUntilAJobFails) {
     EXPECT_LT(seconds, 3.0);
 }
 
-TEST(Worker, AnExceptionInASeriesStopsIt) {
-    std::size_t calls = 0;
-    EXPECT_THROW(runBoundedSeries(
-                     {5, 512}, 3,
-                     [](std::size_t k) -> nlohmann::json {
-                         if (k == 1) throw UsageError("bad");
-                         return k;
-                     },
-                     [&](std::size_t, const WorkerOutcome&) { ++calls; }),
-                 UsageError);
-    EXPECT_EQ(calls, 1u);
+// A job that throws is its own outcome (Error, with the kind and message), and a fresh worker
+// goes on with the next: check grades the other stages and writes the report.
+TEST(Worker, AnExceptionInASeriesIsThatJobsOutcome) {
+    std::vector<WorkerOutcome> outcomes;
+    runBoundedSeries(
+        {5, 512}, 3,
+        [](std::size_t k) -> nlohmann::json {
+            if (k == 1) throw UsageError("bad");
+            return k;
+        },
+        [&](std::size_t, const WorkerOutcome& o) { outcomes.push_back(o); });
+    ASSERT_EQ(outcomes.size(), 3u);
+    EXPECT_EQ(outcomes[0].kind, WorkerOutcome::Kind::Ok);
+    EXPECT_EQ(outcomes[1].kind, WorkerOutcome::Kind::Error);
+    EXPECT_EQ(outcomes[1].errorKind, "usage");
+    EXPECT_EQ(outcomes[1].errorWhat, "bad");
+    ASSERT_EQ(outcomes[2].kind, WorkerOutcome::Kind::Ok);
+    EXPECT_EQ(outcomes[2].value.get<int>(), 2);
+    EXPECT_THROW(rethrowJobError(outcomes[1]), UsageError);
 }
 
 TEST(Worker, NoLimitsMeansNone) {

@@ -115,3 +115,24 @@ TEST(Text, ValidUtf8ReplacesOnlyBadBytes) {
 TEST(Text, PrintableKeepsNewlinesAndTabsOnly) {
     EXPECT_EQ(printable("a\x1b[31mb\tc\nd\r\x7f"), "a?[31mb\tc\nd??");
 }
+
+// A name from a student's folder keeps a message on one line: newlines and tabs too.
+TEST(Text, PrintableNameHasNoControlCharactersAtAll) {
+    EXPECT_EQ(printableName("st\nu\tde\x1b[2Jnt\xff"), "st?u?de?[2Jnt?");
+}
+
+// The file is written unnamed (O_TMPFILE) and linked only when whole: no temporary name ever
+// appears in the folder, and a planted file at a likely temporary name is not touched.
+TEST(WriteFileAtomically, LeavesPlantedTemporaryNamesAlone) {
+    TempDir t;
+    write(t / "victim", "victim");
+    for (int k = 0; k < 50; ++k)
+        fs::create_symlink(t / "victim", t / ("out.txt.tmp" + std::to_string(k)));
+    EXPECT_EQ(writeFileAtomically(t / "out.txt", "abc", 3), "");
+    std::string text;
+    readRegularFile(t / "victim", 100, text);
+    EXPECT_EQ(text, "victim");
+    int entries = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(t.path)) ++entries;
+    EXPECT_EQ(entries, 52);  // victim, the 50 links, out.txt
+}
