@@ -67,6 +67,18 @@ bool matchInclude(const std::string& line, std::string& name) {
     return true;
 }
 
+// Whether `line` is a `#line` directive (spaces allowed around '#'); `rest` is what follows.
+bool matchLineDirective(const std::string& line, std::string& rest) {
+    std::size_t i = 0, n = line.size();
+    while (i < n && isSpace(line[i])) ++i;
+    if (i == n || line[i] != '#') return false;
+    ++i;
+    while (i < n && isSpace(line[i])) ++i;
+    if (line.compare(i, 4, "line") != 0 || (i + 4 < n && !isSpace(line[i + 4]))) return false;
+    rest = line.substr(i + 4);
+    return true;
+}
+
 // `relative` with "." and "x/.." removed; "" when it is absolute, empty or climbs above the root.
 std::string normalizedRelative(const std::string& relative) {
     if (relative.empty() || relative[0] == '/') return {};
@@ -144,8 +156,15 @@ class Preprocessor {
             begin = end + 1;
             ++number;
             any = any || line.find_first_not_of(" \t\r") != std::string::npos;
-            std::string name;
-            if (matchInclude(line, name)) {
+            std::string name, rest;
+            if (matchLineDirective(line, rest)) {
+                // A file's own #line may renumber its lines but not name another source string:
+                // `#line 1 1` would make its errors appear to come from another file (ours).
+                std::size_t at = rest.find_first_not_of(" \t\r\f\v"), end = at;
+                while (end < rest.size() && rest[end] >= '0' && rest[end] <= '9') ++end;
+                out.text += "#line " + (at == end ? std::string("0") : rest.substr(at, end - at)) +
+                            " " + std::to_string(source) + "\n";
+            } else if (matchInclude(line, name)) {
                 std::string here = shown + ":" + std::to_string(number);
                 if (name.size() > kMaxIncludeName)
                     throw ShaderError(here + ": #include name of " + std::to_string(name.size()) +

@@ -951,6 +951,11 @@ def attack_cases():
              setup=student({lit: shipped(lit).replace(
                  b'#include "common/phong.glsl"\n',
                  b'#include "common/phong.glsl"\n#include "common/a\x1b[31m\xff.glsl"\n')})),
+        # `#line 1 1` would make the compiler blame source string 1 (our common/phong.glsl).
+        Case("#line spoofing another source string", 2, "fragment shader did not compile", R,
+             timeout=20, check=errors_named_in("student/phong/lit.frag:", "common/phong.glsl:"),
+             setup=student({lit: shipped(lit).replace(b"void main",
+                                                      b"#line 1 1\nfoo bar;\nvoid main")})),
         Case("5,000 small files, a chain of 200 includes", 0, "rendered phong", R, timeout=30,
              setup=student(many_files(5000))),
         # Shaders that hang or balloon when they RUN, not when they compile.
@@ -1047,6 +1052,17 @@ def unmount_keeping_images(tmp, p):
     problems = [f"{path} is not a whole PNG" for path in left if not is_png(path)]
     subprocess.run(["umount", disk])
     return problems
+
+
+def errors_named_in(expected, never):
+    """The compiler's error lines name `expected`, never `never`."""
+    def check(tmp, p):
+        errors = [l for l in p.stderr.splitlines() if "error:" in l and "shader error" not in l]
+        problems = [f"an error line names {never}: {l}" for l in errors if never in l]
+        if not any(expected in l for l in errors):
+            problems.append(f"no error line names {expected}")
+        return problems
+    return check
 
 
 def no_file(name):
