@@ -350,6 +350,13 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     e.program.setOrigin(files);
     e.files = vert.files;
     e.files.insert(e.files.end(), frag.files.begin(), frag.files.end());
+    // Each file of ours the overlay could replace is watched at its overlay name too (missing
+    // now): a student's file that appears later, re-created after a delete or by an editor's
+    // rename-and-write, is then picked up by reload like an edit.
+    if (!overlay_.empty())
+        for (std::size_t i = 0, n = e.files.size(); i < n; ++i)
+            if (e.files[i].rfind(root_ + "/", 0) == 0)
+                e.files.push_back(overlay_ + "/" + e.files[i].substr(root_.size() + 1));
     for (const auto& f : e.files) e.stamps.push_back(modificationStamp(f));
     // Notes about unused uniforms are for the student's own pass files, and only when they differ
     // from ours: an unmodified copy, or an overridden include alone, leaves our shader ours.
