@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -167,10 +168,11 @@ pid_t spawn(const std::string& command, const std::string& dir, const std::strin
 
 // One window session as a user has it: `shadowlab window ARGS` on a display of its own
 // (xvfb-run -a: parallel tests never share one; -ac: no cookie to pass to the window), keys
-// sent with xdotool as real X events.
+// sent with xdotool as real X events. `focus`: give the window the keyboard with xdotool;
+// without, the window must take it itself (a bare X server has no window manager to do it).
 class LiveWindow {
   public:
-    LiveWindow(const std::string& args, const std::string& dir) : dir_(dir) {
+    LiveWindow(const std::string& args, const std::string& dir, bool focus = true) : dir_(dir) {
         fs::create_directories(dir + "/x");
         xserver_ =
             spawn(std::string(XVFB_RUN) +
@@ -190,7 +192,15 @@ class LiveWindow {
             },
             60);
         id_ = id;
-        if (!id_.empty()) xdo("windowfocus --sync " + id_);
+        if (id_.empty()) return;
+        // Keys typed to the X server (XTEST) go to the focused window, whatever the pointer is
+        // over: the pointer is put outside the window so that only the focus can route them.
+        xdo("mousemove 1270 1010");
+        if (focus)
+            xdo("windowfocus --sync " + id_);
+        else if (!waitUntil([&] { return capture("xdotool getwindowfocus 2>/dev/null") == id_; },
+                            60))
+            id_.clear();
     }
     ~LiveWindow() {
         if (alive()) {
@@ -203,6 +213,7 @@ class LiveWindow {
         }
     }
     bool ready() const { return !id_.empty(); }
+    const std::string& id() const { return id_; }
     bool alive() {
         if (window_ <= 0 || reaped_) return false;
         if (::waitpid(window_, &exitStatus_, WNOHANG) != window_) return true;
@@ -251,6 +262,10 @@ class LiveWindow {
     // Esc, then the exit code (-1 when it did not end within the time).
     int quit() {
         keys("Escape");
+        return exitCode();
+    }
+    // The exit code once the window has ended by itself (-1 when it did not within the time).
+    int exitCode() {
         waitUntil([&] { return !alive(); }, 30);
         return reaped_ && WIFEXITED(exitStatus_) ? WEXITSTATUS(exitStatus_) : -1;
     }
@@ -308,6 +323,175 @@ TEST(LiveWindow, EveryStageInOneSessionBothTreesWithShots) {
     Image shot;
     ASSERT_EQ(readPng(dir + "/shots/" + *names.begin(), shot), "");
     EXPECT_EQ(shot.width, 640);
+}
+
+// The "done when" exactly as a person or a script does it: `shadowlab window` with no
+// options in an empty folder, keys typed with plain `xdotool key` (no --window, the script does
+// not focus the window, the pointer is elsewhere: under Xvfb there is no window manager, so the
+// window takes the keyboard itself): `p`, then `]` and `p` seven times. Eight pictures in
+// ./shots, in lecture order, each named after its stage.
+TEST(LiveWindow, DoneWhenNoOptionsSevenBracketsEightShots) {
+    std::string dir = tempDir("live-done-when");
+    LiveWindow w("", dir, /*focus=*/false);
+    ASSERT_TRUE(w.ready()) << "no window, or it never took the keyboard focus\n" << w.err();
+    std::string keys = "p";
+    for (int k = 0; k < 7; ++k) keys += " bracketright p";
+    ASSERT_TRUE(w.keys(keys));
+    ASSERT_TRUE(waitUntil([&] { return countLines(w.out(), "saved ") >= 8; }, 90))
+        << w.out() << w.err();
+    // `xdotool type` sends characters (it finds `]` on the keymap itself): one stage more.
+    ASSERT_EQ(w.xdo("type --delay 40 ']p'"), 0);
+    ASSERT_TRUE(waitUntil([&] { return countLines(w.out(), "saved ") >= 9; }, 60)) << w.out();
+    // Esc sent to the window itself: xdotool sends the release after the press, so the window
+    // must still exist then (it used to be gone, and xdotool failed with BadWindow).
+    EXPECT_EQ(w.xdo("key --window " + w.id() + " Escape"), 0);
+    EXPECT_EQ(w.exitCode(), 0) << w.err();
+
+    std::vector<std::string> saved;  // in the order saved, from stdout
+    std::istringstream out(w.out());
+    for (std::string line; std::getline(out, line);)
+        if (line.rfind("saved ", 0) == 0) saved.push_back(line.substr(6));
+    ASSERT_EQ(saved.size(), 9u) << w.out();
+    const auto ids = stageIds();
+    const std::string shots = fs::canonical(dir).string() + "/shots/";
+    for (std::size_t k = 0; k < saved.size(); ++k) {
+        const std::string& stage = ids[k % ids.size()];
+        EXPECT_EQ(saved[k].rfind(shots + stage + "-", 0), 0u) << k << ": " << saved[k];
+        EXPECT_TRUE(fs::is_regular_file(saved[k])) << saved[k];
+    }
+    std::set<std::string> stagesSeen;
+    for (std::size_t k = 0; k < 8; ++k)
+        stagesSeen.insert(
+            saved[k].substr(shots.size(), saved[k].find('-', shots.size()) - shots.size()));
+    EXPECT_EQ(stagesSeen.size(), 8u);  // eight different stage ids
+}
+
+// Closed from outside: `xdotool windowclose` destroys the window (freeglut ignores that and
+// used to run on with no window, forever), `windowkill` cuts the connection (Xlib's exit 1).
+// Both end the session at once with one line on stderr and exit code 0, also while the light
+// animates (frames being drawn into the window as it goes).
+TEST(LiveWindow, ClosedFromOutsideEndsTheSession) {
+    for (const char* how : {"windowclose", "windowkill"}) {
+        for (bool animating : {false, true}) {
+            std::string dir = tempDir(std::string("live-") + how);
+            LiveWindow w("--state state.json --size 320x240", dir);
+            ASSERT_TRUE(w.ready()) << w.err();
+            ASSERT_TRUE(w.waitState([](const auto& s) { return s["stage"] == "phong"; }, 30));
+            if (animating) {
+                ASSERT_TRUE(w.keys("l"));
+                ASSERT_TRUE(w.waitState([](const auto& s) { return s["animating"] == true; }, 10));
+            }
+            EXPECT_EQ(w.xdo(std::string(how) + " " + w.id()), 0);
+            EXPECT_EQ(w.exitCode(), 0) << how << " " << animating << "\n" << w.err();
+            EXPECT_EQ(countLines(w.err(), "shadowlab: the "), 1) << w.err();
+        }
+    }
+}
+
+// A student's shader saved the ways editors and shells do, while the window runs: an atomic
+// save (temporary file renamed over it), the file deleted (ours takes over) and written again,
+// `sed -i`, an included common file overridden and broken, then removed. Every break shows an
+// error, every repair clears it without a key, and the terminal gets whole lines.
+TEST(LiveWindow, ShaderSavedEveryWayComesAndGoes) {
+    std::string dir = tempDir("live-saves");
+    fs::create_directories(dir + "/mine/margin");
+    fs::create_directories(dir + "/mine/common");
+    const std::string source = std::string(SHADOWLAB_SOURCE_DIR) + "/shaders_core/";
+    const std::string good = readText(source + "margin/lit.frag");
+    const std::string common = readText(source + "common/phong.glsl");
+    std::string bad = good;
+    const std::string fine = "return margin;", broken = "return margin +;";
+    ASSERT_NE(bad.find(fine), std::string::npos) << "the test breaks margin/lit.frag there";
+    bad.replace(bad.find(fine), fine.size(), broken);
+    const std::string file = dir + "/mine/margin/lit.frag";
+    std::ofstream(file) << good;
+    LiveWindow w("--shaders mine --stage margin --state state.json --size 320x240", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(
+        w.waitState([](const auto& s) { return s["stage"] == "margin" && s["errors"] == 0; }, 30));
+    auto atomicSave = [&](const std::string& text) {
+        std::string tmp = dir + "/mine/margin/.lit.frag.swp";
+        std::ofstream(tmp) << text;
+        fs::rename(tmp, file);
+    };
+    auto errorsShown = [&](bool shown, const char* step) {
+        EXPECT_TRUE(w.waitState(
+            [&](const auto& s) { return (s["errors"].template get<int>() > 0) == shown; }, 20))
+            << step << "\n"
+            << w.state().dump() << "\n"
+            << w.err();
+    };
+    auto reloads = [&] { return countLines(w.out(), "shadowlab: shaders reloaded"); };
+
+    atomicSave(bad);
+    errorsShown(true, "atomic save of a broken file");
+    atomicSave(good);
+    errorsShown(false, "atomic save of the repair");
+    int before = reloads();
+    fs::remove(file);  // ours is used again
+    EXPECT_TRUE(waitUntil([&] { return reloads() > before; }, 20)) << w.out();
+    errorsShown(false, "file deleted");
+    std::ofstream(file) << bad;  // written again, broken: it must be seen again
+    errorsShown(true, "deleted file written again");
+    ASSERT_EQ(std::system(("sed -i 's/return margin +;/return margin;/' " + file).c_str()), 0);
+    errorsShown(false, "sed -i repair");
+    std::ofstream(dir + "/mine/common/phong.glsl") << common << "\nvec3 broken = ;\n";
+    errorsShown(true, "an overridden include broken");
+    fs::remove(dir + "/mine/common/phong.glsl");
+    errorsShown(false, "the broken include removed");
+    EXPECT_EQ(w.quit(), 0);
+    const std::string err = w.err();
+    EXPECT_EQ(err.find("empty"), std::string::npos) << err;
+    EXPECT_GE(countLines(err, "shadowlab: shader error"), 3) << err;
+    std::istringstream lines(err);
+    for (std::string line; std::getline(lines, line);)  // whole lines, each its own event
+        EXPECT_EQ(line.rfind("shadowlab: ", 0), 0u) << line;
+    EXPECT_EQ(err.back(), '\n');
+    EXPECT_EQ(countLines(w.out(), "shadowlab: shaders reloaded; every program builds again"), 3)
+        << w.out();
+}
+
+namespace {
+// The light's angle around the vertical axis from the window's state, waiting for a new frame
+// so that the moment it was read is the moment it was drawn (within the polling step).
+std::pair<double, Clock::time_point> freshLightAngle(LiveWindow& w) {
+    double previous = w.state().value("lightAngle", 0.0), angle = previous;
+    waitUntil(
+        [&] {
+            auto s = w.state();
+            if (s.is_discarded()) return false;
+            angle = s.value("lightAngle", previous);
+            return angle != previous;
+        },
+        10);
+    return {angle, Clock::now()};
+}
+
+// `l` turns the light at a fixed speed in radians per second, measured over a few seconds.
+double measuredLightSpeed(const std::string& args) {
+    std::string dir = tempDir("live-light");
+    LiveWindow w(args + " --state state.json --size 320x240", dir);
+    EXPECT_TRUE(w.ready()) << w.err();
+    EXPECT_TRUE(w.waitState([](const auto& s) { return s.contains("lightAngle"); }, 30));
+    w.keys("l");
+    EXPECT_TRUE(w.waitState([](const auto& s) { return s["animating"] == true; }, 10));
+    auto [a0, t0] = freshLightAngle(w);
+    std::this_thread::sleep_for(std::chrono::seconds(3));
+    auto [a1, t1] = freshLightAngle(w);
+    EXPECT_EQ(w.quit(), 0);
+    double turned = std::remainder(a1 - a0, 2 * M_PI);
+    return turned / std::chrono::duration<double>(t1 - t0).count();
+}
+}  // namespace
+
+// The README's 0.6 rad/s, at a fast frame rate (small map) and a slow one (an 8192 map, a few
+// frames a second here): it used to be 0.02 rad per frame. The margin covers reading the state
+// up to a polling step late at either end.
+TEST(LiveWindow, LightTurnsInRadiansPerSecond) {
+    double fast = measuredLightSpeed("--stage hardware --set map-size=256");
+    double slow = measuredLightSpeed("--stage hardware --set map-size=8192");
+    EXPECT_NEAR(fast, 0.6, 0.1);
+    EXPECT_NEAR(slow, 0.6, 0.1);
 }
 
 // A student breaks the shader while the window runs, then repairs it the way `cp` does
