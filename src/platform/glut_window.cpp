@@ -238,7 +238,7 @@ int runWindow(const WindowArgs& args) {
         throw std::runtime_error("could not load GL entry points through glutGetProcAddress");
     requireGl33();
     passShiftTabAsTab();
-    reportLostConnection();
+    watchWindow();
     installGlDebugOutput();
     state.width = state.startWidth = request.width;
     state.height = state.startHeight = request.height;

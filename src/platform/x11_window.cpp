@@ -3,6 +3,7 @@
 #include <X11/Xlib.h>
 #include <dlfcn.h>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 
@@ -24,16 +25,25 @@ Window currentWindow() {
     return get ? get() : 0;  // freeglut draws straight into its X window
 }
 
-int lastError = 0;
-int rememberError(Display*, XErrorEvent* e) {
-    lastError = e->error_code;
-    return 0;
+
+// Errors about our own window are not fatal: when someone destroys it, requests already on
+// their way fail (the swap's XShmPutImage with BadDrawable, GLXBadDrawable, BadWindow) before
+// the next check can notice, and Xlib's default handler would print them and exit 1. The next
+// windowStillExists() decides. Once the window is known gone, nothing is fatal any more
+// (freeglut's teardown destroys it again). Every other error goes to the previous handler.
+Window watched = 0;
+bool lost = false;
+XErrorHandler previousHandler = nullptr;
+int onXError(Display* d, XErrorEvent* e) {
+    if (lost || (watched && e->resourceid == watched)) return 0;
+    return previousHandler ? previousHandler(d, e) : 0;
 }
 
-// After the window was destroyed by someone else every request about it fails (BadWindow,
-// GLXBadDrawable at a swap, freeglut's own XDestroyWindow at teardown): the session is ending,
-// so none of these may end it with Xlib's "X Error of failed request" and exit code 1.
-int ignoreErrors(Display*, XErrorEvent*) {
+// While a check runs: the error its request about our window got (others as usual).
+int lastError = 0;
+int rememberError(Display* d, XErrorEvent* e) {
+    if (e->resourceid != watched) return onXError(d, e);
+    lastError = e->error_code;
     return 0;
 }
 
@@ -68,7 +78,6 @@ bool takeKeyboardFocusIfNobodyHasIt() {
 }
 
 bool windowStillExists() {
-    static bool lost = false;
     if (lost) return false;
     Display* display = currentDisplay();
     Window window = currentWindow();
@@ -79,14 +88,19 @@ bool windowStillExists() {
     XGetWindowAttributes(display, window, &attributes);
     XSync(display, False);
     XSetErrorHandler(before);
-    if (lastError != BadWindow) return true;
-    lost = true;
-    XSetErrorHandler(ignoreErrors);
-    return false;
+    lost = lastError == BadWindow;
+    return !lost;
 }
 
-void reportLostConnection() {
+void watchWindow() {
+    Window window = currentWindow();
+    if (!window || watched) return;
+    watched = window;
+    previousHandler = XSetErrorHandler(onXError);
     XSetIOErrorHandler(connectionLost);
+    // A write on a killed connection (Mesa's swap, xcb) must fail and reach connectionLost, not
+    // end the process with SIGPIPE.
+    std::signal(SIGPIPE, SIG_IGN);
 }
 
 }  // namespace sl

@@ -10,14 +10,15 @@ namespace sl {
 // under a window manager (which gives the focus itself) this does nothing. True when it did.
 bool takeKeyboardFocusIfNobodyHasIt();
 
-// False once the window has been destroyed by someone else (`xdotool windowclose`, a window
-// manager's kill): freeglut ignores DestroyNotify and would go on running with no window. Once
-// false, X errors about the lost window are no longer fatal (freeglut's teardown destroys it
-// again). True when the context is not GLX (nothing to watch).
-bool windowStillExists();
+// Call once, with the window's context current: from then on X errors about our window do not
+// end the process (see windowStillExists), and a killed connection (`xdotool windowkill`, the
+// X server gone) ends the session with one line on stderr and exit code 0, as closing the
+// window does, instead of Xlib's message and exit 1.
+void watchWindow();
 
-// A killed connection (`xdotool windowkill`, the X server gone) ends the session with one line
-// on stderr and exit code 0, as closing the window does, instead of Xlib's exit 1.
-void reportLostConnection();
+// False once the window has been destroyed by someone else (`xdotool windowclose`): freeglut
+// ignores DestroyNotify and would go on running with no window. One round trip to the server.
+// True when the context is not GLX (nothing to watch).
+bool windowStillExists();
 
 }  // namespace sl

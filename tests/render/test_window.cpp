@@ -264,9 +264,11 @@ class LiveWindow {
         keys("Escape");
         return exitCode();
     }
-    // The exit code once the window has ended by itself (-1 when it did not within the time).
+    // The exit code once the window has ended by itself (-1 when it did not within the time,
+    // 128 + N when signal N ended it).
     int exitCode() {
         waitUntil([&] { return !alive(); }, 30);
+        if (reaped_ && WIFSIGNALED(exitStatus_)) return 128 + WTERMSIG(exitStatus_);  // as sh
         return reaped_ && WIFEXITED(exitStatus_) ? WEXITSTATUS(exitStatus_) : -1;
     }
     std::string out() const { return readText(dir_ + "/stdout.txt"); }
