@@ -239,6 +239,9 @@ int runWindow(const WindowArgs& args) {
     requireGl33();
     passShiftTabAsTab();
     watchWindow();
+    // Before the session is built (compiling takes a while): keys typed meanwhile queue up for
+    // the window instead of going wherever the pointer is.
+    takeKeyboardFocusIfNobodyHasIt();
     installGlDebugOutput();
     state.width = state.startWidth = request.width;
     state.height = state.startHeight = request.height;
