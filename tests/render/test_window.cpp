@@ -17,6 +17,9 @@
 
 #include "render_fixture.h"
 
+// Last: its macros (None, Bool, Status...) would clash with gtest's headers.
+#include <X11/Xlib.h>  // NOLINT(llvm-include-order)
+
 using namespace sl;
 using namespace sl::test;
 
@@ -271,6 +274,21 @@ class LiveWindow {
         if (reaped_ && WIFSIGNALED(exitStatus_)) return 128 + WTERMSIG(exitStatus_);  // as sh
         return reaped_ && WIFEXITED(exitStatus_) ? WEXITSTATUS(exitStatus_) : -1;
     }
+    // What a window manager's close button does: WM_DELETE_WINDOW sent to the window.
+    bool askToClose() {
+        Display* d = XOpenDisplay(display_.c_str());
+        if (!d) return false;
+        XEvent e{};
+        e.xclient.type = ClientMessage;
+        e.xclient.window = std::stoul(id_);
+        e.xclient.message_type = XInternAtom(d, "WM_PROTOCOLS", False);
+        e.xclient.format = 32;
+        e.xclient.data.l[0] = static_cast<long>(XInternAtom(d, "WM_DELETE_WINDOW", False));
+        e.xclient.data.l[1] = CurrentTime;
+        bool sent = XSendEvent(d, e.xclient.window, False, NoEventMask, &e) != 0;
+        XCloseDisplay(d);  // flushes
+        return sent;
+    }
     std::string out() const { return readText(dir_ + "/stdout.txt"); }
     std::string err() const { return readText(dir_ + "/stderr.txt"); }
 
@@ -371,8 +389,18 @@ TEST(LiveWindow, DoneWhenNoOptionsSevenBracketsEightShots) {
 // Closed from outside: `xdotool windowclose` destroys the window (freeglut ignores that and
 // used to run on with no window, forever), `windowkill` cuts the connection (Xlib's exit 1).
 // Both end the session at once with one line on stderr and exit code 0, also while the light
-// animates (frames being drawn into the window as it goes).
+// animates (frames being drawn into the window as it goes). A window manager's close
+// (WM_DELETE_WINDOW) ends it as Esc does.
 TEST(LiveWindow, ClosedFromOutsideEndsTheSession) {
+    for (bool animating : {false, true}) {
+        std::string dir = tempDir("live-wm-close");
+        LiveWindow w("--state state.json --size 320x240", dir);
+        ASSERT_TRUE(w.ready()) << w.err();
+        ASSERT_TRUE(w.waitState([](const auto& s) { return s["stage"] == "phong"; }, 30));
+        if (animating) ASSERT_TRUE(w.keys("l"));
+        ASSERT_TRUE(w.askToClose());
+        EXPECT_EQ(w.exitCode(), 0) << "WM_DELETE_WINDOW " << animating << "\n" << w.err();
+    }
     for (const char* how : {"windowclose", "windowkill"}) {
         for (bool animating : {false, true}) {
             std::string dir = tempDir(std::string("live-") + how);
@@ -579,6 +607,27 @@ TEST(Window, FailedShotKeepsTheExitCode) {
     EXPECT_NE(output.find("shadowlab: p: could not save into '" + blocker + "/shots'"),
               std::string::npos)
         << output;
+}
+
+// The same with a real key press: the message on screen (the HUD's state), one line on
+// stderr, and Esc still ends with 0.
+TEST(LiveWindow, FailedShotShownAndExitCodeStays) {
+    std::string dir = tempDir("live-shots-fail");
+    std::ofstream(dir + "/not-a-folder") << "x";
+    LiveWindow w("--shots not-a-folder/shots --state state.json --size 320x240", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["stage"] == "phong"; }, 30));
+    ASSERT_TRUE(w.keys("p"));
+    EXPECT_TRUE(w.waitState(
+        [](const auto& s) {
+            return s["message"].template get<std::string>().rfind("p: could not save", 0) == 0;
+        },
+        15))
+        << w.state().dump();
+    EXPECT_EQ(w.quit(), 0);
+    EXPECT_EQ(countLines(w.err(), "shadowlab: p: could not save into 'not-a-folder/shots'"), 1)
+        << w.err();
+    EXPECT_EQ(countLines(w.out(), "saved "), 0);
 }
 
 // `p` in a scripted run: the absolute path on stdout, the file there, its name the stage's.
