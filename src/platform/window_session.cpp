@@ -125,6 +125,8 @@ bool WindowSession::selectStage(std::size_t index, GlslTree sessionTree) {
 }
 
 bool WindowSession::key(unsigned char key, bool shift) {
+    // Caps Lock or Shift on a letter is the same command (Shift only counts with + and -).
+    if (key >= 'A' && key <= 'Z') key = static_cast<unsigned char>(key - 'A' + 'a');
     Renderer& r = *slot_->renderer;
     const auto& specs = r.params().specs();
     const std::size_t stages = stageRegistry().size();

@@ -675,3 +675,10 @@ TEST(Window, MirrorBringsItsSceneAndFixedRunsLegacy) {
     EXPECT_EQ(legacy["stage"], "hardware");
     EXPECT_EQ(legacy["tree"], "legacy");
 }
+
+// Caps Lock (or Shift) on a letter is the same command: `I` and `H` as `i` and `h`.
+TEST(Window, CapitalLettersAreTheSameCommands) {
+    auto s = stateAfterKeys("IH");
+    EXPECT_EQ(s["hud"], "compact");
+    EXPECT_EQ(s["help"], true);
+}
