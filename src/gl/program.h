@@ -2,6 +2,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <set>
 #include <string>
 #include <unordered_map>
 
@@ -25,8 +26,12 @@ class Program {
     GLint location(const char* uniform);
     bool has(const char* uniform) { return location(uniform) >= 0; }
     // A student's program: say once per name on stderr when a uniform the stage sets is not
-    // active in it (a typo, or unused), instead of ignoring it silently.
-    void reportMissingUniforms(bool on) { reportMissing_ = on; }
+    // active in it (a typo, or unused), instead of ignoring it silently. `only`: the names worth
+    // a note (ours declares them); empty: every name.
+    void reportMissingUniforms(std::set<std::string> only = {}) {
+        reportMissing_ = true;
+        reportOnly_ = std::move(only);
+    }
 
     // The files it was built from, named when a uniform's declared type does not fit.
     void setOrigin(std::string files) { origin_ = std::move(files); }
@@ -59,6 +64,7 @@ class Program {
     std::unordered_map<std::string, GLint> locations_;
     std::unordered_map<GLint, GLenum> types_;  // by location, filled on first use
     bool reportMissing_ = false;
+    std::set<std::string> reportOnly_;
 };
 
 }  // namespace sl

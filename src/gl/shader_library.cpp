@@ -3,9 +3,11 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <sstream>
 
 #include "io/files.h"
@@ -267,6 +269,32 @@ bool sameContents(const std::string& a, const std::string& b) {
                       std::istreambuf_iterator<char>(y), std::istreambuf_iterator<char>());
 }
 
+// The names of the uniforms our own file `relative` declares (`uniform TYPE NAME...;` lines),
+// with the files it includes from our tree, a few levels deep.
+void declaredUniforms(const std::string& root, const std::string& relative, int depth,
+                      std::set<std::string>& names) {
+    std::ifstream in(root + "/" + relative);
+    for (std::string line; depth < 4 && std::getline(in, line);) {
+        std::string include;
+        if (matchInclude(line, include)) {
+            declaredUniforms(root, include, depth + 1, names);
+            continue;
+        }
+        std::istringstream words(line);
+        std::string word, type, name;
+        if (!(words >> word) || word != "uniform" || !(words >> type)) continue;
+        if (type == "highp" || type == "mediump" || type == "lowp") words >> type;
+        for (char c; words.get(c) && c != ';';) {  // NAME, NAME[2], NAME = value...
+            if (std::isalnum(static_cast<unsigned char>(c)) || c == '_')
+                name += c;
+            else if (!name.empty())
+                names.insert(name), name.clear();
+            if (c == '[' || c == '=') break;
+        }
+        if (!name.empty()) names.insert(name);
+    }
+}
+
 }  // namespace
 
 ShaderLibrary::ShaderLibrary(GlslTree tree, std::string treeRoot, std::string overlay)
@@ -360,10 +388,17 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     for (const auto& f : e.files) e.stamps.push_back(modificationStamp(f));
     // Notes about unused uniforms are for the student's own pass files, and only when they differ
     // from ours: an unmodified copy, or an overridden include alone, leaves our shader ours.
+    // And only about uniforms our version of the pass declares: "no active uniform" then means
+    // the student's file dropped it, not that the stage sets it for other stages' shaders too
+    // (every lit pass gets shadowMatrix; margin's never used it).
     for (const std::string* f : {&vert.files[0], &frag.files[0]})
         if (!overlay_.empty() && f->rfind(overlay_ + "/", 0) == 0 &&
-            !sameContents(*f, root_ + "/" + f->substr(overlay_.size() + 1)))
-            e.program.reportMissingUniforms(true);
+            !sameContents(*f, root_ + "/" + f->substr(overlay_.size() + 1))) {
+            std::set<std::string> ours;
+            for (const char* ext : {".vert", ".frag"})
+                declaredUniforms(root_, stage + "/" + pass + ext, 0, ours);
+            e.program.reportMissingUniforms(std::move(ours));
+        }
     return e;
 }
 

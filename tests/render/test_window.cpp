@@ -682,3 +682,31 @@ TEST(Window, CapitalLettersAreTheSameCommands) {
     EXPECT_EQ(s["hud"], "compact");
     EXPECT_EQ(s["help"], true);
 }
+
+// Notes only where they help: a copy of ours with a comment added says nothing; one that stops
+// using `margin` is told so once, and not about uniforms our own shader never used either
+// (every lit pass gets shadowMatrix; it used to be named on every edited copy).
+TEST(Window, UnusedUniformNotesOnlyForWhatTheStudentDropped) {
+    std::string dir = tempDir("notes");
+    const std::string source = std::string(SHADOWLAB_SOURCE_DIR) + "/shaders_core/";
+    fs::create_directories(dir + "/margin");
+    fs::create_directories(dir + "/hardware");
+    std::string margin = readText(source + "margin/lit.frag");
+    const std::string uses = "return margin;";
+    ASSERT_NE(margin.find(uses), std::string::npos);
+    margin.replace(margin.find(uses), uses.size(), "return 0.01;");
+    std::ofstream(dir + "/margin/lit.frag") << margin;
+    std::ofstream(dir + "/hardware/lit.frag")
+        << readText(source + "hardware/lit.frag") << "// mine\n";
+    std::string output;
+    int code = runShadowlab(
+        "window --shaders " + dir + " --stage margin --size 200x150 --frames 6 --keys 54r4",
+        &output);
+    EXPECT_EQ(code, 0) << output;
+    EXPECT_EQ(countLines(output,
+                         "shadowlab: note: margin/lit (your shader) has no active "
+                         "uniform 'margin'"),
+              1)
+        << output;
+    EXPECT_EQ(countLines(output, "shadowlab: note:"), 1) << output;
+}
