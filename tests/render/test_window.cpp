@@ -420,8 +420,9 @@ TEST(LiveWindow, ClosedFromOutsideEndsTheSession) {
 
 // A student's shader saved the ways editors and shells do, while the window runs: an atomic
 // save (temporary file renamed over it), the file deleted (ours takes over) and written again,
-// `sed -i`, an included common file overridden and broken, then removed. Every break shows an
-// error, every repair clears it without a key, and the terminal gets whole lines.
+// `sed -i`, a file left empty for a moment, an included common file overridden and broken,
+// then removed. Every break shows an error, every repair clears it without a key, a file
+// caught empty is never called empty, and the terminal gets whole lines.
 TEST(LiveWindow, ShaderSavedEveryWayComesAndGoes) {
     std::string dir = tempDir("live-saves");
     fs::create_directories(dir + "/mine/margin");
@@ -465,6 +466,12 @@ TEST(LiveWindow, ShaderSavedEveryWayComesAndGoes) {
     errorsShown(true, "deleted file written again");
     ASSERT_EQ(std::system(("sed -i 's/return margin +;/return margin;/' " + file).c_str()), 0);
     errorsShown(false, "sed -i repair");
+    before = reloads();
+    { std::ofstream truncated(file, std::ios::trunc); }  // a save that pauses once truncated
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    std::ofstream(file) << good;
+    EXPECT_TRUE(waitUntil([&] { return reloads() > before; }, 20)) << w.out();
+    errorsShown(false, "a file empty for 300 ms, then written");
     std::ofstream(dir + "/mine/common/phong.glsl") << common << "\nvec3 broken = ;\n";
     errorsShown(true, "an overridden include broken");
     fs::remove(dir + "/mine/common/phong.glsl");
