@@ -170,20 +170,23 @@ pid_t spawn(const std::string& command, const std::string& dir, const std::strin
 }
 
 // One window session as a user has it: `shadowlab window ARGS` on a display of its own
-// (xvfb-run -a: parallel tests never share one; -ac: no cookie to pass to the window), keys
+// (parallel tests never share one; -ac: no cookie to pass to the window), keys
 // sent with xdotool as real X events. `focus`: give the window the keyboard with xdotool;
 // without, the window must take it itself (a bare X server has no window manager to do it).
 class LiveWindow {
   public:
     LiveWindow(const std::string& args, const std::string& dir, bool focus = true) : dir_(dir) {
         fs::create_directories(dir + "/x");
+        // Xvfb picks a free display itself and writes its number once it accepts connections
+        // (-displayfd): two servers started at once never race for one number, as xvfb-run -a's
+        // look at the lock files can ("failed to open display" under a parallel ctest).
         xserver_ =
-            spawn(std::string(XVFB_RUN) +
-                      " -a -s '-ac -screen 0 1280x1024x24' sh -c 'echo $DISPLAY > display.txt; "
-                      "exec sleep 600'",
-                  dir + "/x");
-        if (!waitUntil([&] { return !readText(dir + "/x/display.txt").empty(); }, 30)) return;
-        display_ = readText(dir + "/x/display.txt");
+            spawn("exec Xvfb -displayfd 1 -ac -nolisten tcp -screen 0 1280x1024x24", dir + "/x");
+        if (!waitUntil(
+                [&] { return readText(dir + "/x/stdout.txt").find('\n') != std::string::npos; },
+                30))
+            return;
+        display_ = ":" + readText(dir + "/x/stdout.txt");
         display_.erase(display_.find_last_not_of("\n ") + 1);
         window_ = spawn("exec " + std::string(SHADOWLAB_BIN) + " window " + args, dir, display_);
         // The window exists once xdotool finds it; it gets the keyboard focus (no window manager).
