@@ -25,7 +25,6 @@ Window currentWindow() {
     return get ? get() : 0;  // freeglut draws straight into its X window
 }
 
-
 // Errors about our own window are not fatal: when someone destroys it, requests already on
 // their way fail (the swap's XShmPutImage with BadDrawable, GLXBadDrawable, BadWindow) before
 // the next check can notice, and Xlib's default handler would print them and exit 1. The next
