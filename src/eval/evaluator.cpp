@@ -84,6 +84,7 @@ Accuracy shadowAccuracy(const ShadowFigures& f) {
     a.darkWithoutCasterPct = f.darkWithoutCasterPct;
     a.falseShadowSpecklePct = f.falseShadowSpecklePct;
     a.shadowLevelOffPct = f.shadowLevelOffPct;
+    a.litLightLostPct = f.litLightLostPct;
     a.errorPct = 0.5 * (f.falseShadowPct + f.falseLitPct);
     return a;
 }
@@ -120,6 +121,7 @@ ShadowEvidence Evaluator::shadowEvidence() {
     for (std::size_t k = 0; k < e.shadowed.size(); ++k)
         e.shadowed[k] = e.shadowed[k] || inputs.darkWithoutCaster[k];
     inputs.shadowLevelOff = shadowLevelOff(e.withShadows, e.allLit, shades_);
+    inputs.lightLost = lightLost(e.withShadows, e.allLit, shades_);
     e.figures = shadowFigures(ref, e.shadowed, inputs);
     return e;
 }

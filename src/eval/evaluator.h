@@ -22,6 +22,7 @@ struct Accuracy {
     double falseShadowBandPct = NAN, falseLitBandPct = NAN;
     double edgeMeanPx = NAN, edgeP95Px = NAN;
     double darkWithoutCasterPct = NAN, falseShadowSpecklePct = NAN, shadowLevelOffPct = NAN;
+    double litLightLostPct = NAN;
     double mirrorIdPct = NAN, mirrorPsnrDb = NAN;
     // One number for charts: shadow stages the balanced error (false shadow % + false lit %) / 2
     // outside the edge band; the mirror 100 - id agreement %.

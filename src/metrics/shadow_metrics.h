@@ -66,6 +66,11 @@ struct ShadowFigures {
     // luma is not the lecture's shadow (shadowLevelOff): shadows that drop the ambient term
     // too (black) or keep part of the diffuse light (pale). 0 when nothing is counted.
     double shadowLevelOffPct = 0;
+    // Of the truth-lit evaluated pixels outside the band: the mean % of each pixel's light (its
+    // all-lit luma less the lecture's shadow there) that the render loses (lightLost). Close to
+    // false shadow for a hard test; it also sees a surface dimmed by less than the classifier's
+    // 15 % (a filter whose far taps shadow their own surface). 0 when nothing is counted.
+    double litLightLostPct = 0;
     // Distance in pixels from each true edge pixel to the nearest rendered edge pixel of the same
     // object (the image's diagonal when there is none), less that pixel's tolerance beyond one
     // pixel (bandPx - 1, never below 0): the mean and the 95th percentile (nearest rank). When
@@ -85,6 +90,7 @@ struct ShadowFigureInputs {
     std::vector<float> bandPx;                    // edge tolerance in pixels (>= 1)
     std::vector<std::uint8_t> shadowVisible;      // shadowVisiblePixels
     std::vector<std::uint8_t> shadowLevelOff;     // shadowLevelOff
+    std::vector<float> lightLost;                 // lightLost
 };
 
 // `shadowed` comes from classifyShadowed (one byte per pixel, non-zero = shadowed) and must match
@@ -133,6 +139,12 @@ std::vector<std::uint8_t> shadowVisiblePixels(const ReferenceShades& shades, flo
 std::vector<std::uint8_t> shadowLevelOff(const Image& withShadows, const Image& allLit,
                                          const ReferenceShades& shades,
                                          const ClassifyOptions& options = {0.10f, 6.0f});
+
+// Per pixel, the fraction (0..1) of its light the render loses: (allLit - withShadows) over
+// allLit * (1 - kept), the drop a hard shadow would make there (at least `absoluteDrop` levels,
+// so a pixel the light barely reaches does not divide by nothing).
+std::vector<float> lightLost(const Image& withShadows, const Image& allLit,
+                             const ReferenceShades& shades, float absoluteDrop = 6.0f);
 
 // Which pixels the figures count (the `evaluated` definition above).
 std::vector<std::uint8_t> evaluatedPixels(const ReferenceImage& ref,

@@ -231,7 +231,8 @@ const std::vector<std::string>& figureNames() {
                                                    "mirror_psnr_db",
                                                    "dark_without_caster_pct",
                                                    "false_shadow_speckle_pct",
-                                                   "shadow_level_off_pct"};
+                                                   "shadow_level_off_pct",
+                                                   "lit_light_lost_pct"};
     return names;
 }
 

@@ -481,3 +481,25 @@ TEST(Metrics, ShadowLevelIsTheLecturesAmbientOnly) {
     EXPECT_NEAR(f.shadowLevelOffPct, 50.0, 1e-9);
     EXPECT_EQ(f.falseLitPct, 0.0);  // where the shadows are is a separate question
 }
+
+TEST(Metrics, LightLostSeesDimmingBelowTheClassifier) {
+    // Lit 150, the lecture's shadow 50 there: the pixel's light is 100 levels. A render 10 %
+    // darker (135) is not "shadowed" to the classifier, but loses 15 % of its light.
+    ReferenceShades shades{filledGrey(3, 1, 120), filledGrey(3, 1, 40)};
+    Image allLit = filledGrey(3, 1, 150);
+    Image shown = filledGrey(3, 1, 150);
+    setGrey(shown, 1, 0, 135);
+    setGrey(shown, 2, 0, 50);
+    std::vector<float> lost = lightLost(shown, allLit, shades);
+    EXPECT_NEAR(lost[0], 0.0f, 1e-6f);
+    EXPECT_NEAR(lost[1], 0.15f, 1e-3f);
+    EXPECT_NEAR(lost[2], 1.0f, 1e-3f);
+    EXPECT_EQ(classifyShadowed(shown, allLit)[1], 0);
+
+    ReferenceImage ref = evaluatedEverywhere(3, 1);  // all truly lit
+    ShadowFigureInputs inputs;
+    inputs.lightLost = lost;
+    ShadowFigures f = shadowFigures(ref, classifyShadowed(shown, allLit), inputs);
+    EXPECT_NEAR(f.litLightLostPct, 100.0 * 1.15 / 3.0, 0.05);
+    EXPECT_NEAR(f.falseShadowPct, 100.0 / 3.0, 1e-9);
+}
