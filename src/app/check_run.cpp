@@ -120,6 +120,8 @@ std::map<std::string, double> CheckResult::figureMap() const {
             {"edge_p95_px", figures.edgeP95Px},
             {"dark_without_caster_pct", figures.darkWithoutCasterPct},
             {"false_shadow_speckle_pct", figures.falseShadowSpecklePct},
+            {"shadow_level_off_pct", figures.shadowLevelOffPct},
+            {"lit_light_lost_pct", figures.litLightLostPct},
             {"mirror_id_pct", figures.mirrorIdPct},
             {"mirror_psnr_db", figures.mirrorPsnrDb}};
 }
@@ -313,6 +315,8 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
         a.mirrorPsnrDb = numberFrom(f.at("mirror_psnr_db"));
         a.darkWithoutCasterPct = numberFrom(f.at("dark_without_caster_pct"));
         a.falseShadowSpecklePct = numberFrom(f.at("false_shadow_speckle_pct"));
+        a.shadowLevelOffPct = numberFrom(f.at("shadow_level_off_pct"));
+        a.litLightLostPct = numberFrom(f.at("lit_light_lost_pct"));
         if (!std::isnan(a.falseShadowPct)) a.errorPct = 0.5 * (a.falseShadowPct + a.falseLitPct);
         if (!std::isnan(a.mirrorIdPct)) a.errorPct = 100.0 - a.mirrorIdPct;
         const auto& pixels = j.at("pixels");

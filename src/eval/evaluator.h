@@ -21,7 +21,8 @@ struct Accuracy {
     double falseShadowPct = NAN, falseLitPct = NAN;
     double falseShadowBandPct = NAN, falseLitBandPct = NAN;
     double edgeMeanPx = NAN, edgeP95Px = NAN;
-    double darkWithoutCasterPct = NAN, falseShadowSpecklePct = NAN;
+    double darkWithoutCasterPct = NAN, falseShadowSpecklePct = NAN, shadowLevelOffPct = NAN;
+    double litLightLostPct = NAN;
     double mirrorIdPct = NAN, mirrorPsnrDb = NAN;
     // One number for charts: shadow stages the balanced error (false shadow % + false lit %) / 2
     // outside the edge band; the mirror 100 - id agreement %.
@@ -34,7 +35,7 @@ Accuracy shadowAccuracy(const ShadowFigures& f);
 // The two renders and the classification behind a shadow stage's figures (diff images use them).
 struct ShadowEvidence {
     Image withShadows, allLit;
-    Image baseline;                      // our own phong stage: the lighting without shadows
+    Image baseline;  // our own phong stage without its highlight: the lighting without shadows
     std::vector<std::uint8_t> shadowed;  // see Evaluator::shadowEvidence
     std::vector<int> renderedIds;        // the object each pixel of the render shows
     ShadowFigures figures;
@@ -78,8 +79,9 @@ class Evaluator {
 
   private:
     Accuracy mirrorAccuracy();
-    // A renderer over the current scene (or its id-coloured twin) with our shipped shaders only:
-    // what the stage's picture is measured against, whatever the overlay does.
+    // A renderer over the current scene without its highlight (or its id-coloured twin) with our
+    // shipped shaders only: what the stage's picture is measured against, whatever the overlay
+    // does.
     Renderer& shippedRenderer(bool idColours);
     Image renderWith(Renderer& r, const std::string& stage);
 
@@ -95,6 +97,7 @@ class Evaluator {
     std::string referenceKey_;
     ReferenceImage reference_;
     std::string shadowVisibleKey_;
+    ReferenceShades shades_;  // the reference's shading lit and blocked, for shadowVisible_ too
     std::vector<std::uint8_t> shadowVisible_;
 };
 

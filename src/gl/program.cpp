@@ -96,23 +96,6 @@ bool fits(GLenum type, const char*& wanted, int setter) {
 
 }  // namespace
 
-namespace {
-
-// Whether `text` holds `word` as a whole identifier.
-bool namesWord(const std::string& text, const std::string& word) {
-    auto identifier = [](char c) {
-        return c == '_' || (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') ||
-               (c >= 'A' && c <= 'Z');
-    };
-    for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
-        if ((at == 0 || !identifier(text[at - 1])) &&
-            (at + word.size() == text.size() || !identifier(text[at + word.size()])))
-            return true;
-    return false;
-}
-
-}  // namespace
-
 GLint Program::location(const char* uniform) {
     auto it = locations_.find(uniform);
     if (it != locations_.end()) return it->second;
@@ -121,7 +104,7 @@ GLint Program::location(const char* uniform) {
     // Once per program and uniform in a process: a reload builds a new Program, and the same
     // note on every reload would bury what changed.
     static std::set<std::string> said;
-    if (loc < 0 && reportMissing_ && (ours_.empty() || namesWord(ours_, uniform)) &&
+    if (loc < 0 && reportMissing_ && (reportOnly_.empty() || reportOnly_.count(uniform)) &&
         said.insert(name_ + "/" + uniform).second)
         std::cerr << "shadowlab: note: " << name_ << " (your shader) has no active uniform '"
                   << uniform << "'; the value the stage sets is ignored" << std::endl;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <set>
 #include <string>
 #include <unordered_map>
 
@@ -35,11 +36,11 @@ class Program {
     GLint location(const char* uniform);
     bool has(const char* uniform) { return location(uniform) >= 0; }
     // A student's program: say once per name on stderr when a uniform the stage sets is not
-    // active in it (a typo, or unused), instead of ignoring it silently.
-    // `ours`: the source of our own shader for the pass; only uniforms it names get a note.
-    void reportMissingUniforms(bool on, std::string ours = {}) {
-        reportMissing_ = on;
-        ours_ = std::move(ours);
+    // active in it (a typo, or unused), instead of ignoring it silently. `only`: the names worth
+    // a note (ours declares them); empty: every name.
+    void reportMissingUniforms(std::set<std::string> only = {}) {
+        reportMissing_ = true;
+        reportOnly_ = std::move(only);
     }
 
     // The files it was built from, named when a uniform's declared type does not fit.
@@ -73,10 +74,10 @@ class Program {
     std::string name_;
     std::string origin_;
     std::string studentFiles_;
-    std::string ours_;
     std::unordered_map<std::string, GLint> locations_;
     std::unordered_map<GLint, GLenum> types_;  // by location, filled on first use
     bool reportMissing_ = false;
+    std::set<std::string> reportOnly_;
 };
 
 }  // namespace sl

@@ -3,9 +3,11 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <sstream>
 
 #include "io/files.h"
@@ -287,6 +289,32 @@ bool sameContents(const std::string& a, const std::string& b) {
                       std::istreambuf_iterator<char>(y), std::istreambuf_iterator<char>());
 }
 
+// The names of the uniforms our own file `relative` declares (`uniform TYPE NAME...;` lines),
+// with the files it includes from our tree, a few levels deep.
+void declaredUniforms(const std::string& root, const std::string& relative, int depth,
+                      std::set<std::string>& names) {
+    std::ifstream in(root + "/" + relative);
+    for (std::string line; depth < 4 && std::getline(in, line);) {
+        std::string include;
+        if (matchInclude(line, include)) {
+            declaredUniforms(root, include, depth + 1, names);
+            continue;
+        }
+        std::istringstream words(line);
+        std::string word, type, name;
+        if (!(words >> word) || word != "uniform" || !(words >> type)) continue;
+        if (type == "highp" || type == "mediump" || type == "lowp") words >> type;
+        for (char c; words.get(c) && c != ';';) {  // NAME, NAME[2], NAME = value...
+            if (std::isalnum(static_cast<unsigned char>(c)) || c == '_')
+                name += c;
+            else if (!name.empty())
+                names.insert(name), name.clear();
+            if (c == '[' || c == '=') break;
+        }
+        if (!name.empty()) names.insert(name);
+    }
+}
+
 }  // namespace
 
 ShaderLibrary::ShaderLibrary(GlslTree tree, std::string treeRoot, std::string overlay)
@@ -383,35 +411,34 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     e.program.setOrigin(files);
     e.files = vert.files;
     e.files.insert(e.files.end(), frag.files.begin(), frag.files.end());
-    for (const auto& f : e.files) e.stamps.push_back(modificationStamp(f));
-    // Any file from the overlay (a pass file or an include) makes it the student's program.
+    // Any file read from the overlay (a pass file or an include) makes it the student's program.
     std::string student;
     for (const auto& f : e.files)
         if (!overlay_.empty() && f.rfind(overlay_ + "/", 0) == 0 &&
             student.find(printableName(f)) == std::string::npos)
             student += (student.empty() ? "" : " + ") + printableName(f);
     e.program.setStudentFiles(student);
+    // Each file of ours the overlay could replace is watched at its overlay name too (missing
+    // now): a student's file that appears later, re-created after a delete or by an editor's
+    // rename-and-write, is then picked up by reload like an edit.
+    if (!overlay_.empty())
+        for (std::size_t i = 0, n = e.files.size(); i < n; ++i)
+            if (e.files[i].rfind(root_ + "/", 0) == 0)
+                e.files.push_back(overlay_ + "/" + e.files[i].substr(root_.size() + 1));
+    for (const auto& f : e.files) e.stamps.push_back(modificationStamp(f));
     // Notes about unused uniforms are for the student's own pass files, and only when they differ
     // from ours: an unmodified copy, or an overridden include alone, leaves our shader ours.
-    bool theirs = false;
+    // And only about uniforms our version of the pass declares: "no active uniform" then means
+    // the student's file dropped it, not that the stage sets it for other stages' shaders too
+    // (every lit pass gets shadowMatrix; margin's never used it).
     for (const std::string* f : {&vert.files[0], &frag.files[0]})
         if (!overlay_.empty() && f->rfind(overlay_ + "/", 0) == 0 &&
-            !sameContents(*f, root_ + "/" + f->substr(overlay_.size() + 1)))
-            theirs = true;
-    if (theirs) {
-        // Only uniforms our own pass uses: the stage sets some that ours ignores too (margin's
-        // lit pass has no shadowMatrix), and a note about those would be noise.
-        ShaderLibrary ours(tree_, root_, "");
-        Preprocessor shipped(ours, tree_);
-        Expanded v, f;
-        try {
-            shipped.expand(stage + "/" + pass + ".vert", v, 0, "");
-            shipped.expand(stage + "/" + pass + ".frag", f, 0, "");
-            e.program.reportMissingUniforms(true, v.text + f.text);
-        } catch (const ShaderError&) {  // no such pass of ours: every uniform is worth a note
-            e.program.reportMissingUniforms(true);
+            !sameContents(*f, root_ + "/" + f->substr(overlay_.size() + 1))) {
+            std::set<std::string> ours;
+            for (const char* ext : {".vert", ".frag"})
+                declaredUniforms(root_, stage + "/" + pass + ext, 0, ours);
+            e.program.reportMissingUniforms(std::move(ours));
         }
-    }
     return e;
 }
 

@@ -157,16 +157,67 @@ std::vector<float> mapTexelOnScreen(const ReferenceImage& ref, const Camera& cam
     return band;
 }
 
+ReferenceShades referenceShades(const Scene& scene, const Camera& camera, const ReferenceImage& ref,
+                                const glm::vec3& lightPosition) {
+    ReferenceImage reached = ref, blocked = ref;
+    for (auto& p : reached.pixels) p.blocked = false;
+    for (auto& p : blocked.pixels) p.blocked = true;
+    return {shadeReference(scene, camera, reached, lightPosition),
+            shadeReference(scene, camera, blocked, lightPosition)};
+}
+
+std::vector<std::uint8_t> shadowVisiblePixels(const ReferenceShades& shades, float margin,
+                                              const ClassifyOptions& options) {
+    ClassifyOptions stricter{options.relativeDrop * margin, options.absoluteDrop * margin};
+    return classifyShadowed(shades.blocked, shades.reached, stricter);
+}
+
 std::vector<std::uint8_t> shadowVisiblePixels(const Scene& scene, const Camera& camera,
                                               const ReferenceImage& ref,
                                               const glm::vec3& lightPosition, float margin,
                                               const ClassifyOptions& options) {
-    ReferenceImage reached = ref, blocked = ref;
-    for (auto& p : reached.pixels) p.blocked = false;
-    for (auto& p : blocked.pixels) p.blocked = true;
-    ClassifyOptions stricter{options.relativeDrop * margin, options.absoluteDrop * margin};
-    return classifyShadowed(shadeReference(scene, camera, blocked, lightPosition),
-                            shadeReference(scene, camera, reached, lightPosition), stricter);
+    return shadowVisiblePixels(referenceShades(scene, camera, ref, lightPosition), margin, options);
+}
+
+std::vector<std::uint8_t> shadowLevelOff(const Image& withShadows, const Image& allLit,
+                                         const ReferenceShades& shades,
+                                         const ClassifyOptions& options) {
+    const int w = allLit.width, h = allLit.height;
+    for (const Image* other : {&withShadows, &shades.reached, &shades.blocked})
+        if (other->width != w || other->height != h)
+            throw std::invalid_argument("shadowLevelOff: the images differ in size");
+    std::vector<std::uint8_t> off(std::size_t(w) * h, 0);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            float reached = shades.reached.luma(i, j);
+            if (reached <= 0.0f) continue;  // nothing lit to compare with
+            float kept = std::min(1.0f, shades.blocked.luma(i, j) / reached);
+            float lit = allLit.luma(i, j);
+            float difference = std::abs(withShadows.luma(i, j) - lit * kept);
+            off[std::size_t(j) * w + i] =
+                difference > options.relativeDrop * lit && difference > options.absoluteDrop;
+        }
+    return off;
+}
+
+std::vector<float> lightLost(const Image& withShadows, const Image& allLit,
+                             const ReferenceShades& shades, float absoluteDrop) {
+    const int w = allLit.width, h = allLit.height;
+    for (const Image* other : {&withShadows, &shades.reached, &shades.blocked})
+        if (other->width != w || other->height != h)
+            throw std::invalid_argument("lightLost: the images differ in size");
+    std::vector<float> lost(std::size_t(w) * h, 0.0f);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            float reached = shades.reached.luma(i, j);
+            float kept =
+                reached > 0.0f ? std::min(1.0f, shades.blocked.luma(i, j) / reached) : 1.0f;
+            float lit = allLit.luma(i, j);
+            float light = std::max(lit * (1.0f - kept), absoluteDrop);
+            lost[std::size_t(j) * w + i] =
+                std::clamp((lit - withShadows.luma(i, j)) / light, 0.0f, 1.0f);
+        }
+    return lost;
 }
 
 std::vector<std::uint8_t> evaluatedPixels(const ReferenceImage& ref,
@@ -188,6 +239,9 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
     if (!inputs.darkWithoutCaster.empty())
         requireSize(ref, inputs.darkWithoutCaster.size(), "shadowFigures");
     if (!inputs.bandPx.empty()) requireSize(ref, inputs.bandPx.size(), "shadowFigures");
+    if (!inputs.shadowLevelOff.empty())
+        requireSize(ref, inputs.shadowLevelOff.size(), "shadowFigures");
+    if (!inputs.lightLost.empty()) requireSize(ref, inputs.lightLost.size(), "shadowFigures");
     const int w = ref.width, h = ref.height;
     auto index = [w](int i, int j) { return std::size_t(j) * w + i; };
 
@@ -272,6 +326,8 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
 
     long litOut = 0, litOutWrong = 0, litIn = 0, litInWrong = 0, litWrongSpeckled = 0;
     long shadowOut = 0, shadowOutWrong = 0, shadowIn = 0, shadowInWrong = 0, darkUnlit = 0;
+    long shadowShown = 0, shadowShownOff = 0;  // rendered shadowed outside the band; level off
+    double litLost = 0.0;                      // lightLost summed over litOut
     std::vector<double> distances;
     double sum = 0.0;
     const double diagonal = std::hypot(double(w), double(h));
@@ -287,9 +343,15 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
                 ++figures.truthShadow;
                 (inBand ? shadowIn : shadowOut)++;
                 if (wrong) (inBand ? shadowInWrong : shadowOutWrong)++;
+                if (!inBand && !wrong) {
+                    ++shadowShown;
+                    if (!inputs.shadowLevelOff.empty() && inputs.shadowLevelOff[k])
+                        ++shadowShownOff;
+                }
             } else {
                 ++figures.truthLit;
                 (inBand ? litIn : litOut)++;
+                if (!inBand && !inputs.lightLost.empty()) litLost += inputs.lightLost[k];
                 if (wrong) (inBand ? litInWrong : litOutWrong)++;
                 if (wrong && !inBand && hasOtherNeighbour(i, j, rendered)) ++litWrongSpeckled;
                 if (!inputs.darkWithoutCaster.empty() && inputs.darkWithoutCaster[k]) ++darkUnlit;
@@ -308,6 +370,8 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
     figures.falseLitBandPct = percent(shadowInWrong, shadowIn);
     figures.darkWithoutCasterPct = percent(darkUnlit, figures.truthLit);
     figures.falseShadowSpecklePct = percent(litWrongSpeckled, litOutWrong);
+    figures.shadowLevelOffPct = percent(shadowShownOff, shadowShown);
+    figures.litLightLostPct = litOut > 0 ? 100.0 * litLost / double(litOut) : 0.0;
 
     if (figures.trueBoundary == 0 || figures.renderedBoundary == 0) return figures;
     std::sort(distances.begin(), distances.end());

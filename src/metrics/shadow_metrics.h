@@ -62,6 +62,15 @@ struct ShadowFigures {
     // rendered-lit neighbour. Acne is specks and stripes (high); a map that darkens whole
     // surfaces leaves solid regions (low). NaN-free: 0 when nothing is falsely shadowed.
     double falseShadowSpecklePct = 0;
+    // Of the truth-shadowed evaluated pixels outside the band that render shadowed: % whose
+    // luma is not the lecture's shadow (shadowLevelOff): shadows that drop the ambient term
+    // too (black) or keep part of the diffuse light (pale). 0 when nothing is counted.
+    double shadowLevelOffPct = 0;
+    // Of the truth-lit evaluated pixels outside the band: the mean % of each pixel's light (its
+    // all-lit luma less the lecture's shadow there) that the render loses (lightLost). Close to
+    // false shadow for a hard test; it also sees a surface dimmed by less than the classifier's
+    // 15 % (a filter whose far taps shadow their own surface). 0 when nothing is counted.
+    double litLightLostPct = 0;
     // Distance in pixels from each true edge pixel to the nearest rendered edge pixel of the same
     // object (the image's diagonal when there is none), less that pixel's tolerance beyond one
     // pixel (bandPx - 1, never below 0): the mean and the 95th percentile (nearest rank). When
@@ -80,6 +89,8 @@ struct ShadowFigureInputs {
     std::vector<std::uint8_t> darkWithoutCaster;  // dark with the map forced "everything lit"
     std::vector<float> bandPx;                    // edge tolerance in pixels (>= 1)
     std::vector<std::uint8_t> shadowVisible;      // shadowVisiblePixels
+    std::vector<std::uint8_t> shadowLevelOff;     // shadowLevelOff
+    std::vector<float> lightLost;                 // lightLost
 };
 
 // `shadowed` comes from classifyShadowed (one byte per pixel, non-zero = shadowed) and must match
@@ -105,6 +116,35 @@ std::vector<std::uint8_t> shadowVisiblePixels(const Scene& scene, const Camera& 
                                               const ReferenceImage& ref,
                                               const glm::vec3& lightPosition, float margin = 1.5f,
                                               const ClassifyOptions& options = {});
+
+// The reference's own shading (shadeReference) of every pixel with the light reaching it and
+// with the light blocked: what a lit and a shadowed pixel should look like, per the lecture
+// (ambient always; diffuse and specular only where the light arrives).
+struct ReferenceShades {
+    Image reached, blocked;
+};
+ReferenceShades referenceShades(const Scene& scene, const Camera& camera, const ReferenceImage& ref,
+                                const glm::vec3& lightPosition);
+// shadowVisiblePixels from shades already computed.
+std::vector<std::uint8_t> shadowVisiblePixels(const ReferenceShades& shades, float margin = 1.5f,
+                                              const ClassifyOptions& options = {});
+
+// Where a rendered shadow is not as dark as the lecture's: a pixel in a hard shadow keeps the
+// ambient term only, i.e. the fraction blocked / reached of its lit luma that the reference's
+// shading keeps. Measured against the render's own all-lit luma (so a student's lighting model
+// or the fixed-function pass is judged by its own light), 1 where luma(withShadows) differs from
+// luma(allLit) * kept by more than both thresholds (`relativeDrop` of the all-lit luma and
+// `absoluteDrop` levels). A black shadow (ambient dropped too) is off by the whole ambient, at
+// least 20 % of the lit luma; a shadow keeping half the diffuse light by 14-33 %.
+std::vector<std::uint8_t> shadowLevelOff(const Image& withShadows, const Image& allLit,
+                                         const ReferenceShades& shades,
+                                         const ClassifyOptions& options = {0.10f, 6.0f});
+
+// Per pixel, the fraction (0..1) of its light the render loses: (allLit - withShadows) over
+// allLit * (1 - kept), the drop a hard shadow would make there (at least `absoluteDrop` levels,
+// so a pixel the light barely reaches does not divide by nothing).
+std::vector<float> lightLost(const Image& withShadows, const Image& allLit,
+                             const ReferenceShades& shades, float absoluteDrop = 6.0f);
 
 // Which pixels the figures count (the `evaluated` definition above).
 std::vector<std::uint8_t> evaluatedPixels(const ReferenceImage& ref,

@@ -10,12 +10,17 @@
 #include "gl/loader.h"
 #include "platform/window_session.h"
 #include "platform/x11_keys.h"
+#include "platform/x11_window.h"
 
 namespace sl {
 
 namespace {
 
 constexpr int kPollMs = 125;  // shader files and on-screen messages, 8 times a second
+// Esc quits when it is released (or this long after the press, if no release comes): quitting
+// on the press destroyed the window before `xdotool key --window ID Escape` sent the release,
+// and xdotool failed with BadWindow.
+constexpr int kQuitAfterEscMs = 400;
 
 // freeglut's callbacks are plain functions, so the window's state lives here.
 struct WindowState {
@@ -29,6 +34,7 @@ struct WindowState {
     bool resizeDone = false;  // --resize-test finished
     int resizeFrames = 0;     // frames the resize script took
     std::string writtenState;
+    bool quitting = false;  // Esc pressed, waiting for its release
 };
 WindowState* g = nullptr;
 
@@ -38,17 +44,37 @@ void reshape(int w, int h) {
     glutPostRedisplay();
 }
 
+void quitNow(int) {
+    glutLeaveMainLoop();
+}
+
 // Every key, from X or from --keys: Esc quits, the rest is the session's.
 void pressKey(unsigned char key, bool shift) {
     if (key == 27) {
-        glutLeaveMainLoop();
+        if (!g->quitting) glutTimerFunc(kQuitAfterEscMs, quitNow, 0);
+        g->quitting = true;
         return;
     }
+    if (g->quitting) return;
     if (g->session->key(key, shift)) glutPostRedisplay();
 }
 
 void keyboard(unsigned char key, int, int) {
     pressKey(key, (glutGetModifiers() & GLUT_ACTIVE_SHIFT) != 0);
+}
+
+void keyboardUp(unsigned char key, int, int) {
+    if (key == 27 && g->quitting) glutLeaveMainLoop();
+}
+
+// The window was destroyed under us (freeglut would go on without it): end as Esc does.
+bool windowGone() {
+    static bool said = false;
+    if (windowStillExists()) return false;
+    if (!said) std::cerr << "shadowlab: the window was closed; quitting" << std::endl;
+    said = true;
+    glutLeaveMainLoop();
+    return true;
 }
 
 // --resize-test, one step at a time: each waits (a bounded number of frames) until the size it
@@ -123,6 +149,8 @@ void writeState() {
 }
 
 void display() {
+    if (windowGone()) return;
+    if (g->frame == 0) takeKeyboardFocusIfNobodyHasIt();
     bool testRun = g->args.frames > 0;
     if (g->width > 0 && g->height > 0) {  // minimised or 0x0: nothing to draw, time goes on
         bool last = testRun && g->frame + 1 >= g->args.frames + g->resizeFrames &&
@@ -148,6 +176,9 @@ void display() {
 }
 
 void tick(int) {
+    if (windowGone()) return;
+    // Also later: a window that had the focus when this one opened may have closed since.
+    takeKeyboardFocusIfNobodyHasIt();
     if (g->session->tick(std::chrono::steady_clock::now())) glutPostRedisplay();
     glutTimerFunc(kPollMs, tick, 0);
 }
@@ -207,6 +238,10 @@ int runWindow(const WindowArgs& args) {
         throw std::runtime_error("could not load GL entry points through glutGetProcAddress");
     requireGl33();
     passShiftTabAsTab();
+    watchWindow();
+    // Before the session is built (compiling takes a while): keys typed meanwhile queue up for
+    // the window instead of going wherever the pointer is.
+    takeKeyboardFocusIfNobodyHasIt();
     installGlDebugOutput();
     state.width = state.startWidth = request.width;
     state.height = state.startHeight = request.height;
@@ -215,6 +250,7 @@ int runWindow(const WindowArgs& args) {
     glutDisplayFunc(display);
     glutReshapeFunc(reshape);
     glutKeyboardFunc(keyboard);
+    glutKeyboardUpFunc(keyboardUp);
     glutMouseFunc(mouse);
     glutMotionFunc(motion);
     glutTimerFunc(kPollMs, tick, 0);

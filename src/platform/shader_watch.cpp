@@ -3,6 +3,7 @@
 #include <dirent.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <functional>
 
 namespace sl {
@@ -11,9 +12,11 @@ namespace {
 
 constexpr int kMaxDepth = 4;
 constexpr int kMaxEntries = 4000;
+constexpr std::chrono::milliseconds kEmptySettle(1000);
 
-// FNV-1a over the names, sizes and modification times of the files under `folder`.
-void hashFolder(const std::string& folder, int depth, int& entries, std::uint64_t& h) {
+// FNV-1a over the names, sizes and modification times of the files under `folder`; `empty`
+// counts the files of size 0.
+void hashFolder(const std::string& folder, int depth, int& entries, std::uint64_t& h, int& empty) {
     DIR* dir = ::opendir(folder.c_str());
     if (!dir) return;
     auto mix = [&h](const void* data, std::size_t n) {
@@ -28,12 +31,13 @@ void hashFolder(const std::string& folder, int depth, int& entries, std::uint64_
         struct stat st;
         if (::lstat(path.c_str(), &st) != 0) continue;
         if (S_ISDIR(st.st_mode)) {
-            if (depth < kMaxDepth) hashFolder(path, depth + 1, entries, h);
+            if (depth < kMaxDepth) hashFolder(path, depth + 1, entries, h, empty);
             continue;
         }
         if (!S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode)) continue;
         if (S_ISLNK(st.st_mode) && ::stat(path.c_str(), &st) != 0) continue;  // dangling link
         mix(path.data(), path.size());
+        empty += st.st_size == 0;
         long long stamp[3] = {static_cast<long long>(st.st_size),
                               static_cast<long long>(st.st_mtim.tv_sec),
                               static_cast<long long>(st.st_mtim.tv_nsec)};
@@ -47,10 +51,11 @@ void hashFolder(const std::string& folder, int depth, int& entries, std::uint64_
 ShaderWatch::ShaderWatch(std::vector<std::string> folders, std::chrono::milliseconds settle)
     : folders_(std::move(folders)), settle_(settle), last_(fingerprint()) {}
 
-std::uint64_t ShaderWatch::fingerprint() const {
+std::uint64_t ShaderWatch::fingerprint() {
     std::uint64_t h = 14695981039346656037ULL;
-    int entries = 0;
-    for (const auto& f : folders_) hashFolder(f, 0, entries, h);
+    int entries = 0, empty = 0;
+    for (const auto& f : folders_) hashFolder(f, 0, entries, h, empty);
+    empty_ = empty;
     return h;
 }
 
@@ -62,7 +67,10 @@ bool ShaderWatch::poll(Clock::time_point now) {
         pending_ = true;
         return false;
     }
-    if (pending_ && now - changedAt_ >= settle_) {
+    // An empty file is nearly always a save in progress (truncated, not yet written): it gets
+    // longer to be filled before it is compiled and called empty.
+    const auto settle = empty_ > 0 ? std::max(settle_, kEmptySettle) : settle_;
+    if (pending_ && now - changedAt_ >= settle) {
         pending_ = false;
         return true;
     }

@@ -1,5 +1,6 @@
 // Notices edited shader files for the window's hot reload, debounced: a change counts once the
-// folders have stayed the same (every file's size and modification time) for `settle`, so an
+// folders have stayed the same (every file's size and modification time) for `settle` (a
+// second while some file is empty: a save caught between truncating and writing), so an
 // editor's or `cp`'s half-written file is never compiled.
 #pragma once
 
@@ -24,10 +25,11 @@ class ShaderWatch {
     bool pending() const { return pending_; }
 
   private:
-    std::uint64_t fingerprint() const;
+    std::uint64_t fingerprint();  // also counts the empty files
 
     std::vector<std::string> folders_;
     std::chrono::milliseconds settle_;
+    int empty_ = 0;  // empty files in the last fingerprint (set by it: declared before last_)
     std::uint64_t last_;
     Clock::time_point changedAt_{};
     bool pending_ = false;

@@ -1,6 +1,7 @@
 #include "platform/window_session.h"
 
 #include <climits>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -124,6 +125,8 @@ bool WindowSession::selectStage(std::size_t index, GlslTree sessionTree) {
 }
 
 bool WindowSession::key(unsigned char key, bool shift) {
+    // Caps Lock or Shift on a letter is the same command (Shift only counts with + and -).
+    if (key >= 'A' && key <= 'Z') key = static_cast<unsigned char>(key - 'A' + 'a');
     Renderer& r = *slot_->renderer;
     const auto& specs = r.params().specs();
     const std::size_t stages = stageRegistry().size();
@@ -395,8 +398,9 @@ std::string WindowSession::draw(int width, int height, const std::string& saveTo
     height_ = height;
     Renderer& r = *slot_->renderer;
     auto start = Clock::now();
-    if (animateLight_) {  // radians per second, whatever the frame rate
-        double dt = std::min(std::chrono::duration<double>(start - lastAnimation_).count(), 0.25);
+    if (animateLight_) {  // radians per second, whatever the frame rate (down to 1 frame a second;
+                          // a longer gap is a pause, not a frame, and does not jump the light)
+        double dt = std::min(std::chrono::duration<double>(start - lastAnimation_).count(), 1.0);
         r.lightPosition = circlingLight(r.lightPosition, kLightRadiansPerSecond, dt);
     }
     lastAnimation_ = start;
@@ -447,6 +451,7 @@ std::string WindowSession::stateJson() const {
                                          : oneLine(reloadErrors_[0]);
     j["message"] = flash_;
     j["animating"] = animateLight_;
+    j["lightAngle"] = std::atan2(r.lightPosition.z, r.lightPosition.x);  // radians, around y
     const auto& specs = r.params().specs();
     j["param"] = specs.empty() ? "" : specs[selectedParam_ % specs.size()].name;
     j["value"] = specs.empty() ? "" : r.params().text(j["param"].get<std::string>());

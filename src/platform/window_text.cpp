@@ -9,6 +9,12 @@ namespace {
 bool isMirror(const StageInfo& s) {
     return s.needsMirror;
 }
+// Phong draws no shadow map: its visibility view is white everywhere, and says why.
+bool offersShadowMap(const StageInfo& s) {
+    for (ViewMode v : s.views)
+        if (v == ViewMode::ShadowMap) return true;
+    return false;
+}
 }  // namespace
 
 std::string viewLabel(const StageInfo& stage, ViewMode view) {
@@ -30,6 +36,10 @@ std::string viewLegend(const StageInfo& stage, ViewMode view) {
         case ViewMode::Light:
             return "light: the scene as the light sees it (the shadow map's frustum)";
         case ViewMode::Visibility:
+            if (!offersShadowMap(stage))
+                return "visibility: white = lit, black = in shadow; this stage has no shadow map, "
+                       "so "
+                       "all of it is white";
             return "visibility: white = lit (the map sees this point), black = in shadow";
         case ViewMode::LightDepth:
             return "light-depth: each point's own depth from the light; black = near, white = far";

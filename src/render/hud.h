@@ -19,7 +19,7 @@ struct HudBlock {
     std::vector<HudLine> lines;
     bool bottom = false;
     int maxLines = 0;  // wrapped lines beyond this become one "(N more lines)" line; 0: no limit
-    glm::vec4 panel{0.0f, 0.0f, 0.0f, 0.6f};
+    glm::vec4 panel{0.0f, 0.0f, 0.0f, 0.78f};  // white text stays readable on a white view
 };
 
 // Text size for a width x height window: from its smaller side, so a projector's 1080 lines

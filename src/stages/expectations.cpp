@@ -221,11 +221,18 @@ std::string Expectation::label() const {
 }
 
 const std::vector<std::string>& figureNames() {
-    static const std::vector<std::string> names = {
-        "false_shadow_pct",        "false_lit_pct",  "false_shadow_band_pct",
-        "false_lit_band_pct",      "edge_mean_px",   "edge_p95_px",
-        "mirror_id_pct",           "mirror_psnr_db", "dark_without_caster_pct",
-        "false_shadow_speckle_pct"};
+    static const std::vector<std::string> names = {"false_shadow_pct",
+                                                   "false_lit_pct",
+                                                   "false_shadow_band_pct",
+                                                   "false_lit_band_pct",
+                                                   "edge_mean_px",
+                                                   "edge_p95_px",
+                                                   "mirror_id_pct",
+                                                   "mirror_psnr_db",
+                                                   "dark_without_caster_pct",
+                                                   "false_shadow_speckle_pct",
+                                                   "shadow_level_off_pct",
+                                                   "lit_light_lost_pct"};
     return names;
 }
 

@@ -319,7 +319,9 @@ class MirrorStage : public Stage {
         }
         notes_.insert(notes_.begin(), line);
         if (f.view == ViewMode::ShadowMap)
-            notes_.push_back("view shadow-map: the mirror texture itself (left-right flipped)");
+            notes_.push_back(
+                "view mirror-texture (--view shadow-map): the mirror texture itself, left-right "
+                "flipped");
         if (f.timePasses && mirrorPassRan_) {
             std::snprintf(line, sizeof line, "mirror pass %.2f ms", f.stats.mirrorMs);
             notes_.push_back(line);

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -15,6 +16,9 @@
 #include <thread>
 
 #include "render_fixture.h"
+
+// Last: its macros (None, Bool, Status...) would clash with gtest's headers.
+#include <X11/Xlib.h>  // NOLINT(llvm-include-order)
 
 using namespace sl;
 using namespace sl::test;
@@ -166,19 +170,23 @@ pid_t spawn(const std::string& command, const std::string& dir, const std::strin
 }
 
 // One window session as a user has it: `shadowlab window ARGS` on a display of its own
-// (xvfb-run -a: parallel tests never share one; -ac: no cookie to pass to the window), keys
-// sent with xdotool as real X events.
+// (parallel tests never share one; -ac: no cookie to pass to the window), keys
+// sent with xdotool as real X events. `focus`: give the window the keyboard with xdotool;
+// without, the window must take it itself (a bare X server has no window manager to do it).
 class LiveWindow {
   public:
-    LiveWindow(const std::string& args, const std::string& dir) : dir_(dir) {
+    LiveWindow(const std::string& args, const std::string& dir, bool focus = true) : dir_(dir) {
         fs::create_directories(dir + "/x");
+        // Xvfb picks a free display itself and writes its number once it accepts connections
+        // (-displayfd): two servers started at once never race for one number, as xvfb-run -a's
+        // look at the lock files can ("failed to open display" under a parallel ctest).
         xserver_ =
-            spawn(std::string(XVFB_RUN) +
-                      " -a -s '-ac -screen 0 1280x1024x24' sh -c 'echo $DISPLAY > display.txt; "
-                      "exec sleep 600'",
-                  dir + "/x");
-        if (!waitUntil([&] { return !readText(dir + "/x/display.txt").empty(); }, 30)) return;
-        display_ = readText(dir + "/x/display.txt");
+            spawn("exec Xvfb -displayfd 1 -ac -nolisten tcp -screen 0 1280x1024x24", dir + "/x");
+        if (!waitUntil(
+                [&] { return readText(dir + "/x/stdout.txt").find('\n') != std::string::npos; },
+                30))
+            return;
+        display_ = ":" + readText(dir + "/x/stdout.txt");
         display_.erase(display_.find_last_not_of("\n ") + 1);
         window_ = spawn("exec " + std::string(SHADOWLAB_BIN) + " window " + args, dir, display_);
         // The window exists once xdotool finds it; it gets the keyboard focus (no window manager).
@@ -190,7 +198,15 @@ class LiveWindow {
             },
             60);
         id_ = id;
-        if (!id_.empty()) xdo("windowfocus --sync " + id_);
+        if (id_.empty()) return;
+        // Keys typed to the X server (XTEST) go to the focused window, whatever the pointer is
+        // over: the pointer is put outside the window so that only the focus can route them.
+        xdo("mousemove 1270 1010");
+        if (focus)
+            xdo("windowfocus --sync " + id_);
+        else if (!waitUntil([&] { return capture("xdotool getwindowfocus 2>/dev/null") == id_; },
+                            60))
+            id_.clear();
     }
     ~LiveWindow() {
         if (alive()) {
@@ -203,6 +219,7 @@ class LiveWindow {
         }
     }
     bool ready() const { return !id_.empty(); }
+    const std::string& id() const { return id_; }
     bool alive() {
         if (window_ <= 0 || reaped_) return false;
         if (::waitpid(window_, &exitStatus_, WNOHANG) != window_) return true;
@@ -251,8 +268,29 @@ class LiveWindow {
     // Esc, then the exit code (-1 when it did not end within the time).
     int quit() {
         keys("Escape");
+        return exitCode();
+    }
+    // The exit code once the window has ended by itself (-1 when it did not within the time,
+    // 128 + N when signal N ended it).
+    int exitCode() {
         waitUntil([&] { return !alive(); }, 30);
+        if (reaped_ && WIFSIGNALED(exitStatus_)) return 128 + WTERMSIG(exitStatus_);  // as sh
         return reaped_ && WIFEXITED(exitStatus_) ? WEXITSTATUS(exitStatus_) : -1;
+    }
+    // What a window manager's close button does: WM_DELETE_WINDOW sent to the window.
+    bool askToClose() {
+        Display* d = XOpenDisplay(display_.c_str());
+        if (!d) return false;
+        XEvent e{};
+        e.xclient.type = ClientMessage;
+        e.xclient.window = std::stoul(id_);
+        e.xclient.message_type = XInternAtom(d, "WM_PROTOCOLS", False);
+        e.xclient.format = 32;
+        e.xclient.data.l[0] = static_cast<long>(XInternAtom(d, "WM_DELETE_WINDOW", False));
+        e.xclient.data.l[1] = CurrentTime;
+        bool sent = XSendEvent(d, e.xclient.window, False, NoEventMask, &e) != 0;
+        XCloseDisplay(d);  // flushes
+        return sent;
     }
     std::string out() const { return readText(dir_ + "/stdout.txt"); }
     std::string err() const { return readText(dir_ + "/stderr.txt"); }
@@ -308,6 +346,192 @@ TEST(LiveWindow, EveryStageInOneSessionBothTreesWithShots) {
     Image shot;
     ASSERT_EQ(readPng(dir + "/shots/" + *names.begin(), shot), "");
     EXPECT_EQ(shot.width, 640);
+}
+
+// The "done when" exactly as a person or a script does it: `shadowlab window` with no
+// options in an empty folder, keys typed with plain `xdotool key` (no --window, the script does
+// not focus the window, the pointer is elsewhere: under Xvfb there is no window manager, so the
+// window takes the keyboard itself): `p`, then `]` and `p` seven times. Eight pictures in
+// ./shots, in lecture order, each named after its stage.
+TEST(LiveWindow, DoneWhenNoOptionsSevenBracketsEightShots) {
+    std::string dir = tempDir("live-done-when");
+    LiveWindow w("", dir, /*focus=*/false);
+    ASSERT_TRUE(w.ready()) << "no window, or it never took the keyboard focus\n" << w.err();
+    std::string keys = "p";
+    for (int k = 0; k < 7; ++k) keys += " bracketright p";
+    ASSERT_TRUE(w.keys(keys));
+    ASSERT_TRUE(waitUntil([&] { return countLines(w.out(), "saved ") >= 8; }, 90))
+        << w.out() << w.err();
+    // `xdotool type` sends characters (it finds `]` on the keymap itself): one stage more.
+    ASSERT_EQ(w.xdo("type --delay 40 ']p'"), 0);
+    ASSERT_TRUE(waitUntil([&] { return countLines(w.out(), "saved ") >= 9; }, 60)) << w.out();
+    // Esc sent to the window itself: xdotool sends the release after the press, so the window
+    // must still exist then (it used to be gone, and xdotool failed with BadWindow).
+    EXPECT_EQ(w.xdo("key --window " + w.id() + " Escape"), 0);
+    EXPECT_EQ(w.exitCode(), 0) << w.err();
+
+    std::vector<std::string> saved;  // in the order saved, from stdout
+    std::istringstream out(w.out());
+    for (std::string line; std::getline(out, line);)
+        if (line.rfind("saved ", 0) == 0) saved.push_back(line.substr(6));
+    ASSERT_EQ(saved.size(), 9u) << w.out();
+    const auto ids = stageIds();
+    const std::string shots = fs::canonical(dir).string() + "/shots/";
+    for (std::size_t k = 0; k < saved.size(); ++k) {
+        const std::string& stage = ids[k % ids.size()];
+        EXPECT_EQ(saved[k].rfind(shots + stage + "-", 0), 0u) << k << ": " << saved[k];
+        EXPECT_TRUE(fs::is_regular_file(saved[k])) << saved[k];
+    }
+    std::set<std::string> stagesSeen;
+    for (std::size_t k = 0; k < 8; ++k)
+        stagesSeen.insert(
+            saved[k].substr(shots.size(), saved[k].find('-', shots.size()) - shots.size()));
+    EXPECT_EQ(stagesSeen.size(), 8u);  // eight different stage ids
+}
+
+// Closed from outside: `xdotool windowclose` destroys the window (freeglut ignores that and
+// used to run on with no window, forever), `windowkill` cuts the connection (Xlib's exit 1).
+// Both end the session at once with one line on stderr and exit code 0, also while the light
+// animates (frames being drawn into the window as it goes). A window manager's close
+// (WM_DELETE_WINDOW) ends it as Esc does.
+TEST(LiveWindow, ClosedFromOutsideEndsTheSession) {
+    for (bool animating : {false, true}) {
+        std::string dir = tempDir("live-wm-close");
+        LiveWindow w("--state state.json --size 320x240", dir);
+        ASSERT_TRUE(w.ready()) << w.err();
+        ASSERT_TRUE(w.waitState([](const auto& s) { return s["stage"] == "phong"; }, 30));
+        if (animating) ASSERT_TRUE(w.keys("l"));
+        ASSERT_TRUE(w.askToClose());
+        EXPECT_EQ(w.exitCode(), 0) << "WM_DELETE_WINDOW " << animating << "\n" << w.err();
+    }
+    for (const char* how : {"windowclose", "windowkill"}) {
+        for (bool animating : {false, true}) {
+            std::string dir = tempDir(std::string("live-") + how);
+            LiveWindow w("--state state.json --size 320x240", dir);
+            ASSERT_TRUE(w.ready()) << w.err();
+            ASSERT_TRUE(w.waitState([](const auto& s) { return s["stage"] == "phong"; }, 30));
+            if (animating) {
+                ASSERT_TRUE(w.keys("l"));
+                ASSERT_TRUE(w.waitState([](const auto& s) { return s["animating"] == true; }, 10));
+            }
+            EXPECT_EQ(w.xdo(std::string(how) + " " + w.id()), 0);
+            EXPECT_EQ(w.exitCode(), 0) << how << " " << animating << "\n" << w.err();
+            EXPECT_EQ(countLines(w.err(), "shadowlab: the "), 1) << w.err();
+        }
+    }
+}
+
+// A student's shader saved the ways editors and shells do, while the window runs: an atomic
+// save (temporary file renamed over it), the file deleted (ours takes over) and written again,
+// `sed -i`, a file left empty for a moment, an included common file overridden and broken,
+// then removed. Every break shows an error, every repair clears it without a key, a file
+// caught empty is never called empty, and the terminal gets whole lines.
+TEST(LiveWindow, ShaderSavedEveryWayComesAndGoes) {
+    std::string dir = tempDir("live-saves");
+    fs::create_directories(dir + "/mine/margin");
+    fs::create_directories(dir + "/mine/common");
+    const std::string source = std::string(SHADOWLAB_SOURCE_DIR) + "/shaders_core/";
+    const std::string good = readText(source + "margin/lit.frag");
+    const std::string common = readText(source + "common/phong.glsl");
+    std::string bad = good;
+    const std::string fine = "return margin;", broken = "return margin +;";
+    ASSERT_NE(bad.find(fine), std::string::npos) << "the test breaks margin/lit.frag there";
+    bad.replace(bad.find(fine), fine.size(), broken);
+    const std::string file = dir + "/mine/margin/lit.frag";
+    std::ofstream(file) << good;
+    LiveWindow w("--shaders mine --stage margin --state state.json --size 320x240", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(
+        w.waitState([](const auto& s) { return s["stage"] == "margin" && s["errors"] == 0; }, 30));
+    auto atomicSave = [&](const std::string& text) {
+        std::string tmp = dir + "/mine/margin/.lit.frag.swp";
+        std::ofstream(tmp) << text;
+        fs::rename(tmp, file);
+    };
+    auto errorsShown = [&](bool shown, const char* step) {
+        EXPECT_TRUE(w.waitState(
+            [&](const auto& s) { return (s["errors"].template get<int>() > 0) == shown; }, 20))
+            << step << "\n"
+            << w.state().dump() << "\n"
+            << w.err();
+    };
+    auto reloads = [&] { return countLines(w.out(), "shadowlab: shaders reloaded"); };
+
+    atomicSave(bad);
+    errorsShown(true, "atomic save of a broken file");
+    atomicSave(good);
+    errorsShown(false, "atomic save of the repair");
+    int before = reloads();
+    fs::remove(file);  // ours is used again
+    EXPECT_TRUE(waitUntil([&] { return reloads() > before; }, 20)) << w.out();
+    errorsShown(false, "file deleted");
+    std::ofstream(file) << bad;  // written again, broken: it must be seen again
+    errorsShown(true, "deleted file written again");
+    ASSERT_EQ(std::system(("sed -i 's/return margin +;/return margin;/' " + file).c_str()), 0);
+    errorsShown(false, "sed -i repair");
+    before = reloads();
+    { std::ofstream truncated(file, std::ios::trunc); }  // a save that pauses once truncated
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    std::ofstream(file) << good;
+    EXPECT_TRUE(waitUntil([&] { return reloads() > before; }, 20)) << w.out();
+    errorsShown(false, "a file empty for 300 ms, then written");
+    std::ofstream(dir + "/mine/common/phong.glsl") << common << "\nvec3 broken = ;\n";
+    errorsShown(true, "an overridden include broken");
+    fs::remove(dir + "/mine/common/phong.glsl");
+    errorsShown(false, "the broken include removed");
+    EXPECT_EQ(w.quit(), 0);
+    const std::string err = w.err();
+    EXPECT_EQ(err.find("empty"), std::string::npos) << err;
+    EXPECT_GE(countLines(err, "shadowlab: shader error"), 3) << err;
+    std::istringstream lines(err);
+    for (std::string line; std::getline(lines, line);)  // whole lines, each its own event
+        EXPECT_EQ(line.rfind("shadowlab: ", 0), 0u) << line;
+    EXPECT_EQ(err.back(), '\n');
+    EXPECT_EQ(countLines(w.out(), "shadowlab: shaders reloaded; every program builds again"), 3)
+        << w.out();
+}
+
+namespace {
+// The light's angle around the vertical axis from the window's state, waiting for a new frame
+// so that the moment it was read is the moment it was drawn (within the polling step).
+std::pair<double, Clock::time_point> freshLightAngle(LiveWindow& w) {
+    double previous = w.state().value("lightAngle", 0.0), angle = previous;
+    waitUntil(
+        [&] {
+            auto s = w.state();
+            if (s.is_discarded()) return false;
+            angle = s.value("lightAngle", previous);
+            return angle != previous;
+        },
+        10);
+    return {angle, Clock::now()};
+}
+
+// `l` turns the light at a fixed speed in radians per second, measured over a few seconds.
+double measuredLightSpeed(const std::string& args) {
+    std::string dir = tempDir("live-light");
+    LiveWindow w(args + " --state state.json --size 320x240", dir);
+    EXPECT_TRUE(w.ready()) << w.err();
+    EXPECT_TRUE(w.waitState([](const auto& s) { return s.contains("lightAngle"); }, 30));
+    w.keys("l");
+    EXPECT_TRUE(w.waitState([](const auto& s) { return s["animating"] == true; }, 10));
+    auto [a0, t0] = freshLightAngle(w);
+    std::this_thread::sleep_for(std::chrono::seconds(3));
+    auto [a1, t1] = freshLightAngle(w);
+    EXPECT_EQ(w.quit(), 0);
+    double turned = std::remainder(a1 - a0, 2 * M_PI);
+    return turned / std::chrono::duration<double>(t1 - t0).count();
+}
+}  // namespace
+
+// The README's 0.6 rad/s, at a fast frame rate (small map) and a slow one (an 8192 map, a few
+// frames a second here): it used to be 0.02 rad per frame. The margin covers reading the state
+// up to a polling step late at either end.
+TEST(LiveWindow, LightTurnsInRadiansPerSecond) {
+    double fast = measuredLightSpeed("--stage hardware --set map-size=256");
+    double slow = measuredLightSpeed("--stage hardware --set map-size=8192");
+    EXPECT_NEAR(fast, 0.6, 0.1);
+    EXPECT_NEAR(slow, 0.6, 0.1);
 }
 
 // A student breaks the shader while the window runs, then repairs it the way `cp` does
@@ -395,6 +619,27 @@ TEST(Window, FailedShotKeepsTheExitCode) {
         << output;
 }
 
+// The same with a real key press: the message on screen (the HUD's state), one line on
+// stderr, and Esc still ends with 0.
+TEST(LiveWindow, FailedShotShownAndExitCodeStays) {
+    std::string dir = tempDir("live-shots-fail");
+    std::ofstream(dir + "/not-a-folder") << "x";
+    LiveWindow w("--shots not-a-folder/shots --state state.json --size 320x240", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["stage"] == "phong"; }, 30));
+    ASSERT_TRUE(w.keys("p"));
+    EXPECT_TRUE(w.waitState(
+        [](const auto& s) {
+            return s["message"].template get<std::string>().rfind("p: could not save", 0) == 0;
+        },
+        15))
+        << w.state().dump();
+    EXPECT_EQ(w.quit(), 0);
+    EXPECT_EQ(countLines(w.err(), "shadowlab: p: could not save into 'not-a-folder/shots'"), 1)
+        << w.err();
+    EXPECT_EQ(countLines(w.out(), "saved "), 0);
+}
+
 // `p` in a scripted run: the absolute path on stdout, the file there, its name the stage's.
 TEST(Window, ShotGoesToTheShotsFolder) {
     std::string dir = tempDir("shots-ok");
@@ -439,4 +684,39 @@ TEST(Window, MirrorBringsItsSceneAndFixedRunsLegacy) {
     auto legacy = stateAfterKeys("g5");
     EXPECT_EQ(legacy["stage"], "hardware");
     EXPECT_EQ(legacy["tree"], "legacy");
+}
+
+// Caps Lock (or Shift) on a letter is the same command: `I` and `H` as `i` and `h`.
+TEST(Window, CapitalLettersAreTheSameCommands) {
+    auto s = stateAfterKeys("IH");
+    EXPECT_EQ(s["hud"], "compact");
+    EXPECT_EQ(s["help"], true);
+}
+
+// Notes only where they help: a copy of ours with a comment added says nothing; one that stops
+// using `margin` is told so once, and not about uniforms our own shader never used either
+// (every lit pass gets shadowMatrix; it used to be named on every edited copy).
+TEST(Window, UnusedUniformNotesOnlyForWhatTheStudentDropped) {
+    std::string dir = tempDir("notes");
+    const std::string source = std::string(SHADOWLAB_SOURCE_DIR) + "/shaders_core/";
+    fs::create_directories(dir + "/margin");
+    fs::create_directories(dir + "/hardware");
+    std::string margin = readText(source + "margin/lit.frag");
+    const std::string uses = "return margin;";
+    ASSERT_NE(margin.find(uses), std::string::npos);
+    margin.replace(margin.find(uses), uses.size(), "return 0.01;");
+    std::ofstream(dir + "/margin/lit.frag") << margin;
+    std::ofstream(dir + "/hardware/lit.frag")
+        << readText(source + "hardware/lit.frag") << "// mine\n";
+    std::string output;
+    int code = runShadowlab(
+        "window --shaders " + dir + " --stage margin --size 200x150 --frames 6 --keys 54r4",
+        &output);
+    EXPECT_EQ(code, 0) << output;
+    EXPECT_EQ(countLines(output,
+                         "shadowlab: note: margin/lit (your shader) has no active "
+                         "uniform 'margin'"),
+              1)
+        << output;
+    EXPECT_EQ(countLines(output, "shadowlab: note:"), 1) << output;
 }

@@ -447,3 +447,59 @@ TEST(Metrics, BandWidensToOneMapTexelOnScreen) {
     // Five pixels short is still one pixel beyond the tolerance.
     EXPECT_NEAR(shadowFigures(ref, maskRect(30, 10, 0, 0, 5, 10), texel).edgeP95Px, 2.0, 1e-9);
 }
+
+namespace {
+
+Image filledGrey(int w, int h, int level) {
+    Image image(w, h);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) setGrey(image, i, j, level);
+    return image;
+}
+
+}  // namespace
+
+TEST(Metrics, ShadowLevelIsTheLecturesAmbientOnly) {
+    // The reference keeps 40 of 120 levels in a hard shadow (ambient only): a third. A render
+    // whose all-lit pixel is 150 should show its shadow at 50.
+    ReferenceShades shades{filledGrey(4, 1, 120), filledGrey(4, 1, 40)};
+    Image allLit = filledGrey(4, 1, 150);
+    Image shown = filledGrey(4, 1, 150);
+    setGrey(shown, 0, 0, 50);   // the lecture's shadow
+    setGrey(shown, 1, 0, 0);    // black: the ambient dropped too
+    setGrey(shown, 2, 0, 100);  // pale: half the diffuse kept
+    setGrey(shown, 3, 0, 58);   // within 10 % of the lit luma (15 levels)
+    std::vector<std::uint8_t> off = shadowLevelOff(shown, allLit, shades);
+    EXPECT_EQ(off, (std::vector<std::uint8_t>{0, 1, 1, 0}));
+
+    // The figure counts truly shadowed pixels outside the band that the render shows shadowed.
+    ReferenceImage ref = evaluatedEverywhere(4, 1);
+    blockRect(ref, 0, 0, 4, 1);
+    ShadowFigureInputs inputs;
+    inputs.shadowLevelOff = off;
+    ShadowFigures f = shadowFigures(ref, maskRect(4, 1, 0, 0, 4, 1), inputs);
+    EXPECT_NEAR(f.shadowLevelOffPct, 50.0, 1e-9);
+    EXPECT_EQ(f.falseLitPct, 0.0);  // where the shadows are is a separate question
+}
+
+TEST(Metrics, LightLostSeesDimmingBelowTheClassifier) {
+    // Lit 150, the lecture's shadow 50 there: the pixel's light is 100 levels. A render 10 %
+    // darker (135) is not "shadowed" to the classifier, but loses 15 % of its light.
+    ReferenceShades shades{filledGrey(3, 1, 120), filledGrey(3, 1, 40)};
+    Image allLit = filledGrey(3, 1, 150);
+    Image shown = filledGrey(3, 1, 150);
+    setGrey(shown, 1, 0, 135);
+    setGrey(shown, 2, 0, 50);
+    std::vector<float> lost = lightLost(shown, allLit, shades);
+    EXPECT_NEAR(lost[0], 0.0f, 1e-6f);
+    EXPECT_NEAR(lost[1], 0.15f, 1e-3f);
+    EXPECT_NEAR(lost[2], 1.0f, 1e-3f);
+    EXPECT_EQ(classifyShadowed(shown, allLit)[1], 0);
+
+    ReferenceImage ref = evaluatedEverywhere(3, 1);  // all truly lit
+    ShadowFigureInputs inputs;
+    inputs.lightLost = lost;
+    ShadowFigures f = shadowFigures(ref, classifyShadowed(shown, allLit), inputs);
+    EXPECT_NEAR(f.litLightLostPct, 100.0 * 1.15 / 3.0, 0.05);
+    EXPECT_NEAR(f.falseShadowPct, 100.0 / 3.0, 1e-9);
+}

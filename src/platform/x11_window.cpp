@@ -1,0 +1,105 @@
+#include "platform/x11_window.h"
+
+#include <X11/Xlib.h>
+#include <dlfcn.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+
+namespace sl {
+
+namespace {
+
+// glXGetCurrentDisplay / glXGetCurrentDrawable are looked up at run time because <GL/glx.h>
+// would clash with glad's GL header (as in x11_keys.cpp).
+Display* currentDisplay() {
+    using GetDisplay = Display* (*)();
+    auto get = reinterpret_cast<GetDisplay>(dlsym(RTLD_DEFAULT, "glXGetCurrentDisplay"));
+    return get ? get() : nullptr;
+}
+
+Window currentWindow() {
+    using GetDrawable = XID (*)();
+    auto get = reinterpret_cast<GetDrawable>(dlsym(RTLD_DEFAULT, "glXGetCurrentDrawable"));
+    return get ? get() : 0;  // freeglut draws straight into its X window
+}
+
+// Errors about our own window are not fatal: when someone destroys it, requests already on
+// their way fail (the swap's XShmPutImage with BadDrawable, GLXBadDrawable, BadWindow) before
+// the next check can notice, and Xlib's default handler would print them and exit 1. The next
+// windowStillExists() decides. Once the window is known gone, nothing is fatal any more
+// (freeglut's teardown destroys it again). Every other error goes to the previous handler.
+Window watched = 0;
+bool lost = false;
+XErrorHandler previousHandler = nullptr;
+int onXError(Display* d, XErrorEvent* e) {
+    if (lost || (watched && e->resourceid == watched)) return 0;
+    return previousHandler ? previousHandler(d, e) : 0;
+}
+
+// While a check runs: the error its request about our window got (others as usual).
+int lastError = 0;
+int rememberError(Display* d, XErrorEvent* e) {
+    if (e->resourceid != watched) return onXError(d, e);
+    lastError = e->error_code;
+    return 0;
+}
+
+// The connection itself is gone (`xdotool windowkill`, the X server stopped): Xlib would print
+// its own message and exit 1; this says what happened on one line. The handler must not return.
+int connectionLost(Display*) {
+    std::fputs("shadowlab: the X connection was closed (the window was killed); quitting\n",
+               stderr);
+    std::fflush(stdout);
+    std::_Exit(0);
+}
+
+}  // namespace
+
+bool takeKeyboardFocusIfNobodyHasIt() {
+    Display* display = currentDisplay();
+    Window window = currentWindow();
+    if (!display || !window) return false;
+    Window focus = 0;
+    int revert = 0;
+    XGetInputFocus(display, &focus, &revert);
+    if (focus != PointerRoot && focus != None) return false;  // a window manager's choice
+    XWindowAttributes attributes;
+    if (!XGetWindowAttributes(display, window, &attributes) || attributes.map_state != IsViewable)
+        return false;  // not yet on screen (focusing it would be a BadMatch)
+    XErrorHandler before = XSetErrorHandler(rememberError);
+    lastError = 0;
+    XSetInputFocus(display, window, RevertToPointerRoot, CurrentTime);
+    XSync(display, False);
+    XSetErrorHandler(before);
+    return lastError == 0;
+}
+
+bool windowStillExists() {
+    if (lost) return false;
+    Display* display = currentDisplay();
+    Window window = currentWindow();
+    if (!display || !window) return true;
+    XErrorHandler before = XSetErrorHandler(rememberError);
+    lastError = 0;
+    XWindowAttributes attributes;
+    XGetWindowAttributes(display, window, &attributes);
+    XSync(display, False);
+    XSetErrorHandler(before);
+    lost = lastError == BadWindow;
+    return !lost;
+}
+
+void watchWindow() {
+    Window window = currentWindow();
+    if (!window || watched) return;
+    watched = window;
+    previousHandler = XSetErrorHandler(onXError);
+    XSetIOErrorHandler(connectionLost);
+    // A write on a killed connection (Mesa's swap, xcb) must fail and reach connectionLost, not
+    // end the process with SIGPIPE.
+    std::signal(SIGPIPE, SIG_IGN);
+}
+
+}  // namespace sl

@@ -1,0 +1,22 @@
+#version 330 core
+#include "common/phong.glsl"
+
+in vec3 worldPosition;
+in vec3 worldNormal;
+in vec4 lightSpace;
+
+uniform sampler2D shadowMap;
+uniform float margin;
+out vec4 fragColor;
+
+void main()
+{
+    vec3 c = lightSpace.xyz / lightSpace.w * 0.5 + 0.5;
+    c.z = min(c.z, 1.0);
+    float visibility = 1.0;
+    if (lightSpace.w > 0.0) {
+        float stored = texelFetch(shadowMap, ivec2(c.xy * 256.0), 0).r;  // the map is 256 x 256
+        visibility = c.z <= stored + margin ? 1.0 : 0.0;
+    }
+    fragColor = shade(worldPosition, worldNormal, visibility, c.z);
+}
