@@ -149,11 +149,16 @@ def advice_section(bench, rows, root):
             return float(at[0]["error_pct"]) if at else float("inf")
         if breaks:
             b = min(breaks, key=lambda b: (float(b["works_to"]), error_at_lowest(b)))
+            lower = [p for p in points if p["stage"] == b["stage"] and p["tree"] == b["tree"]
+                     and float(p["value"]) < float(b["works_to"])]
+            unmeasured = [p["value"] for p in lower if p["error_pct"] == "na"]
             items.append(f"- **Most robust at grazing light**: `{b['stage']}` ({b['tree']}) at its "
                          f"defaults: under the {b['threshold_pct']} % threshold down to "
                          f"{b['works_to']} degrees above the floor, error {f(error_at_lowest(b))} % "
                          "there (the elevation sweep, below; ties broken by the error at that "
-                         "lowest light).")
+                         "lowest light)"
+                         + (f"; at {', '.join(unmeasured)} degrees no shadow can be measured "
+                            "(error undefined), for any method." if unmeasured else "."))
     out.append("\n".join(items) + "\n")
     return out
 

@@ -177,7 +177,16 @@ int runSweep(const SweepArgs& a) {
                          num(v).c_str(), num(acc.falseShadowPct, 3).c_str(),
                          num(acc.falseLitPct, 3).c_str(), tty ? "\033[K" : "\n");
         }
-        WorkingRange r = workingRange(line.xs, line.ys, a.threshold);
+        // Where the error is undefined (no lit or no shadowed pixel could be measured, e.g. a
+        // light so low that no shadow shows) the method is neither working nor broken: only
+        // the measured values are judged.
+        std::vector<double> judgedXs, judgedErrors;
+        for (std::size_t k = 0; k < line.xs.size(); ++k)
+            if (!std::isnan(line.ys[k])) {
+                judgedXs.push_back(line.xs[k]);
+                judgedErrors.push_back(line.ys[k]);
+            }
+        WorkingRange r = workingRange(judgedXs, judgedErrors, a.threshold);
         breaks.add({axis.name, stage, treeName(c.tree), num(a.threshold), num(r.best, 8),
                     num(r.bestError), r.works ? "yes" : "no", num(r.from, 8), num(r.to, 8),
                     num(r.breaksBefore, 8), num(r.breaksAfter, 8)});

@@ -77,8 +77,10 @@ const std::vector<std::uint8_t>& Evaluator::shadowVisible() {
 
 Accuracy shadowAccuracy(const ShadowFigures& f) {
     Accuracy a;
-    a.falseShadowPct = f.falseShadowPct;
-    a.falseLitPct = f.falseLitPct;
+    // A figure over an empty set measured nothing: undefined, not a perfect 0 (a sweep would
+    // call a light too low to show any shadow the most robust).
+    a.falseShadowPct = f.litOutside > 0 ? f.falseShadowPct : NAN;
+    a.falseLitPct = f.shadowOutside > 0 ? f.falseLitPct : NAN;
     a.falseShadowBandPct = f.falseShadowBandPct;
     a.falseLitBandPct = f.falseLitBandPct;
     a.edgeMeanPx = f.edgeDefined ? f.edgeMeanPx : NAN;
@@ -87,7 +89,7 @@ Accuracy shadowAccuracy(const ShadowFigures& f) {
     a.falseShadowSpecklePct = f.falseShadowSpecklePct;
     a.shadowLevelOffPct = f.shadowLevelOffPct;
     a.litLightLostPct = f.litLightLostPct;
-    a.errorPct = 0.5 * (f.falseShadowPct + f.falseLitPct);
+    a.errorPct = 0.5 * (a.falseShadowPct + a.falseLitPct);  // NaN when either is
     return a;
 }
 

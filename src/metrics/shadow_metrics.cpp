@@ -364,6 +364,8 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
                 sum += d;
             }
         }
+    figures.litOutside = litOut;
+    figures.shadowOutside = shadowOut;
     figures.falseShadowPct = percent(litOutWrong, litOut);
     figures.falseLitPct = percent(shadowOutWrong, shadowOut);
     figures.falseShadowBandPct = percent(litInWrong, litIn);

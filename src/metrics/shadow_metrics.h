@@ -49,6 +49,9 @@ std::vector<std::uint8_t> classifyShadowed(const Image& withShadows, const Image
 struct ShadowFigures {
     long evaluated = 0;  // pixels counted (see above)
     long truthLit = 0, truthShadow = 0;
+    // Of those, the ones outside the band: the denominators of falseShadowPct and falseLitPct.
+    // Zero means that figure measured nothing (a light so low that no shadow can be seen).
+    long litOutside = 0, shadowOutside = 0;
     // Of the truth-lit evaluated pixels outside the band: % rendered shadowed.
     double falseShadowPct = 0;
     // Of the truth-shadowed evaluated pixels outside the band: % rendered lit.

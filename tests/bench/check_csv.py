@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Checks a bench or sweep CSV: the expected columns, at least MIN rows, no empty cell, and the
 listed columns numeric on every row ("na" marks a figure that does not apply; it is refused in
-the columns named here).
+the columns named here). With --na-below X, "na" is allowed in them on rows whose `value` is
+below X: a sweep point where a figure measured nothing (the elevation sweep's lowest lights show
+no measurable shadow) is undefined, not 0.
 
-usage: check_csv.py FILE MIN_ROWS COLUMN [COLUMN ...]"""
+usage: check_csv.py FILE MIN_ROWS [--na-below X] COLUMN [COLUMN ...]"""
 import csv
 import math
 import sys
@@ -11,6 +13,9 @@ import sys
 
 def main():
     path, min_rows, numeric = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
+    na_below = None
+    if numeric[:1] == ["--na-below"]:
+        na_below, numeric = float(numeric[1]), numeric[2:]
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
     problems = []
@@ -25,6 +30,8 @@ def main():
             if value is None or value.strip() == "":
                 problems.append(f"line {n}: column '{column}' is empty")
         for column in numeric:
+            if na_below is not None and row.get(column) == "na" and float(row["value"]) < na_below:
+                continue
             try:
                 if not math.isfinite(float(row.get(column, ""))):
                     raise ValueError

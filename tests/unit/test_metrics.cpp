@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "eval/evaluator.h"
 #include "metrics/mirror_metrics.h"
 #include "metrics/pareto.h"
 #include "metrics/shadow_metrics.h"
@@ -502,4 +503,28 @@ TEST(Metrics, LightLostSeesDimmingBelowTheClassifier) {
     ShadowFigures f = shadowFigures(ref, classifyShadowed(shown, allLit), inputs);
     EXPECT_NEAR(f.litLightLostPct, 100.0 * 1.15 / 3.0, 0.05);
     EXPECT_NEAR(f.falseShadowPct, 100.0 / 3.0, 1e-9);
+}
+
+// A figure over an empty set measured nothing: with no shadowed pixel outside the band (a light
+// so low that no shadow can be seen) false lit and the balanced error are undefined, not a
+// perfect 0; the figures that did measure something keep their values.
+TEST(ShadowAccuracy, EmptySetsAreUndefinedNotPerfect) {
+    ShadowFigures f;
+    f.litOutside = 1000;
+    f.falseShadowPct = 2.0;
+    f.shadowOutside = 0;
+    f.falseLitPct = 0.0;  // percent() of nothing
+    Accuracy a = shadowAccuracy(f);
+    EXPECT_DOUBLE_EQ(a.falseShadowPct, 2.0);
+    EXPECT_TRUE(std::isnan(a.falseLitPct));
+    EXPECT_TRUE(std::isnan(a.errorPct));
+
+    f.shadowOutside = 500;
+    f.falseLitPct = 4.0;
+    a = shadowAccuracy(f);
+    EXPECT_DOUBLE_EQ(a.errorPct, 3.0);
+
+    f.litOutside = 0;
+    EXPECT_TRUE(std::isnan(shadowAccuracy(f).falseShadowPct));
+    EXPECT_TRUE(std::isnan(shadowAccuracy(f).errorPct));
 }
