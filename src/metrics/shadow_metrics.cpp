@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -68,6 +69,20 @@ void squaredDistanceLine(const std::vector<double>& f, std::vector<double>& d,
 double percentile(const std::vector<double>& ascending, double fraction) {
     std::size_t rank = std::size_t(std::ceil(fraction * ascending.size()));
     return ascending[std::max<std::size_t>(rank, 1) - 1];
+}
+
+void requireSameSize(const Image& image, std::initializer_list<const Image*> others,
+                     const char* what) {
+    for (const Image* other : others)
+        if (other->width != image.width || other->height != image.height)
+            throw std::invalid_argument(std::string(what) + ": the images differ in size");
+}
+
+// The share of a pixel's lit luma the reference keeps in a hard shadow (blocked / reached: the
+// ambient term's part), 1 where the light adds nothing.
+float keptShare(const ReferenceShades& shades, int i, int j) {
+    float reached = shades.reached.luma(i, j);
+    return reached > 0.0f ? std::min(1.0f, shades.blocked.luma(i, j) / reached) : 1.0f;
 }
 
 }  // namespace
@@ -172,26 +187,16 @@ std::vector<std::uint8_t> shadowVisiblePixels(const ReferenceShades& shades, flo
     return classifyShadowed(shades.blocked, shades.reached, stricter);
 }
 
-std::vector<std::uint8_t> shadowVisiblePixels(const Scene& scene, const Camera& camera,
-                                              const ReferenceImage& ref,
-                                              const glm::vec3& lightPosition, float margin,
-                                              const ClassifyOptions& options) {
-    return shadowVisiblePixels(referenceShades(scene, camera, ref, lightPosition), margin, options);
-}
-
 std::vector<std::uint8_t> shadowLevelOff(const Image& withShadows, const Image& allLit,
                                          const ReferenceShades& shades,
                                          const ClassifyOptions& options) {
+    requireSameSize(allLit, {&withShadows, &shades.reached, &shades.blocked}, "shadowLevelOff");
     const int w = allLit.width, h = allLit.height;
-    for (const Image* other : {&withShadows, &shades.reached, &shades.blocked})
-        if (other->width != w || other->height != h)
-            throw std::invalid_argument("shadowLevelOff: the images differ in size");
     std::vector<std::uint8_t> off(std::size_t(w) * h, 0);
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
-            float reached = shades.reached.luma(i, j);
-            if (reached <= 0.0f) continue;  // nothing lit to compare with
-            float kept = std::min(1.0f, shades.blocked.luma(i, j) / reached);
+            if (shades.reached.luma(i, j) <= 0.0f) continue;  // nothing lit to compare with
+            float kept = keptShare(shades, i, j);
             float lit = allLit.luma(i, j);
             float difference = std::abs(withShadows.luma(i, j) - lit * kept);
             off[std::size_t(j) * w + i] =
@@ -202,16 +207,12 @@ std::vector<std::uint8_t> shadowLevelOff(const Image& withShadows, const Image& 
 
 std::vector<float> lightLost(const Image& withShadows, const Image& allLit,
                              const ReferenceShades& shades, float absoluteDrop) {
+    requireSameSize(allLit, {&withShadows, &shades.reached, &shades.blocked}, "lightLost");
     const int w = allLit.width, h = allLit.height;
-    for (const Image* other : {&withShadows, &shades.reached, &shades.blocked})
-        if (other->width != w || other->height != h)
-            throw std::invalid_argument("lightLost: the images differ in size");
     std::vector<float> lost(std::size_t(w) * h, 0.0f);
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
-            float reached = shades.reached.luma(i, j);
-            float kept =
-                reached > 0.0f ? std::min(1.0f, shades.blocked.luma(i, j) / reached) : 1.0f;
+            float kept = keptShare(shades, i, j);
             float lit = allLit.luma(i, j);
             float light = std::max(lit * (1.0f - kept), absoluteDrop);
             lost[std::size_t(j) * w + i] =

@@ -109,17 +109,6 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
 std::vector<float> mapTexelOnScreen(const ReferenceImage& ref, const Camera& camera,
                                     const glm::mat4& lightViewProjection, int mapSize);
 
-// Where a shadow can be seen at all: the reference's own shading (shadeReference, the scene's
-// material) with the light reaching the point and without it differ by more than `margin` times
-// the classifier's thresholds. Not so within a few degrees of a terminator, where the light adds
-// too little: there a correct shadow and a missing one render alike, so such a pixel is neither
-// false lit nor false shadow (it would otherwise count against every method). The margin keeps
-// pixels whose drop is only just over the threshold (a Gouraud pass, a student's Blinn) out too.
-std::vector<std::uint8_t> shadowVisiblePixels(const Scene& scene, const Camera& camera,
-                                              const ReferenceImage& ref,
-                                              const glm::vec3& lightPosition, float margin = 1.5f,
-                                              const ClassifyOptions& options = {});
-
 // The reference's own shading (shadeReference) of every pixel with the light reaching it and
 // with the light blocked: what a lit and a shadowed pixel should look like, per the lecture
 // (ambient always; diffuse and specular only where the light arrives).
@@ -128,7 +117,12 @@ struct ReferenceShades {
 };
 ReferenceShades referenceShades(const Scene& scene, const Camera& camera, const ReferenceImage& ref,
                                 const glm::vec3& lightPosition);
-// shadowVisiblePixels from shades already computed.
+// Where a shadow can be seen at all: the reference's own shading (`shades`, the scene's
+// material) with the light reaching the point and without it differ by more than `margin` times
+// the classifier's thresholds. Not so within a few degrees of a terminator, where the light adds
+// too little: there a correct shadow and a missing one render alike, so such a pixel is neither
+// false lit nor false shadow (it would otherwise count against every method). The margin keeps
+// pixels whose drop is only just over the threshold (a Gouraud pass, a student's Blinn) out too.
 std::vector<std::uint8_t> shadowVisiblePixels(const ReferenceShades& shades, float margin = 1.5f,
                                               const ClassifyOptions& options = {});
 

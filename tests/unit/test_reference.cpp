@@ -372,7 +372,8 @@ TEST(Reference, ShadowsAreVisibleOnlyWhereTheLightAddsEnough) {
         ReferenceImage ref = traceReference(s, s.camera, light, 64, 48, 1);
         EXPECT_EQ(ref.at(32, 24).objectId, objectId(0));
         EXPECT_TRUE(ref.at(32, 24).facesLight);
-        return shadowVisiblePixels(s, s.camera, ref, light)[std::size_t(24) * 64 + 32] != 0;
+        return shadowVisiblePixels(
+                   referenceShades(s, s.camera, ref, light))[std::size_t(24) * 64 + 32] != 0;
     };
     EXPECT_FALSE(visibleAtCentre({100, 1.7f, 0}));  // N.L = 0.017
     EXPECT_TRUE(visibleAtCentre({0, 5, 0}));        // N.L = 1
