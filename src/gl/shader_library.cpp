@@ -399,11 +399,20 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     glDetachShader(program.id(), vs.id());
     glDetachShader(program.id(), fs.id());
     requireKnownAttributes(program.id(), printableName(vert.files[0]));
+    // The student's files among `list`, each named once, joined with " + " ("" when none).
+    auto fromOverlay = [&](const std::string& f) {
+        return !overlay_.empty() && f.rfind(overlay_ + "/", 0) == 0;
+    };
+    auto studentNames = [&](const std::vector<std::string>& list) {
+        std::string names;
+        std::set<std::string> named;
+        for (const auto& f : list)
+            if (fromOverlay(f) && named.insert(f).second)
+                names += (names.empty() ? "" : " + ") + printableName(f);
+        return names;
+    };
     // A type mismatch names the student's file(s) of this program, or both when none is theirs.
-    std::string files;
-    for (const std::string* f : {&vert.files[0], &frag.files[0]})
-        if (!overlay_.empty() && f->rfind(overlay_ + "/", 0) == 0)
-            files += (files.empty() ? "" : " + ") + printableName(*f);
+    std::string files = studentNames({vert.files[0], frag.files[0]});
     if (files.empty()) files = printableName(vert.files[0]) + " + " + printableName(frag.files[0]);
 
     Entry e;
@@ -412,12 +421,7 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     e.files = vert.files;
     e.files.insert(e.files.end(), frag.files.begin(), frag.files.end());
     // Any file read from the overlay (a pass file or an include) makes it the student's program.
-    std::string student;
-    for (const auto& f : e.files)
-        if (!overlay_.empty() && f.rfind(overlay_ + "/", 0) == 0 &&
-            student.find(printableName(f)) == std::string::npos)
-            student += (student.empty() ? "" : " + ") + printableName(f);
-    e.program.setStudentFiles(student);
+    e.program.setStudentFiles(studentNames(e.files));
     // Each file of ours the overlay could replace is watched at its overlay name too (missing
     // now): a student's file that appears later, re-created after a delete or by an editor's
     // rename-and-write, is then picked up by reload like an edit.
@@ -432,8 +436,7 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     // the student's file dropped it, not that the stage sets it for other stages' shaders too
     // (every lit pass gets shadowMatrix; margin's never used it).
     for (const std::string* f : {&vert.files[0], &frag.files[0]})
-        if (!overlay_.empty() && f->rfind(overlay_ + "/", 0) == 0 &&
-            !sameContents(*f, root_ + "/" + f->substr(overlay_.size() + 1))) {
+        if (fromOverlay(*f) && !sameContents(*f, root_ + "/" + f->substr(overlay_.size() + 1))) {
             std::set<std::string> ours;
             for (const char* ext : {".vert", ".frag"})
                 declaredUniforms(root_, stage + "/" + pass + ext, 0, ours);
