@@ -2,6 +2,7 @@
 // the same run, with the accuracy figures of the same configuration; CSV, JSON and charts.
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <map>

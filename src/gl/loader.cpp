@@ -5,7 +5,7 @@
 namespace sl {
 
 bool loadGl(GlProcLoader loader) {
-    return gladLoadGL(reinterpret_cast<GLADloadfunc>(loader)) != 0;
+    return SHADOWLAB_GLAD_LOAD(loader) != 0;  // glad 0.1 or 2: cmake/glad.cmake
 }
 
 }  // namespace sl

@@ -1,5 +1,6 @@
 #include "gl/program.h"
 
+#include <algorithm>
 #include <iostream>
 #include <set>
 #include <vector>

@@ -3,6 +3,10 @@
 #include "platform/headless.h"
 
 #ifdef SHADOWLAB_HAVE_OSMESA
+// Mesa 22 declares OSMesa's functions GLAPIENTRY, Mesa 25 APIENTRY; glad defines neither.
+#ifndef APIENTRY
+#define APIENTRY GLAD_API_PTR
+#endif
 #ifndef GLAPIENTRY
 #define GLAPIENTRY APIENTRY
 #endif

@@ -1,5 +1,6 @@
 #include "platform/window_session.h"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdlib>

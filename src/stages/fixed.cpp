@@ -2,6 +2,7 @@
 // the light, copied into a depth texture with glCopyTexImage2D, eye-linear texture generation
 // with the texture matrix bias * P_light * V_light, GL_COMPARE_R_TO_TEXTURE, and two passes:
 // a dim ambient pass, then the lit pass whose shadowed fragments the alpha test discards.
+#include <algorithm>
 #include <chrono>
 #include <glm/gtc/type_ptr.hpp>
 

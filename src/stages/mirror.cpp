@@ -4,6 +4,7 @@
 // exact method beside it draws the scene reflected about the mirror's plane straight into the
 // image, masked to the mirror by the stencil buffer. Both reuse the hardware stage's shadow map,
 // so shadows show in the reflection as well.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,5 +1,6 @@
 #include "stages/shadow_stage.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <sstream>

@@ -2,6 +2,7 @@
 // through OSMesa and through EGL's surfaceless platform in the same process.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "platform/headless.h"

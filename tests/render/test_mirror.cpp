@@ -3,6 +3,7 @@
 // behind the mirror shows in it, the two methods agree, and odd views neither crash nor leak.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>

@@ -1,6 +1,7 @@
 // The baseline stage, rendered through real OSMesa contexts in both shader trees.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "render_fixture.h"
