@@ -1,24 +1,90 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages shadowlab needs, only those missing (apt-get; sudo when not root).
+# Installs the packages shadowlab needs on this system, only those missing (apt-get; sudo when
+# not root). Reads /etc/os-release: Debian 12, 13 and testing, Ubuntu 22.04 and 24.04 have their
+# package names below; any other system gets one message naming what to install.
+#   bash scripts/deps.sh          what building and running need (scripts/run.sh)
+#   bash scripts/deps.sh --test   also the fuzzer, sanitizer and valgrind packages (scripts/test.sh)
+#   bash scripts/deps.sh --print  print the package names for this system and install nothing
 set -euo pipefail
-packages=(cmake g++ make pkg-config python3 freeglut3-dev libx11-dev libosmesa6-dev libegl-dev libglm-dev
-          python3-glad libcli11-dev nlohmann-json3-dev libstb-dev libgtest-dev xvfb xauth xdotool gnuplot-nox
-          clang libclang-rt-14-dev valgrind)  # the last three: fuzzer and memory checks in CI
+mode=run
+for a in "$@"; do
+  case $a in
+    --test) mode=test ;;
+    --print) print=1 ;;
+    *) echo "deps: unknown option '$a' (--test, --print)" >&2; exit 2 ;;
+  esac
+done
+os_release=${SHADOWLAB_OS_RELEASE:-/etc/os-release}  # a test can point it elsewhere
+ID="" VERSION_ID="" VERSION_CODENAME="" PRETTY_NAME=""
+# shellcheck disable=SC1090
+[ -r "$os_release" ] && . "$os_release"
+
+# Building and running (the tests' configure step needs xvfb and xdotool too: ctest is built
+# with the program). The Mesa drivers are named: --no-install-recommends would leave out the
+# EGL and GLX vendors and llvmpipe itself.
+common=(cmake g++ make pkg-config python3 python3-glad libx11-dev libegl-dev libglm-dev
+        libcli11-dev nlohmann-json3-dev libstb-dev libgtest-dev xvfb xauth xdotool gnuplot-nox
+        libegl-mesa0 libglx-mesa0 libgl1-mesa-dri)
+# The course helper's archive library, when it lands, joins every list here (e.g. libzip-dev).
+course=()
+case "$ID:${VERSION_ID:-}" in
+  debian:12)
+    system="Debian 12"
+    run=(freeglut3-dev libosmesa6-dev)
+    test=(clang libclang-rt-14-dev valgrind) ;;
+  debian:13)
+    system="Debian 13"
+    run=(libglut-dev libosmesa6-dev)  # Mesa 25.0: the last with OSMesa
+    test=(clang libclang-rt-dev valgrind) ;;
+  debian:)  # testing and sid carry no VERSION_ID; Mesa 25.1 on has no OSMesa (EGL headless)
+    system="Debian testing ($VERSION_CODENAME)"
+    run=(libglut-dev)
+    test=(clang libclang-rt-dev valgrind) ;;
+  ubuntu:22.04)
+    system="Ubuntu 22.04"
+    run=(freeglut3-dev libosmesa6-dev)  # glad 0.1 and no glut.pc: CMakeLists.txt handles both
+    test=(clang libfuzzer-14-dev valgrind) ;;
+  ubuntu:24.04)
+    system="Ubuntu 24.04"
+    run=(libglut-dev)  # libosmesa6-dev only while the archive still has it (added below)
+    test=(clang libclang-rt-18-dev valgrind) ;;
+  *)
+    echo "deps: ${PRETTY_NAME:-this system} is not one deps.sh knows (Debian 12, 13, testing;" \
+         "Ubuntu 22.04, 24.04). Install by hand: CMake >= 3.20, a C++17 compiler, pkg-config," \
+         "python3 with glad (python3-glad), GLM, CLI11, nlohmann-json, stb, GoogleTest, freeglut," \
+         "X11, EGL with Mesa's llvmpipe (OSMesa optional), Xvfb, xauth, xdotool, gnuplot;" \
+         "for scripts/test.sh also clang with libFuzzer and valgrind." >&2
+    exit 1 ;;
+esac
+packages=("${common[@]}" "${run[@]}" "${course[@]}")
+[ "$mode" = test ] && packages+=("${test[@]}")
+if [ -n "${print:-}" ]; then
+  echo "${packages[*]}"
+  exit 0
+fi
+
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 missing=()
 for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  installed "$p" || missing+=("$p")
 done
-if [ ${#missing[@]} -eq 0 ]; then
-  echo "deps: all ${#packages[@]} packages present"
+optional=()
+[ "$system" = "Ubuntu 24.04" ] && ! installed libosmesa6-dev && optional+=(libosmesa6-dev)
+if [ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ]; then
+  echo "deps: $system, all ${#packages[@]} packages present"
   exit 0
 fi
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
-echo "deps: installing ${#missing[@]} packages: ${missing[*]}"
 # -q (not -qq, not >/dev/null): one line per download, unpack and set-up, so a first run that
 # takes minutes shows what it is doing.
-echo "deps: apt-get update"
+echo "deps: $system, apt-get update"
 $sudo apt-get update -q
+for p in "${optional[@]}"; do  # installed when the archive has it, else the build goes EGL-only
+  apt-cache show "$p" >/dev/null 2>&1 && missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && { echo "deps: $system, nothing to install"; exit 0; }
+echo "deps: installing ${#missing[@]} packages: ${missing[*]}"
 echo "deps: apt-get install (downloads, then one line per package set up)"
 DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 echo "deps: done"

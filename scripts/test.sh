@@ -5,7 +5,7 @@
 # shows every problem; the exit code is 1 if any failed.
 set -uo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/deps.sh || exit 1
+bash scripts/deps.sh --test || exit 1
 bash scripts/build.sh || exit 1
 failed=()
 step() {
