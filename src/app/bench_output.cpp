@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 #include "gl/gl.h"
+#include "io/box.h"
 #include "io/files.h"
 #include "metrics/image.h"
 #include "render/request.h"
@@ -69,7 +69,8 @@ std::string machineLine() {
         const GLubyte* s = glGetString(name);
         return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
     };
-    return std::to_string(std::thread::hardware_concurrency()) + " cores, " + text(GL_RENDERER) +
+    int cores = boxCores();  // the CPUs this process may use (affinity, cgroup quota)
+    return std::to_string(cores) + (cores == 1 ? " core, " : " cores, ") + text(GL_RENDERER) +
            ", GL " + text(GL_VERSION);
 }
 

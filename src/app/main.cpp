@@ -3,8 +3,10 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "io/box.h"
 
 int main(int argc, char** argv) {
+    sl::applyBoxThreads();  // before any GL context: llvmpipe sizes its threads once
     CLI::App app{"shadowlab: shadow maps and a planar mirror, stage by stage"};
     app.require_subcommand(1);
     std::vector<sl::Command> commands = {sl::addStagesCommand(app), sl::addRenderCommand(app),

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "io/box.h"
+
 namespace sl {
 
 namespace {
@@ -51,8 +53,12 @@ void addLimitOptions(CLI::App* app, Limits& limits) {
     app->add_option("--time-limit", limits.seconds,
                     "seconds one stage may take in its worker (default 30; 0 = no limit)")
         ->check(CLI::Range(0.0, 86400.0));
+    // Less than 2048 where the cgroup or ulimit -v is smaller (src/io/box.h).
+    limits.memoryMb = boxDefaultMemoryMb(limits.memoryMb);
     app->add_option("--memory-limit", limits.memoryMb,
-                    "address space of one stage's worker in MB (default 2048; 0 = no limit)")
+                    "address space of one stage's worker in MB (default 2048, less to fit a "
+                    "smaller cgroup or ulimit -v: here " +
+                        std::to_string(limits.memoryMb) + "; 0 = no limit)")
         ->check(CLI::Range(0L, 1L << 24));
 }
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "io/box.h"
+
 namespace sl {
 
 namespace {
@@ -272,7 +274,7 @@ ReferenceImage traceReference(const Scene& scene, const Camera& camera,
     image.mirrorObjectId = mirrorId(scene);
     image.pixels.resize(std::size_t(width) * height);
 
-    if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    if (threads <= 0) threads = boxCores();  // the CPUs this process may use
     threads = std::min(threads, height);
 
     // Every pixel is computed on its own, so which thread does a row cannot change the result.
