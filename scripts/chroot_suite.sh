@@ -25,7 +25,10 @@ fi
 repo=$(cd "$(dirname "$0")/.." && pwd)
 mirror=${SHADOWLAB_DEBIAN_MIRROR:-http://deb.debian.org/debian}
 cache=${SHADOWLAB_CHROOT_CACHE:-/var/cache/shadowlab-chroot}
-mkdir -p "$cache/debootstrap-$suite" "$cache/apt-$suite/partial"
+# The harness's compiler cache (not the README's steps): reruns build in a minute, not ten.
+# SHADOWLAB_CHROOT_CCACHE=0 builds as a fresh machine would.
+use_ccache=${SHADOWLAB_CHROOT_CCACHE:-1}
+mkdir -p "$cache/debootstrap-$suite" "$cache/apt-$suite/partial" "$cache/ccache-$suite"
 root=$(mktemp -d "/var/tmp/shadowlab-$suite.XXXXXX")
 mounted=()
 cleanup() {
@@ -67,11 +70,14 @@ mnt /dev --bind /dev
 mnt /dev/pts --bind /dev/pts
 mnt /dev/shm -t tmpfs tmpfs
 mnt /var/cache/apt/archives --bind "$cache/apt-$suite"
+mnt /root/.ccache --bind "$cache/ccache-$suite"
 git clone --quiet --no-hardlinks "$repo" "$root/root/shadowlab"
 say "chroot ready, $(git -C "$repo" rev-parse --short HEAD) cloned"
 
 envs=(/usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb
       PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin)  # a new user's shell
+[ "$use_ccache" = 1 ] && envs+=(CCACHE_DIR=/root/.ccache CCACHE_MAXSIZE=2G
+                                CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache)
 in_chroot() { chroot "$root" "${envs[@]}" bash -c "cd /root/shadowlab && $1"; }
 # Build and tests without the network: their own abstract sockets (X displays), no downloads.
 offline() { unshare --net chroot "$root" "${envs[@]}" bash -c "cd /root/shadowlab && $1"; }
@@ -79,6 +85,10 @@ in_chroot 'bash scripts/deps.sh' >"$root.deps.log" 2>&1 ||
   { tail -30 "$root.deps.log"; rm -f "$root.deps.log"; exit 1; }
 tail -1 "$root.deps.log"
 rm -f "$root.deps.log"
+if [ "$use_ccache" = 1 ]; then
+  in_chroot 'DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends ccache' \
+    >/dev/null || exit 3
+fi
 in_chroot 'grep ^PRETTY_NAME /etc/os-release; dpkg-query -W -f "\${Package} \${Version}\n" \
   g++ cmake libegl-mesa0 libosmesa6-dev python3-glad 2>/dev/null' || true
 say "deps installed"

@@ -31,15 +31,15 @@ case "$ID:${VERSION_ID:-}" in
   debian:12)
     system="Debian 12"
     run=(freeglut3-dev libosmesa6-dev)
-    test=(clang libclang-rt-14-dev valgrind) ;;
+    test=(clang libclang-rt-14-dev valgrind debootstrap) ;;  # debootstrap: CI's chroots
   debian:13)
     system="Debian 13"
     run=(libglut-dev libosmesa6-dev)  # Mesa 25.0: the last with OSMesa
-    test=(clang libclang-rt-dev valgrind) ;;
+    test=(clang libclang-rt-dev valgrind debootstrap) ;;
   debian:)  # testing and sid carry no VERSION_ID; Mesa 25.1 on has no OSMesa (EGL headless)
     system="Debian testing ($VERSION_CODENAME)"
     run=(libglut-dev)
-    test=(clang libclang-rt-dev valgrind) ;;
+    test=(clang libclang-rt-dev valgrind debootstrap) ;;
   ubuntu:22.04)
     system="Ubuntu 22.04"
     run=(freeglut3-dev libosmesa6-dev)  # glad 0.1 and no glut.pc: CMakeLists.txt handles both
