@@ -112,8 +112,9 @@ void applySets(const json& params, RenderRequest& r, const std::string& where) {
     if (!params.is_object()) throw UsageError(where + " must be an object of NAME: \"VALUE\"");
     for (const auto& [name, value] : params.items()) {
         if (!value.is_string()) throw UsageError(where + "." + name + " must be a string");
+        const std::string key = name;  // clang before 16 cannot capture a structured binding
         r.sets.erase(std::remove_if(r.sets.begin(), r.sets.end(),
-                                    [&](const auto& s) { return s.first == name; }),
+                                    [&](const auto& s) { return s.first == key; }),
                      r.sets.end());
         r.sets.emplace_back(name, value.get<std::string>());
     }
