@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Proves the README's commands on another Debian: makes a fresh debootstrap chroot of SUITE
 # (trixie = Debian 13, testing), copies a clean clone of this repository's HEAD in, and runs
-# there what scripts/test.sh runs on the host minus the host-only memory checks: deps.sh, the
-# build, the whole ctest. Every mount it makes is undone on any exit (failure, Ctrl-C included).
+# there what scripts/test.sh runs on the host minus the host-only memory checks: deps.sh --test,
+# the build, the whole ctest. Every mount it makes is undone on any exit (failure and Ctrl-C too).
 #   bash scripts/chroot_suite.sh trixie|testing      (root; needs debootstrap)
 # The .deb files are kept in $SHADOWLAB_CHROOT_CACHE (default /var/cache/shadowlab-chroot) so a
 # rerun downloads less; a machine without that folder simply downloads everything.
@@ -81,7 +81,8 @@ envs=(/usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb
 in_chroot() { chroot "$root" "${envs[@]}" bash -c "cd /root/shadowlab && $1"; }
 # Build and tests without the network: their own abstract sockets (X displays), no downloads.
 offline() { unshare --net chroot "$root" "${envs[@]}" bash -c "cd /root/shadowlab && $1"; }
-in_chroot 'bash scripts/deps.sh' >"$root.deps.log" 2>&1 ||
+# --test as scripts/test.sh does: ctest's bench_instructions needs valgrind.
+in_chroot 'bash scripts/deps.sh --test' >"$root.deps.log" 2>&1 ||
   { tail -30 "$root.deps.log"; rm -f "$root.deps.log"; exit 1; }
 tail -1 "$root.deps.log"
 rm -f "$root.deps.log"
