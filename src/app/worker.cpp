@@ -20,6 +20,7 @@
 #include <stdexcept>
 
 #include "gl/shader_library.h"
+#include "grade/bounds.h"
 #include "render/request.h"
 #include "scene/scene_json.h"
 #include "stages/expectations.h"
@@ -114,6 +115,10 @@ void writeAll(int fd, const std::string& text) {
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(125);  // the parent died before prctl
     applyLimits(limits, count - first);
+    // Mesa would keep every shader a submission compiles in ~/.cache/mesa_shader_cache: grading
+    // leaves nothing behind (and no student's cache entry serves another's).
+    ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+    ::setenv("MESA_GLSL_CACHE_DISABLE", "true", 1);  // Mesa before 21
     for (std::size_t k = first; k < count; ++k) {
         std::string line;
         bool stop = true;
@@ -126,7 +131,7 @@ void writeAll(int fd, const std::string& text) {
                 reply = {{"oom", true}};
             } catch (...) {
                 auto [kind, what] = classify(std::current_exception());
-                reply = {{"error", {{"kind", kind}, {"what", what}}}};
+                reply = {{"error", {{"kind", kind}, {"what", capped(what, kMaxErrorText)}}}};
             }
             line = reply.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
         } catch (const std::bad_alloc&) {
@@ -142,7 +147,11 @@ void writeAll(int fd, const std::string& text) {
     ::_exit(0);  // no destructors, no atexit: the parent owns everything else
 }
 
-enum class Read { Line, EndOfFile, Deadline };
+enum class Read { Line, EndOfFile, Deadline, TooLong };
+
+// A job's reply is a few kilobytes a row (messages are capped in the worker): a reply past this
+// is not read on, so the parent stays small whatever the worker does.
+constexpr std::size_t kMaxReplyBytes = 64u << 20;
 
 // The next line from the worker into `line`, or why there is none.
 Read nextLine(int fd, std::string& buffer, const std::optional<Clock::time_point>& deadline,
@@ -172,6 +181,8 @@ Read nextLine(int fd, std::string& buffer, const std::optional<Clock::time_point
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) return Read::EndOfFile;  // the child exited (a partial line is no result)
         buffer.append(chunk, static_cast<std::size_t>(n));
+        if (buffer.size() > kMaxReplyBytes && buffer.find('\n') == std::string::npos)
+            return Read::TooLong;
     }
 }
 
@@ -238,6 +249,7 @@ std::string WorkerOutcome::detail() const {
         case Kind::Crash:
             return outOfMemory ? "ran out of memory" : "killed by " + signalName(signal);
         case Kind::Failed:
+            if (tooLong) return "sent a result of more than 64 MB";
             return "exited with code " + std::to_string(exitCode) + " without a result";
         case Kind::Error:
             return errorWhat;
@@ -389,6 +401,10 @@ void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& 
                 }
             } else if (read == Read::Deadline) {
                 out.kind = WorkerOutcome::Kind::Timeout;  // ~Worker kills it
+            } else if (read == Read::TooLong) {
+                out.kind = WorkerOutcome::Kind::Failed;  // ~Worker kills it
+                out.exitCode = -1;
+                out.tooLong = true;
             } else {
                 bool killed = false;
                 int status = worker.finish(deadlineFrom(Clock::now(), limits), killed);

@@ -32,6 +32,7 @@ struct WorkerOutcome {
     int signal = 0;    // Crash by a signal
     int exitCode = 0;  // Failed
     bool outOfMemory = false;
+    bool tooLong = false;              // Failed: its reply passed the parent's bound
     std::string errorKind, errorWhat;  // Error
     double seconds = 0;
     // "killed by SIGSEGV", "ran out of memory", "exited with code 1 without a result", ...

@@ -52,6 +52,10 @@ class ShaderLibrary {
         std::string refused;  // why the path is not allowed ("" when it is)
     };
     Found find(const std::string& relative) const;
+
+    // The overlay's files (relative names, sorted) read by the programs of `stage` built so far:
+    // pass files and includes, what a report row lists as the student's.
+    std::vector<std::string> overlayFiles(const std::string& stage) const;
     std::string resolve(const std::string& relative) const;  // find(relative).shown
 
   private:
