@@ -307,9 +307,15 @@ Submission takeSubmission(const std::string& folder, const std::string& privateD
         s.notes.push_back("and " + std::to_string(more) + " more files not used");
     }
     if (!replacesAny) {
+        std::string example = "margin/lit.frag";  // the graded stage's own file when it has one
+        for (const std::string& f : shipped)
+            if (!stages.empty() && stageOf(f) == stages.front() &&
+                (example.rfind(stages.front() + "/", 0) != 0 || baseName(f) == "lit.frag"))
+                example = f;
         std::string line = printableName(s.source) +
                            ": no file replaces a shipped shader (a stage's files go in "
-                           "<stage>/, e.g. margin/lit.frag)";
+                           "<stage>/, e.g. " +
+                           example + ")";
         if (!misses.empty()) line += "; " + misses.front();
         throw IntakeError(line);
     }
