@@ -63,10 +63,20 @@ void refuseOutputClashes(const CheckArgs& a, const std::string& overlay) {
                 throw UsageError(outputs[i].first + " and " + outputs[j].first + ": both are '" +
                                  printableName(outputs[j].second) + "'; give each its own path");
     if (overlay.empty()) return;
-    std::string root = canonicalOutput(overlay);
+    // As written and as resolved: a link the student planted in the folder resolves elsewhere
+    // (another student's folder) and is refused for where it is written.
+    auto lexical = [](const std::string& p) {
+        std::error_code ec;
+        return std::filesystem::absolute(p, ec).lexically_normal().string();
+    };
+    auto inside = [](const std::string& p, const std::string& root) {
+        std::string r =
+            root.size() > 1 && root.back() == '/' ? root.substr(0, root.size() - 1) : root;
+        return p == r || p.rfind(r + "/", 0) == 0;
+    };
     for (const auto& [option, path] : outputs) {
-        std::string c = canonicalOutput(path);
-        if (c == root || c.rfind(root + "/", 0) == 0)
+        if (inside(canonicalOutput(path), canonicalOutput(overlay)) ||
+            inside(lexical(path), lexical(overlay)))
             throw UsageError(option + " '" + printableName(path) +
                              "' lies inside the submission folder '" + printableName(overlay) +
                              "'; write outputs outside it");

@@ -151,7 +151,7 @@ enum class Read { Line, EndOfFile, Deadline, TooLong };
 
 // A job's reply is a few kilobytes a row (messages are capped in the worker): a reply past this
 // is not read on, so the parent stays small whatever the worker does.
-constexpr std::size_t kMaxReplyBytes = 64u << 20;
+constexpr std::size_t kMaxReplyBytes = 16u << 20;
 
 // The next line from the worker into `line`, or why there is none.
 Read nextLine(int fd, std::string& buffer, const std::optional<Clock::time_point>& deadline,
@@ -249,7 +249,7 @@ std::string WorkerOutcome::detail() const {
         case Kind::Crash:
             return outOfMemory ? "ran out of memory" : "killed by " + signalName(signal);
         case Kind::Failed:
-            if (tooLong) return "sent a result of more than 64 MB";
+            if (tooLong) return "sent a result of more than 16 MB";
             return "exited with code " + std::to_string(exitCode) + " without a result";
         case Kind::Error:
             return errorWhat;
