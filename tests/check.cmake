@@ -134,3 +134,9 @@ set_tests_properties(example_mirror_exercise PROPERTIES LABELS example
 add_test(NAME check_peers
          COMMAND sh -c "for g in core legacy; do ${SL_EXE} check --stage peers --glsl $g --report ${SL_CHECK_DIR}/peers-learnopengl-$g.json && ${SL_EXE} check --stage peers --glsl $g --set method=opengl-tutorial --report ${SL_CHECK_DIR}/peers-tutorial-$g.json && ${SL_EXE} check --stage peers --glsl $g --set method=normal-offset --set casters=casters-only --report ${SL_CHECK_DIR}/peers-normal-$g.json && ${SL_EXE} check --stage hardware --glsl $g --set filter=pcf3x3 --report ${SL_CHECK_DIR}/hardware-pcf3x3-$g.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/peers-tutorial-$g.json --exit 0 --verdict peers/$g=PASS --figure peers/$g:false_shadow_pct:gt:5 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/peers-normal-$g.json --exit 0 --figure peers/$g:false_shadow_pct:lt:1 || exit 1; done")
 set_tests_properties(check_peers PROPERTIES LABELS check TIMEOUT 300)
+
+# Mesa's shader cache: a GL program of ours outside a worker (test_phong) fills XDG_CACHE_HOME,
+# so the cache is on here; check and render, whose GL work runs in workers, leave nothing there.
+add_test(NAME check_no_shader_cache
+         COMMAND sh -c "H=$(mktemp -d) && env -u MESA_SHADER_CACHE_DISABLE XDG_CACHE_HOME=$H/on $<TARGET_FILE:test_phong> --gtest_filter='Phong.*' >/dev/null && test -n \"$(find $H/on -type f)\" && env -u MESA_SHADER_CACHE_DISABLE XDG_CACHE_HOME=$H/off ${SL_EXE} check --stage margin --size 160x120 --shaders ${CMAKE_CURRENT_SOURCE_DIR}/students/layout_zip_wrapper/submission >/dev/null 2>&1 && env -u MESA_SHADER_CACHE_DISABLE XDG_CACHE_HOME=$H/off ${SL_EXE} render --stage margin --size 160x120 --out $H/x.png >/dev/null && test -z \"$(find $H/off -type f 2>/dev/null)\"; r=$?; rm -rf $H; exit $r")
+set_tests_properties(check_no_shader_cache PROPERTIES LABELS check TIMEOUT 300)
