@@ -192,6 +192,9 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         return r;
     }
     r.studentFiles = renderer.shaders().overlayFiles(r.stage);
+    for (const std::string& n : renderer.shaders().unsetUniformNotes(r.stage))
+        r.note += (r.note.empty() ? "" : "; ") + n;
+    r.note = capped(r.note, kMaxRowMessage);
     if (!r.expectation.entry) {  // a stage or tree the data file does not cover: nothing to judge
         r.judgement = {Verdict::Skip,
                        "no entry in " + expectationsPath() + " for this stage and tree"};

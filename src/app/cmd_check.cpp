@@ -438,6 +438,7 @@ int runCheckCommand(const CheckArgs& a) {
         results.back().overlay = base.overlay;
         printRow(results.back());
     }
+    std::set<std::string> saidNotes;
     bool platformFailure = false;
     checkInWorkers(plan, diffPath, backend, a.limits, platformFailure,
                    [&](std::size_t, std::vector<CheckResult> stageResults) {
@@ -458,7 +459,9 @@ int runCheckCommand(const CheckArgs& a) {
                                                                              : GlslTree::Core]);
                            }
                            printRow(result);
-                           if (!result.note.empty())
+                           // A note (an unset uniform) holds for every row of the stage:
+                           // said once.
+                           if (!result.note.empty() && saidNotes.insert(result.note).second)
                                std::cerr << "shadowlab: note: " << result.note << "\n";
                            results.push_back(std::move(result));
                        }

@@ -461,6 +461,18 @@ std::vector<std::string> ShaderLibrary::overlayFiles(const std::string& stage) c
     return {names.begin(), names.end()};
 }
 
+std::vector<std::string> ShaderLibrary::unsetUniformNotes(const std::string& stage) {
+    std::vector<std::string> notes;
+    for (auto& [key, entry] : programs_) {
+        if (key.rfind(stage + "/", 0) != 0) continue;
+        for (const std::string& u : entry.program.uniformsNeverSet())
+            notes.push_back("pass " + key + " (your shader) uses uniform '" + printableName(u) +
+                            "', which the stage never sets in that pass: it keeps its initial "
+                            "value (0 unless the shader gives one)");
+    }
+    return notes;
+}
+
 Program& ShaderLibrary::program(const std::string& stage, const std::string& pass) {
     std::string key = stage + "/" + pass;
     auto it = programs_.find(key);
