@@ -105,6 +105,25 @@ def many_files(h, count):
     return h.student(files)
 
 
+def link_mismatch(h):
+    """margin/lit.frag takes worldNormal as a vec4; our lit.vert writes a vec3: a link error."""
+    lit = h.shipped("margin/lit.frag").replace(b"in vec3 worldNormal;", b"in vec4 worldNormal;")
+    lit = lit.replace(b"normalize(worldNormal)", b"normalize(worldNormal.xyz)")
+    lit = lit.replace(b"worldNormal, visibility", b"worldNormal.xyz, visibility")
+    return h.student({"margin/lit.frag": lit})
+
+
+def report_message_names(*parts):
+    """Every row of {tmp}/report.json names each of `parts` in its message."""
+    def check(tmp, p):
+        import json
+        with open(os.path.join(tmp, "report.json")) as f:
+            rows = json.load(f)["results"]
+        return [f"a row's message lacks '{part}': {r['message'][:200]}"
+                for r in rows for part in parts if part not in r["message"]]
+    return check
+
+
 def intake_cases(h):
     Case = h.Case
     cases = [
@@ -119,6 +138,11 @@ def intake_cases(h):
              SMALL_CHECK + " --report {tmp}/report.json --junit {tmp}/junit.xml", timeout=60,
              one_line=False, setup=long_error_include(h),
              check=files_small("report.json", "junit.xml")),
+        Case("a link error names both files in the report", 2, "program did not link",
+             SMALL_CHECK + " --report {tmp}/report.json", timeout=30, one_line=False,
+             setup=link_mismatch(h),
+             check=report_message_names("shaders_core/margin/lit.vert + ",
+                                        "student/margin/lit.frag: program did not link: ")),
         Case("--report and --junit the same file", 2, "--report and --junit: both are",
              SMALL_CHECK + " --report {tmp}/r.out --junit {tmp}/r.out", timeout=20,
              setup=h.student({"margin/lit.frag": h.shipped("margin/lit.frag")})),
