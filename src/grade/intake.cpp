@@ -131,6 +131,17 @@ void copyTree(Walk& w, int fd, const std::string& rel, int outFd, int depth) {
             continue;
         }
         const bool shipped = w.shipped->count(path) > 0;
+        // A hard link is a second name of a file that may live anywhere (another student's
+        // work, a secret): copied, it would lose that mark, so it is refused as the loader does.
+        if (st.st_nlink > 1) {
+            std::string why =
+                std::to_string(st.st_nlink) +
+                " hard links; a file in the shader folder must have one name (copy it)";
+            if (shipped)
+                throw IntakeError(printableName(joinRel(w.shownRoot, path)) + ": has " + why);
+            w.skipped.push_back("`" + printableName(path) + "` was not used: it has " + why);
+            continue;
+        }
         if (static_cast<std::size_t>(st.st_size) > kMaxFileBytes) {
             if (shipped)
                 throw IntakeError(

@@ -143,6 +143,13 @@ def intake_cases(h):
              setup=link_mismatch(h),
              check=report_message_names("shaders_core/margin/lit.vert + ",
                                         "student/margin/lit.frag: program did not link: ")),
+        Case("an include that is a hard link to the secret (check)", 2, "has 2 hard links",
+             SMALL_CHECK + " --report {tmp}/report.json", timeout=30, one_line=False,
+             check=h.no_secret,
+             setup=h.chain(h.student({"margin/lit.frag": h.shipped("margin/lit.frag").replace(
+                 b'#include "common/phong.glsl"\n',
+                 b'#include "common/phong.glsl"\n#include "common/h.glsl"\n')}),
+                 h.hard_links("common/h.glsl"))),
         Case("--report and --junit the same file", 2, "--report and --junit: both are",
              SMALL_CHECK + " --report {tmp}/r.out --junit {tmp}/r.out", timeout=20,
              setup=h.student({"margin/lit.frag": h.shipped("margin/lit.frag")})),

@@ -146,6 +146,20 @@ TEST(Intake, LinksAndSpecialFilesAreNotFollowed) {
     EXPECT_FALSE(fs::exists(s.root + "/margin/lit.vert"));
 }
 
+TEST(Intake, HardLinksAreRefused) {
+    Folder secret;
+    std::string target = secret.put("secret.txt", "the answer\n");
+    Folder f;
+    f.put("margin/lit.frag");
+    fs::create_directories(f.path() + "/common");
+    fs::create_hard_link(target, f.path() + "/common/extra.glsl");
+    Submission s = take(f);
+    EXPECT_EQ(s.files, (std::vector<std::string>{"margin/lit.frag"}));
+    EXPECT_TRUE(hasNote(s, "`common/extra.glsl` was not used: it has 2 hard links"));
+    fs::create_hard_link(target, f.path() + "/margin/lit.vert");  // a shader's own name
+    EXPECT_NE(intakeError(f).find("margin/lit.vert: has 3 hard links"), std::string::npos);
+}
+
 TEST(Intake, BoundsAreOneLine) {
     Folder big;
     big.put("margin/lit.frag", std::string((1u << 20) + 1, 'x'));
