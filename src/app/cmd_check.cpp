@@ -438,6 +438,9 @@ int runCheckCommand(const CheckArgs& a) {
         results.back().overlay = base.overlay;
         printRow(results.back());
     }
+    // Mesa's shader cache for this run's workers: private, gone with the run.
+    PrivateDir shaderCache("shadowlab-shader-cache");
+    useShaderCacheFolder(shaderCache.path());
     std::set<std::string> saidNotes;
     bool platformFailure = false;
     checkInWorkers(plan, diffPath, backend, a.limits, platformFailure,

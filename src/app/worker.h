@@ -57,6 +57,10 @@ using SeriesJob = std::function<nlohmann::json(std::size_t)>;
 void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& job,
                       const std::function<void(std::size_t, const WorkerOutcome&)>& done);
 
+// Workers started after this keep Mesa's shader cache in `folder` (a private one the caller
+// removes); "" (the default): no shader cache at all. Never the user's ~/.cache.
+void useShaderCacheFolder(const std::string& folder);
+
 // "30 s" or "no time limit"; "2048 MB" or "no memory limit".
 std::string timeLimitText(const Limits& limits);
 std::string memoryLimitText(const Limits& limits);
