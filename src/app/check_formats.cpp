@@ -67,7 +67,12 @@ std::string checkTestOutput(const CheckResult& r) {
         out << "expected: " << r.expectation.entry->outcome << " (entry '"
             << r.expectation.entry->label() << "', matched "
             << (r.expectation.exact ? "exactly" : "by the defaults") << ")\n";
-    if (!r.error) {
+    if (!r.missing) {
+        out << "student files:";
+        for (const std::string& f : r.studentFiles) out << " " << f;
+        out << (r.studentFiles.empty() ? " none\n" : "\n");
+    }
+    if (!r.error && !r.missing) {
         out << "figures:";
         for (const auto& [name, value] : r.figureMap())
             out << " " << name << " " << figureText(value);
@@ -81,13 +86,14 @@ std::string checkTestOutput(const CheckResult& r) {
 nlohmann::json gradescopeJson(const std::vector<CheckResult>& results, double seconds) {
     nlohmann::json tests = nlohmann::json::array();
     double score = 0;
-    int pass = 0, fail = 0, errors = 0, skipped = 0;
+    int pass = 0, fail = 0, errors = 0, skipped = 0, missing = 0;
     for (const CheckResult& r : results) {
         bool skip = !r.error && r.judgement.verdict == Verdict::Skip;
         double max = skip ? 0.0 : 1.0;
         double got = passed(r) && !skip ? 1.0 : 0.0;
         score += got;
-        (r.error ? errors : skip ? skipped : passed(r) ? pass : fail)++;
+        // MISSING: the stage's points are there to be had, and none were handed in.
+        (r.error ? errors : r.missing ? missing : skip ? skipped : passed(r) ? pass : fail)++;
         nlohmann::json figures = nlohmann::json::object();
         for (const auto& [name, value] : r.figureMap())
             figures[name] = std::isnan(value) ? nlohmann::json() : nlohmann::json(value);
@@ -105,8 +111,8 @@ nlohmann::json gradescopeJson(const std::vector<CheckResult>& results, double se
     }
     std::ostringstream summary;
     summary << "shadowlab check: " << results.size() << " checks, " << pass << " passed, " << fail
-            << " failed, " << errors << " errors (ERROR, TIMEOUT, CRASH), " << skipped
-            << " skipped";
+            << " failed, " << missing << " missing, " << errors
+            << " errors (ERROR, TIMEOUT, CRASH), " << skipped << " skipped";
     return {{"score", score},
             {"execution_time", static_cast<long>(std::lround(seconds))},
             {"output", summary.str()},
@@ -157,8 +163,8 @@ std::string junitXml(const std::vector<CheckResult>& results, double seconds) {
                   << output << "</error>\n";
         } else if (r.judgement.verdict == Verdict::Fail) {
             ++failures;
-            cases << "      <failure type=\"FAIL\" message=\"" << message << "\">" << output
-                  << "</failure>\n";
+            cases << "      <failure type=\"" << r.verdict() << "\" message=\"" << message << "\">"
+                  << output << "</failure>\n";
         } else if (r.judgement.verdict == Verdict::Skip) {
             ++skipped;
             cases << "      <skipped message=\"" << message << "\"/>\n";

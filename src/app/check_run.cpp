@@ -10,6 +10,8 @@
 #include "app/bench_output.h"
 #include "app/check_formats.h"
 #include "app/options.h"
+#include "grade/bounds.h"
+#include "io/files.h"
 #include "metrics/shadow_metrics.h"
 #include "stages/stage.h"
 
@@ -44,8 +46,11 @@ std::string errorLine(const std::string& text) {
     std::istringstream in(text);
     std::string first, line;
     std::getline(in, first);
+    // A link error's first line names both files ("a.vert + b.frag: program did not link:"),
+    // the driver's line does not: keep both.
+    std::string prefix = first.find("did not link") != std::string::npos ? first + " " : "";
     while (std::getline(in, line))
-        if (line.find("error") != std::string::npos) return line;
+        if (line.find("error") != std::string::npos) return prefix + line;
     return first;
 }
 
@@ -176,14 +181,20 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         // A GL error while a student's program drew is theirs (ERROR), else the platform's.
         throwGlFailure(!SL_CHECK_GL(), "the check of stage " + r.stage);
     } catch (const ShaderError& e) {
-        std::cerr << "shadowlab: shader error: " << e.what()
-                  << (std::string(e.what()).back() == '\n' ? "" : "\n");
+        std::string text = capped(e.what(), kMaxErrorText);
+        std::cerr << "shadowlab: shader error: " << text << (text.back() == '\n' ? "" : "\n");
+        r.studentFiles = renderer.shaders().overlayFiles(r.stage);
         rig.reset();
         r.error = true;
-        r.judgement = {Verdict::Fail, "shader error: " + errorLine(e.what())};
+        r.judgement = {Verdict::Fail,
+                       capped("shader error: " + errorLine(e.what()), kMaxRowMessage)};
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
     }
+    r.studentFiles = renderer.shaders().overlayFiles(r.stage);
+    for (const std::string& n : renderer.shaders().unsetUniformNotes(r.stage))
+        r.note += (r.note.empty() ? "" : "; ") + n;
+    r.note = capped(r.note, kMaxRowMessage);
     if (!r.expectation.entry) {  // a stage or tree the data file does not cover: nothing to judge
         r.judgement = {Verdict::Skip,
                        "no entry in " + expectationsPath() + " for this stage and tree"};
@@ -248,6 +259,7 @@ nlohmann::json checkJson(const CheckResult& r) {
         {"pixels",
          {{"evaluated", r.evaluated}, {"truth_lit", r.truthLit}, {"truth_shadow", r.truthShadow}}},
         {"expectation", expectation},
+        {"student_files", r.studentFiles},
         {"verdict", r.verdict()},
         {"message", r.judgement.message},
         {"diff", r.diffFile.empty() ? nlohmann::json() : nlohmann::json(r.diffFile)},
@@ -333,6 +345,9 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
             r.judgement.verdict = verdict == "PASS"   ? Verdict::Pass
                                   : verdict == "FAIL" ? Verdict::Fail
                                                       : Verdict::Skip;
+        } else if (verdict == "MISSING") {
+            r.missing = true;
+            r.judgement.verdict = Verdict::Fail;
         } else if (verdict == "ERROR" || verdict == "TIMEOUT" || verdict == "CRASH") {
             r.error = true;
             r.errorVerdict = verdict;
@@ -341,6 +356,8 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
             throw std::invalid_argument("unknown verdict '" + verdict + "'");
         }
         r.judgement.message = j.at("message").get<std::string>();
+        if (j.contains("student_files"))
+            r.studentFiles = j["student_files"].get<std::vector<std::string>>();
         r.diffFile = textOrEmpty(j.at("diff"));
         if (j.contains("note")) r.note = textOrEmpty(j["note"]);
         r.seconds = j.at("seconds").get<double>();
@@ -348,6 +365,12 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
     } catch (const nlohmann::json::exception& e) {
         throw std::invalid_argument(std::string("a check result: ") + e.what());
     }
+}
+
+void boundResult(CheckResult& r) {
+    r.judgement.message = capped(r.judgement.message, kMaxRowMessage);
+    r.note = capped(r.note, kMaxRowMessage);
+    r.studentFiles = cappedList(r.studentFiles);
 }
 
 }  // namespace sl

@@ -28,12 +28,18 @@ struct CheckResult {
     // that ran out of time ("TIMEOUT") or died ("CRASH"). judgement.message says why.
     bool error = false;
     std::string errorVerdict = "ERROR";
-    std::string diffFile;          // the diff image written, or ""
-    std::string note;              // e.g. why no diff image was written
+    // No file of the stage's own (`<stage>/...`) came from the submission: never graded as ours,
+    // never PASS (judgement.verdict is Fail, the message names the files expected).
+    bool missing = false;
+    std::vector<std::string> studentFiles;  // the submission's files this row used (relative)
+    std::string diffFile;                   // the diff image written, or ""
+    std::string note;                       // e.g. why no diff image was written
     std::string backend, machine;  // the headless backend, machineLine() of the context used
     double seconds = 0;
 
-    std::string verdict() const { return error ? errorVerdict : verdictName(judgement.verdict); }
+    std::string verdict() const {
+        return missing ? "MISSING" : error ? errorVerdict : verdictName(judgement.verdict);
+    }
     std::map<std::string, double> figureMap() const;
 };
 
@@ -74,5 +80,9 @@ nlohmann::json checkJson(const CheckResult& r);
 // the same JSON. The expectation is found again in expectations() by its label. backend and
 // machine are not in the JSON and stay empty. Throws std::invalid_argument on a malformed one.
 CheckResult checkResultFromJson(const nlohmann::json& j);
+
+// The same result with its message and note within kMaxRowMessage and its file list within
+// kMaxListedFiles (src/grade/bounds.h): whatever a worker sends, a row stays small.
+void boundResult(CheckResult& r);
 
 }  // namespace sl

@@ -13,13 +13,17 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
+#include <set>
 
 #include "app/bench_output.h"
 #include "app/check_formats.h"
 #include "app/check_run.h"
 #include "app/commands.h"
 #include "app/worker.h"
+#include "grade/bounds.h"
+#include "grade/intake.h"
 #include "io/files.h"
 #include "scene/scene_json.h"
 #include "stages/stage.h"
@@ -32,8 +36,52 @@ struct CheckArgs {
     CommonOptions common;
     Limits limits;
     std::string stage, report, diff, diffDir, junit, format = "json";
-    bool all = false, glslGiven = false;
+    bool all = false, glslGiven = false, shadersGiven = false;
 };
+
+std::string canonicalOutput(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::path absolute = fs::absolute(path, ec);
+    fs::path c = fs::weakly_canonical(absolute, ec);
+    return (ec ? absolute.lexically_normal() : c).string();
+}
+
+// Output paths that would overwrite one another, or write into the student's folder (where a
+// planted link could point anywhere, and a report would become part of the submission), are
+// refused before any work: one line, exit 2.
+void refuseOutputClashes(const CheckArgs& a, const std::string& overlay) {
+    std::vector<std::pair<std::string, std::string>> outputs;  // option, path
+    for (const auto& [option, path] : {std::pair<std::string, std::string>{"--report", a.report},
+                                       {"--junit", a.junit},
+                                       {"--diff", a.diff},
+                                       {"--diff-dir", a.diffDir}})
+        if (!path.empty()) outputs.emplace_back(option, path);
+    for (std::size_t i = 0; i < outputs.size(); ++i)
+        for (std::size_t j = i + 1; j < outputs.size(); ++j)
+            if (canonicalOutput(outputs[i].second) == canonicalOutput(outputs[j].second))
+                throw UsageError(outputs[i].first + " and " + outputs[j].first + ": both are '" +
+                                 printableName(outputs[j].second) + "'; give each its own path");
+    if (overlay.empty()) return;
+    // As written and as resolved: a link the student planted in the folder resolves elsewhere
+    // (another student's folder) and is refused for where it is written.
+    auto lexical = [](const std::string& p) {
+        std::error_code ec;
+        return std::filesystem::absolute(p, ec).lexically_normal().string();
+    };
+    auto inside = [](const std::string& p, const std::string& root) {
+        std::string r =
+            root.size() > 1 && root.back() == '/' ? root.substr(0, root.size() - 1) : root;
+        return p == r || p.rfind(r + "/", 0) == 0;
+    };
+    for (const auto& [option, path] : outputs) {
+        if (inside(canonicalOutput(path), canonicalOutput(overlay)) ||
+            inside(lexical(path), lexical(overlay)))
+            throw UsageError(option + " '" + printableName(path) +
+                             "' lies inside the submission folder '" + printableName(overlay) +
+                             "'; write outputs outside it");
+    }
+}
 
 bool declares(const StageInfo& info, const std::string& param) {
     for (const ParamSpec& p : info.params)
@@ -88,11 +136,13 @@ std::vector<RenderRequest> allRequests(const CheckArgs& a, const RenderRequest& 
 
 nlohmann::json reportJson(const std::vector<CheckResult>& results, int exitCode, double seconds,
                           const std::string& backend, const std::string& machine) {
-    int passed = 0, failed = 0, skipped = 0, errors = 0;
+    int passed = 0, failed = 0, skipped = 0, errors = 0, missing = 0;
     nlohmann::json list = nlohmann::json::array();
     for (const auto& r : results) {
         list.push_back(checkJson(r));
-        if (r.error)
+        if (r.missing)
+            ++missing;
+        else if (r.error)
             ++errors;
         else if (r.judgement.verdict == Verdict::Pass)
             ++passed;
@@ -111,6 +161,7 @@ nlohmann::json reportJson(const std::vector<CheckResult>& results, int exitCode,
               {"failed", failed},
               {"skipped", skipped},
               {"errors", errors},
+              {"missing", missing},
               {"exit_code", exitCode},
               {"seconds", seconds}}},
             {"results", list}};
@@ -157,23 +208,55 @@ std::string firstLine(const std::string& text) {
 // The result of a stage whose worker ran out of time or died: TIMEOUT or CRASH, an error of the
 // submission (exit 2), with the one line that names the stage and the limit. A stage whose job
 // threw is ERROR with what it threw: the other stages are still graded, the report written.
-CheckResult unjudgedResult(const RenderRequest& r, const WorkerOutcome& outcome,
-                           const Limits& limits) {
+// A row for a stage that was not rendered: its settings, scene and expectation, nothing measured.
+CheckResult unrenderedResult(const RenderRequest& r) {
     CheckResult out = checkResultFor(r);
     if (const StageInfo* info = findStage(r.stage)) out.parameters = ParamSet(info->params);
     for (const auto& [name, value] : r.sets) out.parameters.set(name, value);
     describeUnrendered(r, out);
     out.expectation =
         findExpectation(expectations(), out.stage, out.scene, out.tree, out.parameters);
+    return out;
+}
+
+std::string joined(const std::vector<std::string>& items) {
+    std::string out;
+    for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+    return out;
+}
+
+// The row of a stage none of whose own files came from the submission: MISSING, with the files
+// it expected. `expected` empty: a stage with no shaders (fixed function), not to be handed in.
+CheckResult missingResult(const RenderRequest& r, const std::vector<std::string>& expected,
+                          const std::string& folder) {
+    CheckResult out = unrenderedResult(r);
+    if (expected.empty()) {
+        out.judgement = {Verdict::Skip, "stage " + r.stage +
+                                            " has no shaders to hand in (fixed function): "
+                                            "not graded with --shaders"};
+        return out;
+    }
+    out.missing = true;
+    out.judgement = {Verdict::Fail,
+                     capped("no file of stage " + r.stage + " came from " + printableName(folder) +
+                                ": expected one or more of " + joined(expected),
+                            kMaxRowMessage)};
+    return out;
+}
+
+CheckResult unjudgedResult(const RenderRequest& r, const WorkerOutcome& outcome,
+                           const Limits& limits) {
+    CheckResult out = unrenderedResult(r);
     out.error = true;
     out.errorVerdict = outcome.kind == WorkerOutcome::Kind::Timeout ? "TIMEOUT"
                        : outcome.kind == WorkerOutcome::Kind::Error ? "ERROR"
                                                                     : "CRASH";
-    out.judgement = {
-        Verdict::Fail,
-        outcome.kind == WorkerOutcome::Kind::Error
-            ? printableName(firstLine(jobErrorText(out, outcome)))
-            : workerFailureLine("stage " + out.stage + " (" + out.tree + ")", outcome, limits)};
+    out.judgement = {Verdict::Fail,
+                     capped(outcome.kind == WorkerOutcome::Kind::Error
+                                ? printableName(firstLine(jobErrorText(out, outcome)))
+                                : workerFailureLine("stage " + out.stage + " (" + out.tree + ")",
+                                                    outcome, limits),
+                            kMaxRowMessage)};
     out.seconds = outcome.seconds;
     return out;
 }
@@ -213,9 +296,10 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
             // Not the submission's fault (ours or the machine's): exit 3 once the report is out.
             if (outcome.kind == WorkerOutcome::Kind::Error && outcome.errorKind == "runtime")
                 platformFailure = true;
-            std::string text = outcome.kind == WorkerOutcome::Kind::Error
-                                   ? printable(jobErrorText(results.back(), outcome))
-                                   : results.back().judgement.message;
+            std::string text =
+                outcome.kind == WorkerOutcome::Kind::Error
+                    ? capped(printable(jobErrorText(results.back(), outcome)), kMaxErrorText)
+                    : results.back().judgement.message;
             std::cerr << "shadowlab: " << text << (text.back() == '\n' ? "" : "\n");
         } else {
             for (const auto& j : outcome.value.at("results")) {
@@ -240,6 +324,9 @@ int runCheckCommand(const CheckArgs& a) {
         throw UsageError("--format: '" + a.format + "' is not one of json, gradescope");
     if (a.format != "json" && a.report.empty())
         throw UsageError("--format " + a.format + ": give --report FILE to write it to");
+    if (a.shadersGiven && a.common.shaders.empty())
+        throw UsageError("--shaders: empty; give the student's folder (its files replace ours)");
+    refuseOutputClashes(a, a.common.shaders);
     if (!a.report.empty()) checkOutputPath("--report", a.report);
     if (!a.diff.empty()) checkOutputPath("--diff", a.diff);
     if (!a.junit.empty()) checkOutputPath("--junit", a.junit);
@@ -257,6 +344,41 @@ int runCheckCommand(const CheckArgs& a) {
     }
     for (const auto& r : requests) validateRequest(r);  // every bad value before any GL work
     expectations();                                     // and a broken data file too
+    // The submission, resolved and copied before anything is compiled: what is graded is the
+    // copy (src/grade/intake.h); a stage none of whose own files came from it is MISSING.
+    std::unique_ptr<PrivateDir> snapshot;
+    Submission submission;
+    std::map<GlslTree, std::set<std::string>> shippedByTree;
+    std::vector<RenderRequest> missingRequests;
+    if (!base.overlay.empty()) {
+        std::set<std::string> shipped;
+        for (GlslTree t : {GlslTree::Core, GlslTree::Legacy}) {
+            shippedByTree[t] = shippedFiles(shaderTreeRoot(t));
+            shipped.insert(shippedByTree[t].begin(), shippedByTree[t].end());
+        }
+        if (!a.all && expectedFiles(base.stage, shippedByTree[base.tree]).empty())
+            throw UsageError("--stage " + base.stage +
+                             ": this stage has no shaders for --shaders to replace");
+        std::vector<std::string> stages;
+        for (const auto& r : requests) stages.push_back(r.stage);
+        snapshot = std::make_unique<PrivateDir>("shadowlab-submission");
+        try {
+            submission = takeSubmission(base.overlay, snapshot->path(), shipped, stages);
+        } catch (const IntakeError& e) {
+            throw UsageError(e.what());
+        }
+        showFolderAs(snapshot->path(), submission.folder);
+        for (const auto& n : submission.notes) notes.push_back(n);
+        std::vector<RenderRequest> graded;
+        for (RenderRequest r : requests) {
+            r.overlay = snapshot->path();
+            if (stageFiles(submission, r.stage, shippedByTree[r.tree]).empty())
+                missingRequests.push_back(r);
+            else
+                graded.push_back(r);
+        }
+        requests = graded;
+    }
     if (!a.diffDir.empty()) makeOutputDir(a.diffDir);
     for (const auto& n : notes) std::cerr << "shadowlab: note: " << n << "\n";
 
@@ -303,7 +425,23 @@ int runCheckCommand(const CheckArgs& a) {
             if (!path.empty() && c.request.stage != "mirror")
                 checkOutputPath(a.diffDir.empty() ? "--diff" : "--diff-dir", path);
         }
+    total += missingRequests.size();
     std::size_t done = 0;
+    auto printRow = [&](const CheckResult& result) {
+        char counter[32];
+        std::snprintf(counter, sizeof counter, "[%3zu/%zu] ", ++done, total);
+        std::cout << counter << checkTableLine(result) << std::flush;
+    };
+    for (const RenderRequest& r : missingRequests) {
+        results.push_back(
+            missingResult(r, expectedFiles(r.stage, shippedByTree[r.tree]), submission.folder));
+        results.back().overlay = base.overlay;
+        printRow(results.back());
+    }
+    // Mesa's shader cache for this run's workers: private, gone with the run.
+    PrivateDir shaderCache("shadowlab-shader-cache");
+    useShaderCacheFolder(shaderCache.path());
+    std::set<std::string> saidNotes;
     bool platformFailure = false;
     checkInWorkers(plan, diffPath, backend, a.limits, platformFailure,
                    [&](std::size_t, std::vector<CheckResult> stageResults) {
@@ -312,10 +450,21 @@ int runCheckCommand(const CheckArgs& a) {
                                machine = result.machine;
                                backendName = result.backend;
                            }
-                           char counter[32];
-                           std::snprintf(counter, sizeof counter, "[%3zu/%zu] ", ++done, total);
-                           std::cout << counter << checkTableLine(result) << std::flush;
-                           if (!result.note.empty())
+                           boundResult(result);
+                           if (!base.overlay.empty()) {
+                               result.overlay = base.overlay;
+                               // A row that built nothing (a compile error) still names the
+                               // stage's files the student handed in.
+                               if (result.studentFiles.empty())
+                                   result.studentFiles = stageFiles(
+                                       submission, result.stage,
+                                       shippedByTree[result.tree == "legacy" ? GlslTree::Legacy
+                                                                             : GlslTree::Core]);
+                           }
+                           printRow(result);
+                           // A note (an unset uniform) holds for every row of the stage:
+                           // said once.
+                           if (!result.note.empty() && saidNotes.insert(result.note).second)
                                std::cerr << "shadowlab: note: " << result.note << "\n";
                            results.push_back(std::move(result));
                        }
@@ -323,7 +472,7 @@ int runCheckCommand(const CheckArgs& a) {
     if (machine.empty()) machine = "unknown (no stage finished)";
     int exitCode = kOk;
     for (const auto& r : results)
-        if (r.error)
+        if (r.error || r.missing)  // a due stage MISSING is bad input (GUIDE section 3)
             exitCode = kBadInput;
         else if (r.judgement.verdict == Verdict::Fail && exitCode == kOk)
             exitCode = kCheckFailed;
@@ -333,12 +482,16 @@ int runCheckCommand(const CheckArgs& a) {
     nlohmann::json report = reportJson(results, exitCode, seconds, backendName, machine);
     const auto& s = report["summary"];
     std::cout << "checked " << s["checked"] << ": " << s["passed"] << " passed, " << s["failed"]
-              << " failed, " << s["skipped"] << " skipped, " << s["errors"] << " errors in "
-              << std::fixed << std::setprecision(1) << seconds << std::defaultfloat << " s ("
-              << machine << ")\n";
+              << " failed, " << s["skipped"] << " skipped, " << s["errors"] << " errors, "
+              << s["missing"] << " missing in " << std::fixed << std::setprecision(1) << seconds
+              << std::defaultfloat << " s (" << machine << ")\n";
     for (const auto& r : results)
         if (!r.diffFile.empty() && !a.diff.empty())
             std::cout << "diff image: " << r.diffFile << "\n";
+    for (const auto& r : results)
+        if (r.missing)
+            std::cerr << "shadowlab: stage " << r.stage << " (" << r.tree
+                      << ") MISSING: " << r.judgement.message << "\n";
     if (!a.report.empty()) {
         nlohmann::json written =
             a.format == "gradescope" ? gradescopeJson(results, seconds) : report;
@@ -372,6 +525,7 @@ Command addCheckCommand(CLI::App& app) {
     addLimitOptions(cmd, args->limits);
     return {cmd, [args, cmd] {
                 args->glslGiven = cmd->count("--glsl") > 0;
+                args->shadersGiven = cmd->count("--shaders") > 0;
                 return guarded([&] { return runCheckCommand(*args); });
             }};
 }

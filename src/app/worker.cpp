@@ -21,6 +21,7 @@
 #include <stdexcept>
 
 #include "gl/shader_library.h"
+#include "grade/bounds.h"
 #include "render/request.h"
 #include "scene/scene_json.h"
 #include "stages/expectations.h"
@@ -76,6 +77,12 @@ std::pair<std::string, std::string> classify(const std::exception_ptr& error) {
 
 namespace {
 
+// Where workers keep Mesa's shader cache ("" = none): useShaderCacheFolder.
+std::string& shaderCacheFolder() {
+    static std::string folder;
+    return folder;
+}
+
 void applyLimits(const Limits& limits, std::size_t jobs) {
     if (limits.seconds > 0) {  // a backstop: the wall clock ends a job first
         long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
@@ -115,6 +122,20 @@ void writeAll(int fd, const std::string& text) {
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(125);  // the parent died before prctl
     applyLimits(limits, count - first);
+    // Mesa would keep every shader a submission compiles in ~/.cache/mesa_shader_cache: grading
+    // leaves nothing behind (and no student's cache entry serves another's). In the run's own
+    // folder when it has one (a check recompiles the same programs for every lesson and view:
+    // peers at 160x120 takes 1.6 s so, 5.5 s with no cache), else no cache at all.
+    const std::string& cache = shaderCacheFolder();
+    if (!cache.empty()) {
+        ::setenv("MESA_SHADER_CACHE_DIR", cache.c_str(), 1);
+        ::setenv("MESA_GLSL_CACHE_DIR", cache.c_str(), 1);  // Mesa before 21
+        ::unsetenv("MESA_SHADER_CACHE_DISABLE");
+        ::unsetenv("MESA_GLSL_CACHE_DISABLE");
+    } else {
+        ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+        ::setenv("MESA_GLSL_CACHE_DISABLE", "true", 1);
+    }
     for (std::size_t k = first; k < count; ++k) {
         std::string line;
         bool stop = true;
@@ -127,7 +148,7 @@ void writeAll(int fd, const std::string& text) {
                 reply = {{"oom", true}};
             } catch (...) {
                 auto [kind, what] = classify(std::current_exception());
-                reply = {{"error", {{"kind", kind}, {"what", what}}}};
+                reply = {{"error", {{"kind", kind}, {"what", capped(what, kMaxErrorText)}}}};
             }
             line = reply.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
         } catch (const std::bad_alloc&) {
@@ -143,7 +164,11 @@ void writeAll(int fd, const std::string& text) {
     ::_exit(0);  // no destructors, no atexit: the parent owns everything else
 }
 
-enum class Read { Line, EndOfFile, Deadline };
+enum class Read { Line, EndOfFile, Deadline, TooLong };
+
+// A job's reply is a few kilobytes a row (messages are capped in the worker): a reply past this
+// is not read on, so the parent stays small whatever the worker does.
+constexpr std::size_t kMaxReplyBytes = 16u << 20;
 
 // The next line from the worker into `line`, or why there is none.
 Read nextLine(int fd, std::string& buffer, const std::optional<Clock::time_point>& deadline,
@@ -173,6 +198,8 @@ Read nextLine(int fd, std::string& buffer, const std::optional<Clock::time_point
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) return Read::EndOfFile;  // the child exited (a partial line is no result)
         buffer.append(chunk, static_cast<std::size_t>(n));
+        if (buffer.size() > kMaxReplyBytes && buffer.find('\n') == std::string::npos)
+            return Read::TooLong;
     }
 }
 
@@ -239,11 +266,16 @@ std::string WorkerOutcome::detail() const {
         case Kind::Crash:
             return outOfMemory ? "ran out of memory" : "killed by " + signalName(signal);
         case Kind::Failed:
+            if (tooLong) return "sent a result of more than 16 MB";
             return "exited with code " + std::to_string(exitCode) + " without a result";
         case Kind::Error:
             return errorWhat;
     }
     return "";
+}
+
+void useShaderCacheFolder(const std::string& folder) {
+    shaderCacheFolder() = folder;
 }
 
 std::string timeLimitText(const Limits& limits) {
@@ -390,6 +422,10 @@ void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& 
                 }
             } else if (read == Read::Deadline) {
                 out.kind = WorkerOutcome::Kind::Timeout;  // ~Worker kills it
+            } else if (read == Read::TooLong) {
+                out.kind = WorkerOutcome::Kind::Failed;  // ~Worker kills it
+                out.exitCode = -1;
+                out.tooLong = true;
             } else {
                 bool killed = false;
                 int status = worker.finish(deadlineFrom(Clock::now(), limits), killed);

@@ -32,6 +32,7 @@ struct WorkerOutcome {
     int signal = 0;    // Crash by a signal
     int exitCode = 0;  // Failed
     bool outOfMemory = false;
+    bool tooLong = false;              // Failed: its reply passed the parent's bound
     std::string errorKind, errorWhat;  // Error
     double seconds = 0;
     // "killed by SIGSEGV", "ran out of memory", "exited with code 1 without a result", ...
@@ -55,6 +56,10 @@ WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::jso
 using SeriesJob = std::function<nlohmann::json(std::size_t)>;
 void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& job,
                       const std::function<void(std::size_t, const WorkerOutcome&)>& done);
+
+// Workers started after this keep Mesa's shader cache in `folder` (a private one the caller
+// removes); "" (the default): no shader cache at all. Never the user's ~/.cache.
+void useShaderCacheFolder(const std::string& folder);
 
 // "30 s" or "no time limit"; "2048 MB" or "no memory limit".
 std::string timeLimitText(const Limits& limits);

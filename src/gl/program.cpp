@@ -112,6 +112,28 @@ GLint Program::location(const char* uniform) {
     return loc;
 }
 
+std::vector<std::string> Program::uniformsNeverSet() {
+    std::vector<std::string> out;
+    if (!reportMissing_ || !handle_) return out;
+    GLint count = 0, longest = 0;
+    glGetProgramiv(handle_.id(), GL_ACTIVE_UNIFORMS, &count);
+    glGetProgramiv(handle_.id(), GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
+    std::vector<char> buffer(std::size_t(std::max(longest, 1)) + 1, '\0');
+    for (GLint i = 0; i < count; ++i) {
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveUniform(handle_.id(), GLuint(i), GLsizei(buffer.size()), nullptr, &size, &type,
+                           buffer.data());
+        std::string name = buffer.data();
+        if (name.size() > 3 && name.compare(name.size() - 3, 3, "[0]") == 0)
+            name.resize(name.size() - 3);
+        if (name.rfind("gl_", 0) == 0 || locations_.count(name) || reportOnly_.count(name))
+            continue;
+        out.push_back(name);
+    }
+    return out;
+}
+
 GLenum Program::declaredType(GLint location) {
     if (types_.empty()) {  // every active uniform once: name -> location -> type
         GLint count = 0, longest = 0;

@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "gl/debug.h"
 #include "gl/handles.h"
@@ -42,6 +43,11 @@ class Program {
         reportMissing_ = true;
         reportOnly_ = std::move(only);
     }
+
+    // A student's program (reportMissingUniforms called): the uniforms active in it that
+    // nothing has set so far and that ours does not declare, array suffixes dropped. Asked
+    // after a frame, these are what the stage never sets: they keep their initial value.
+    std::vector<std::string> uniformsNeverSet();
 
     // The files it was built from, named when a uniform's declared type does not fit.
     void setOrigin(std::string files) { origin_ = std::move(files); }

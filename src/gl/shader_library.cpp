@@ -19,7 +19,7 @@ const char* treeName(GlslTree t) {
 }
 
 ShaderError::ShaderError(const std::string& message)
-    : std::runtime_error(printable(validUtf8(message))) {}
+    : std::runtime_error(printable(validUtf8(withShownFolders(message)))) {}
 
 namespace {
 
@@ -443,6 +443,34 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
             e.program.reportMissingUniforms(std::move(ours));
         }
     return e;
+}
+
+std::vector<std::string> ShaderLibrary::overlayFiles(const std::string& stage) const {
+    std::set<std::string> names;
+    if (overlay_.empty()) return {};
+    for (const auto& [key, entry] : programs_) {
+        if (key.rfind(stage + "/", 0) != 0) continue;
+        for (std::size_t i = 0; i < entry.files.size(); ++i) {
+            // Read from the overlay: the watch list also holds overlay names of ours that were
+            // missing when the program was built (stamp -1).
+            const std::string& f = entry.files[i];
+            if (f.rfind(overlay_ + "/", 0) == 0 && entry.stamps[i] != -1)
+                names.insert(f.substr(overlay_.size() + 1));
+        }
+    }
+    return {names.begin(), names.end()};
+}
+
+std::vector<std::string> ShaderLibrary::unsetUniformNotes(const std::string& stage) {
+    std::vector<std::string> notes;
+    for (auto& [key, entry] : programs_) {
+        if (key.rfind(stage + "/", 0) != 0) continue;
+        for (const std::string& u : entry.program.uniformsNeverSet())
+            notes.push_back("pass " + key + " (your shader) uses uniform '" + printableName(u) +
+                            "', which the stage never sets in that pass: it keeps its initial "
+                            "value (0 unless the shader gives one)");
+    }
+    return notes;
 }
 
 Program& ShaderLibrary::program(const std::string& stage, const std::string& pass) {

@@ -52,6 +52,15 @@ class ShaderLibrary {
         std::string refused;  // why the path is not allowed ("" when it is)
     };
     Found find(const std::string& relative) const;
+
+    // The overlay's files (relative names, sorted) read by the programs of `stage` built so far:
+    // pass files and includes, what a report row lists as the student's.
+    std::vector<std::string> overlayFiles(const std::string& stage) const;
+
+    // One note per uniform a student's pass of `stage` declares and uses but the stage never
+    // sets in that pass (asked after a frame): "pass rgb/shadow (your shader) uses uniform
+    // 'margin', which the stage never sets in that pass: it keeps its initial value (0)".
+    std::vector<std::string> unsetUniformNotes(const std::string& stage);
     std::string resolve(const std::string& relative) const;  // find(relative).shown
 
   private:

@@ -217,8 +217,37 @@ std::string validUtf8(const std::string& text) {
     return out;
 }
 
+namespace {
+std::string& copyFolder() {
+    static std::string folder;
+    return folder;
+}
+std::string& originalFolder() {
+    static std::string folder;
+    return folder;
+}
+}  // namespace
+
+void showFolderAs(const std::string& copy, const std::string& original) {
+    copyFolder() = copy;
+    originalFolder() = original;
+}
+
+std::string withShownFolders(const std::string& text) {
+    const std::string& from = copyFolder();
+    if (from.empty() || text.find(from) == std::string::npos) return text;
+    std::string out;
+    std::size_t at = 0;
+    for (std::size_t hit; (hit = text.find(from, at)) != std::string::npos;
+         at = hit + from.size()) {
+        out.append(text, at, hit - at);
+        out += originalFolder();
+    }
+    return out + text.substr(at);
+}
+
 std::string printableName(const std::string& name) {
-    std::string out = validUtf8(name);
+    std::string out = validUtf8(withShownFolders(name));
     for (char& c : out) {
         unsigned char u = static_cast<unsigned char>(c);
         if (u < 0x20 || u == 0x7f) c = '?';

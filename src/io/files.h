@@ -40,4 +40,10 @@ std::string validUtf8(const std::string& text);
 // included) as '?', so that a name from a student's folder keeps a message on one line.
 std::string printableName(const std::string& name);
 
+// Messages name files of a private copy (a graded submission's snapshot) by the folder they were
+// copied from: after showFolderAs(copy, original), printableName and withShownFolders write
+// `original` wherever a path starts with or a text holds `copy/`. One pair per process ("" clears).
+void showFolderAs(const std::string& copy, const std::string& original);
+std::string withShownFolders(const std::string& text);
+
 }  // namespace sl

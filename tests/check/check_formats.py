@@ -19,7 +19,7 @@ TEST = {"score": (int, float), "max_score": (int, float), "status": str, "name":
         "name_format": str, "number": str, "output": str, "output_format": str, "tags": list,
         "visibility": str, "extra_data": dict}
 VISIBILITY = {"hidden", "after_due_date", "after_published", "visible"}
-ERROR_VERDICTS = {"ERROR", "TIMEOUT", "CRASH"}
+ERROR_VERDICTS = {"ERROR", "TIMEOUT", "CRASH", "MISSING"}  # no figures
 
 
 def check_gradescope(path, problems):

@@ -12,10 +12,11 @@ FIGURES = ["false_shadow_pct", "false_lit_pct", "false_shadow_band_pct", "false_
            "edge_mean_px", "edge_p95_px", "mirror_id_pct", "mirror_psnr_db"]
 RESULT_FIELDS = {"stage": str, "tree": str, "scene": str, "size": list, "parameters": dict,
                  "camera": dict, "light": list, "figures": dict, "pixels": dict,
-                 "expectation": dict, "verdict": str, "message": str, "seconds": float}
+                 "expectation": dict, "verdict": str, "message": str, "seconds": float,
+                 "student_files": list}
 
 
-SEVERITY = {"SKIP": 0, "PASS": 1, "FAIL": 2, "ERROR": 3, "TIMEOUT": 3, "CRASH": 3}
+SEVERITY = {"SKIP": 0, "PASS": 1, "FAIL": 2, "ERROR": 3, "TIMEOUT": 3, "CRASH": 3, "MISSING": 3}
 
 
 def rows_of(results, key):
@@ -43,16 +44,17 @@ def main():
     if not report["machine"].get("renderer"):
         problems.append("machine.renderer is empty")
     summary, results = report["summary"], report["results"]
-    for key in ("checked", "passed", "failed", "skipped", "errors", "exit_code", "seconds"):
+    for key in ("checked", "passed", "failed", "skipped", "errors", "missing", "exit_code",
+                "seconds"):
         if key not in summary:
             problems.append(f"summary.{key} is missing")
     by_verdict = {v: sum(1 for r in results if r.get("verdict") == v)
-                  for v in ("PASS", "FAIL", "SKIP", "ERROR", "TIMEOUT", "CRASH")}
+                  for v in ("PASS", "FAIL", "SKIP", "ERROR", "TIMEOUT", "CRASH", "MISSING")}
     by_verdict["errors"] = by_verdict["ERROR"] + by_verdict["TIMEOUT"] + by_verdict["CRASH"]
     if summary.get("checked") != len(results):
         problems.append(f"summary.checked {summary.get('checked')} != {len(results)} results")
     for key, verdict in (("passed", "PASS"), ("failed", "FAIL"), ("skipped", "SKIP"),
-                         ("errors", "errors")):
+                         ("errors", "errors"), ("missing", "MISSING")):
         if summary.get(key) != by_verdict[verdict]:
             problems.append(f"summary.{key} {summary.get(key)} != {by_verdict[verdict]} {verdict}")
     for r in results:

@@ -2,7 +2,8 @@
 """Grade every student submission in tests/students/ and compare with the instructor's verdict.
 
 Each case is a folder holding a shader overlay and case.json:
-    {"stage": ID, "tree": "core"|"legacy", "verdict": "PASS"|"FAIL"|"ERROR", "why": "..."}
+    {"stage": ID, "tree": "core"|"legacy", "verdict": "PASS"|"FAIL"|"ERROR"|"MISSING", "why": "...",
+     "submission": SUBFOLDER (optional), "notes": [TEXT, ...] (optional: check must print each)}
 The verdict was decided from the shaders and their pictures, never from the grader. For each case
 this runs `shadowlab check --stage ID --glsl TREE --shaders CASE --report R.json` and takes the
 stage's verdict as the worst of the report's rows for that stage (every lesson and view the check
@@ -22,9 +23,12 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
-VERDICTS = ("PASS", "FAIL", "ERROR")
+VERDICTS = ("PASS", "FAIL", "ERROR", "MISSING")
 # How bad a verdict is; a stage is as bad as its worst row.
-SEVERITY = {"SKIP": 0, "PASS": 1, "FAIL": 2, "ERROR": 3, "TIMEOUT": 3, "CRASH": 3}
+SEVERITY = {"SKIP": 0, "PASS": 1, "FAIL": 2, "ERROR": 3, "TIMEOUT": 3, "CRASH": 3, "MISSING": 3}
+# check's one line for a submission that replaces no shipped file at all (exit 2, no report):
+# for the stage graded, nothing was handed in.
+NOTHING_REPLACED = "no file replaces a shipped shader"
 FIGURES = ("false_shadow_pct", "false_lit_pct", "edge_mean_px", "edge_p95_px", "mirror_id_pct",
            "mirror_psnr_db")
 CASE_TIMEOUT_S = 600
@@ -41,8 +45,15 @@ def load_case(name):
         raise ValueError(f"{name}/case.json: verdict must be one of {', '.join(VERDICTS)}")
     if case["tree"] not in ("core", "legacy"):
         raise ValueError(f"{name}/case.json: tree must be core or legacy")
+    notes = case.get("notes", [])
+    if not isinstance(notes, list) or not all(isinstance(n, str) for n in notes):
+        raise ValueError(f"{name}/case.json: notes must be a list of strings")
     case["name"] = name
-    case["folder"] = folder
+    # A layout case keeps its submission in a subfolder ("submission"), so that case.json is not
+    # part of what is handed in (a wrapper folder must be the submission's only entry).
+    case["folder"] = os.path.join(folder, case.get("submission", ""))
+    if not os.path.isdir(case["folder"]):
+        raise ValueError(f"{name}/case.json: submission '{case.get('submission')}' is no folder")
     return case
 
 
@@ -98,12 +109,18 @@ def grade(case, exe, work):
         return "TIMEOUT", f"no answer in {CASE_TIMEOUT_S} s"
     output = proc.stdout.strip().splitlines()
     last = output[-1][:160] if output else ""
+    # Every note the instructor expects check to print (a wrapper descended, a near miss named).
+    unsaid = [n for n in case.get("notes", []) if n not in proc.stdout]
+    if unsaid:
+        return "NO-NOTE", "not said: " + "; ".join(unsaid)
     rows = []
     if os.path.exists(report):
         with open(report) as f:
             rows = rows_of(json.load(f).get("results", []), case["stage"])
     if not rows:  # no report: the exit code is all there is (docs/check.md)
         if proc.returncode == 2:
+            if any(NOTHING_REPLACED in line for line in output):
+                return "MISSING", last
             return "ERROR", last
         if proc.returncode == 0:
             return "PASS", "(no report row)"

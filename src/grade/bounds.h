@@ -1,0 +1,24 @@
+// Bounds on what grading writes: a row's message, a note, a worker's error. A student's shader
+// can make the compiler say anything, as long as it likes (an include that pastes a long line a
+// thousand times); every such text is cut here, saying how much was cut, so reports, JUnit files
+// and the terminal stay small whatever the submission.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+constexpr std::size_t kMaxRowMessage = 4096;  // a report row's message or note
+constexpr std::size_t kMaxErrorText = 16384;  // a full shader error on stderr
+constexpr std::size_t kMaxListedFiles = 32;   // student files named on one row
+
+// `text` whole when it holds at most `maxBytes`, else its first bytes (never splitting a UTF-8
+// character) and " [... N bytes cut]".
+std::string capped(const std::string& text, std::size_t maxBytes);
+
+// The first `kMaxListedFiles` of `files`, each capped, and "... and N more" when there were more.
+std::vector<std::string> cappedList(const std::vector<std::string>& files);
+
+}  // namespace sl

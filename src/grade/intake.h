@@ -1,0 +1,70 @@
+// Intake: what a student handed in, resolved into the overlay it replaces and copied into a
+// private folder before anything is compiled (GUIDE section 7). A lone wrapper folder (as a zip
+// unpacks: `jdoe_lab4/margin/lit.frag`) is descended into; editor and archive junk is left out;
+// files that nearly match a shipped one (case, `.fs`, at the top, a copied `shaders_core/` path)
+// are named in a note and not used. Only regular files with one name are copied (no links, no
+// hard links), within the loader's size limit and a count, each opened once without following
+// links: the snapshot is what gets graded, so a student who edits or swaps files meanwhile
+// changes nothing.
+#pragma once
+
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+// The submission itself is unusable (not a folder, nothing in it replaces a shipped file, too
+// many or too large files): exit 2, what() is the one line to print.
+class IntakeError : public std::runtime_error {
+  public:
+    explicit IntakeError(const std::string& message) : std::runtime_error(message) {}
+};
+
+struct Submission {
+    std::string source;              // the folder as given
+    std::string folder;              // the folder read: source, or the wrapper descended into
+    std::string root;                // the private snapshot: the overlay to grade
+    std::vector<std::string> files;  // every file copied, relative to root, sorted
+    std::vector<std::string> notes;  // one line each: wrapper, near misses, links skipped
+};
+
+// The relative paths of every shipped file under `treeRoot` (e.g. "margin/lit.frag").
+std::set<std::string> shippedFiles(const std::string& treeRoot);
+
+// Resolves `folder` and copies its files into `privateDir` (an existing, empty folder of ours).
+// `shipped`: the shipped files of every tree (a near miss is judged against them); `stages`: the
+// stages being graded, suggested first when a near miss fits several ("did you mean
+// `margin/lit.frag`?"). Throws IntakeError when nothing replaces a shipped file.
+Submission takeSubmission(const std::string& folder, const std::string& privateDir,
+                          const std::set<std::string>& shipped,
+                          const std::vector<std::string>& stages = {});
+
+// The stage's own files (`<stage>/...`) that came from the student and replace one of
+// `shipped` (one tree's files): none means the stage is MISSING.
+std::vector<std::string> stageFiles(const Submission& s, const std::string& stage,
+                                    const std::set<std::string>& shipped);
+
+// The shipped files of `stage` in `shipped` (what a MISSING stage expected).
+std::vector<std::string> expectedFiles(const std::string& stage,
+                                       const std::set<std::string>& shipped);
+
+// A private temporary folder (mode 0700, under $TMPDIR or /tmp), removed with its contents when
+// this goes away. Throws std::runtime_error when it cannot be made.
+class PrivateDir {
+  public:
+    explicit PrivateDir(const std::string& prefix = "shadowlab-intake");
+    ~PrivateDir();
+    PrivateDir(const PrivateDir&) = delete;
+    PrivateDir& operator=(const PrivateDir&) = delete;
+    const std::string& path() const { return path_; }
+
+  private:
+    std::string path_;
+};
+
+// Removes `dir` and everything in it without following links ("" or the error).
+std::string removeTree(const std::string& dir);
+
+}  // namespace sl
