@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <random>
 #include <sstream>
 
 #include "app/bench_output.h"
@@ -51,7 +52,13 @@ std::string errorLine(const std::string& text) {
 
 }  // namespace
 
-std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool customView) {
+std::uint64_t drawSeed() {
+    std::random_device device;
+    return (std::uint64_t(device()) << 32 | device()) % 1000000000000ull;  // 12 digits to type
+}
+
+std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool customView,
+                                  std::optional<std::uint64_t> seed) {
     std::vector<std::pair<RenderRequest, std::string>> lessons;  // request, lesson label
     if (narrowed) {
         lessons.emplace_back(base, "");
@@ -89,6 +96,14 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
                 }
                 cases.push_back({r, view.name, label});
             }
+        const StageInfo* info = findStage(base.stage);
+        if (!seed || customView || !info || info->needsMirror) continue;
+        for (const auto& [request, label] : lessons) {
+            if (effectiveScene(request) != scene) continue;
+            RenderRequest r = request;
+            r.displaceSeed = seed;
+            cases.push_back({r, "displaced", label});
+        }
     }
     return cases;
 }
@@ -150,6 +165,7 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
     r.parameters = renderer.params();
     r.camera = renderer.camera;
     r.light = renderer.lightPosition;
+    r.seed = request.displaceSeed;
     r.expectation = findExpectation(expectations(), r.stage, r.scene, r.tree, r.parameters);
     try {
         if (request.stage == "mirror") {
@@ -252,7 +268,8 @@ nlohmann::json checkJson(const CheckResult& r) {
         {"message", r.judgement.message},
         {"diff", r.diffFile.empty() ? nlohmann::json() : nlohmann::json(r.diffFile)},
         {"note", r.note.empty() ? nlohmann::json() : nlohmann::json(r.note)},
-        {"seconds", r.seconds}};
+        {"seconds", r.seconds},
+        {"seed", r.seed ? nlohmann::json(*r.seed) : nlohmann::json()}};
 }
 
 namespace {
@@ -344,6 +361,7 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
         r.diffFile = textOrEmpty(j.at("diff"));
         if (j.contains("note")) r.note = textOrEmpty(j["note"]);
         r.seconds = j.at("seconds").get<double>();
+        if (j.contains("seed") && !j["seed"].is_null()) r.seed = j["seed"].get<std::uint64_t>();
         return r;
     } catch (const nlohmann::json::exception& e) {
         throw std::invalid_argument(std::string("a check result: ") + e.what());

@@ -33,6 +33,7 @@ struct CheckArgs {
     Limits limits;
     std::string stage, report, diff, diffDir, junit, format = "json";
     bool all = false, glslGiven = false;
+    std::optional<std::uint64_t> seed;  // --seed: the displaced view's; else drawn at start
 };
 
 bool declares(const StageInfo& info, const std::string& param) {
@@ -260,12 +261,14 @@ int runCheckCommand(const CheckArgs& a) {
     if (!a.diffDir.empty()) makeOutputDir(a.diffDir);
     for (const auto& n : notes) std::cerr << "shadowlab: note: " << n << "\n";
 
+    const std::uint64_t seed = a.seed ? *a.seed : drawSeed();
     auto start = std::chrono::steady_clock::now();
     const Backend backend = toBackend(a.common.backend);
     std::vector<CheckResult> results;
     std::string machine, backendName;
     std::cout << "check against " << expectationsPath() << ", " << base.width << "x" << base.height
-              << (base.overlay.empty() ? "" : ", shaders " + printableName(base.overlay)) << "\n"
+              << (base.overlay.empty() ? "" : ", shaders " + printableName(base.overlay))
+              << ", seed " << seed << " (--seed " << seed << " repeats the displaced views)\n"
               << "        " << checkTableHeader();
     // Every (stage, tree) with its lessons and views, planned before any GL work.
     const bool narrowed = !base.sets.empty() || base.sceneGiven;
@@ -273,7 +276,7 @@ int runCheckCommand(const CheckArgs& a) {
     std::vector<std::vector<CheckCase>> plan;
     std::size_t total = 0;
     for (const RenderRequest& r : requests) {
-        plan.push_back(checkCases(r, narrowed, customView));
+        plan.push_back(checkCases(r, narrowed, customView, seed));
         total += plan.back().size();
     }
     for (const auto& cases : plan)
@@ -331,6 +334,7 @@ int runCheckCommand(const CheckArgs& a) {
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::json report = reportJson(results, exitCode, seconds, backendName, machine);
+    report["seed"] = seed;
     const auto& s = report["summary"];
     std::cout << "checked " << s["checked"] << ": " << s["passed"] << " passed, " << s["failed"]
               << " failed, " << s["skipped"] << " skipped, " << s["errors"] << " errors in "
@@ -369,6 +373,8 @@ Command addCheckCommand(CLI::App& app) {
     cmd->add_option("--format", args->format,
                     "the --report's format: json (ours, default) or gradescope (results.json)");
     cmd->add_option("--junit", args->junit, "also write JUnit XML: one testcase per check");
+    cmd->add_option("--seed", args->seed,
+                    "the displaced views' seed (as the report's \"seed\"); default: drawn now");
     addLimitOptions(cmd, args->limits);
     return {cmd, [args, cmd] {
                 args->glslGiven = cmd->count("--glsl") > 0;

@@ -21,7 +21,8 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
     std::ostringstream key;
     key << static_cast<int>(r.tree) << "/" << r.scene << "/" << r.width << "x" << r.height
         << "/overlay=" << r.overlay << "/eye=" << vec(r.eye) << "/at=" << vec(r.at)
-        << "/fovy=" << (r.fovy ? std::to_string(*r.fovy) : "");
+        << "/fovy=" << (r.fovy ? std::to_string(*r.fovy) : "")
+        << "/displaced=" << (r.displaceSeed ? std::to_string(*r.displaceSeed) : "");
     if (key.str() != key_) {
         reset();
         context_ = createHeadlessContext(backend_, r.tree, r.width, r.height);

@@ -355,8 +355,11 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
                 if (!inBand && !inputs.lightLost.empty()) litLost += inputs.lightLost[k];
                 if (wrong) (inBand ? litInWrong : litOutWrong)++;
                 if (wrong && !inBand && hasOtherNeighbour(i, j, rendered)) ++litWrongSpeckled;
-                if (!inputs.darkWithoutCaster.empty() && inputs.darkWithoutCaster[k]) ++darkUnlit;
             }
+            // The "everything lit" frame has no caster in the light's way: a pixel dark there is
+            // wrong whatever the truth of the real frame (a shader that draws shadows the map
+            // does not hold draws them there too).
+            if (!inputs.darkWithoutCaster.empty() && inputs.darkWithoutCaster[k]) ++darkUnlit;
             if (trueEdge[k]) {
                 // How far the render puts this piece of the true edge, beyond the tolerance.
                 double d = std::min(double(lookUp(toRenderedEdge, k)), diagonal);
@@ -371,7 +374,7 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
     figures.falseLitPct = percent(shadowOutWrong, shadowOut);
     figures.falseShadowBandPct = percent(litInWrong, litIn);
     figures.falseLitBandPct = percent(shadowInWrong, shadowIn);
-    figures.darkWithoutCasterPct = percent(darkUnlit, figures.truthLit);
+    figures.darkWithoutCasterPct = percent(darkUnlit, figures.evaluated);
     figures.falseShadowSpecklePct = percent(litWrongSpeckled, litOutWrong);
     figures.shadowLevelOffPct = percent(shadowShownOff, shadowShown);
     figures.litLightLostPct = litOut > 0 ? 100.0 * litLost / double(litOut) : 0.0;

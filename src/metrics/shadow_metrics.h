@@ -58,8 +58,8 @@ struct ShadowFigures {
     double falseLitPct = 0;
     // The same two inside the band.
     double falseShadowBandPct = 0, falseLitBandPct = 0;
-    // Of the truth-lit evaluated pixels: % dark even with the map forced to "everything lit"
-    // (darkWithoutCaster, counted in falseShadow too).
+    // Of the evaluated pixels, truth lit or shadowed: % dark even in the "everything lit" frame
+    // (darkWithoutCaster; where the truth is lit, counted in falseShadow too).
     double darkWithoutCasterPct = 0;
     // Of the truth-lit evaluated pixels rendered shadowed outside the band: % that touch a
     // rendered-lit neighbour. Acne is specks and stripes (high); a map that darkens whole
