@@ -137,6 +137,7 @@ std::map<std::string, double> CheckResult::figureMap() const {
             {"false_shadow_speckle_pct", figures.falseShadowSpecklePct},
             {"shadow_level_off_pct", figures.shadowLevelOffPct},
             {"lit_light_lost_pct", figures.litLightLostPct},
+            {"lit_too_bright_pct", figures.litTooBrightPct},
             {"mirror_id_pct", figures.mirrorIdPct},
             {"mirror_psnr_db", figures.mirrorPsnrDb}};
 }
@@ -334,6 +335,8 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
         a.falseShadowSpecklePct = numberFrom(f.at("false_shadow_speckle_pct"));
         a.shadowLevelOffPct = numberFrom(f.at("shadow_level_off_pct"));
         a.litLightLostPct = numberFrom(f.at("lit_light_lost_pct"));
+        a.litTooBrightPct =
+            f.contains("lit_too_bright_pct") ? numberFrom(f["lit_too_bright_pct"]) : NAN;
         if (!std::isnan(a.falseShadowPct)) a.errorPct = 0.5 * (a.falseShadowPct + a.falseLitPct);
         if (!std::isnan(a.mirrorIdPct)) a.errorPct = 100.0 - a.mirrorIdPct;
         const auto& pixels = j.at("pixels");

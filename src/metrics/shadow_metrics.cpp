@@ -239,6 +239,7 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
     requireSize(ref, shadowed.size(), "shadowFigures");
     if (!inputs.darkWithoutCaster.empty())
         requireSize(ref, inputs.darkWithoutCaster.size(), "shadowFigures");
+    if (!inputs.litTooBright.empty()) requireSize(ref, inputs.litTooBright.size(), "shadowFigures");
     if (!inputs.bandPx.empty()) requireSize(ref, inputs.bandPx.size(), "shadowFigures");
     if (!inputs.shadowLevelOff.empty())
         requireSize(ref, inputs.shadowLevelOff.size(), "shadowFigures");
@@ -326,7 +327,8 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
     const auto toRenderedEdge = distanceWithinObjects(renderedEdge);
 
     long litOut = 0, litOutWrong = 0, litIn = 0, litInWrong = 0, litWrongSpeckled = 0;
-    long shadowOut = 0, shadowOutWrong = 0, shadowIn = 0, shadowInWrong = 0, darkUnlit = 0;
+    long shadowOut = 0, shadowOutWrong = 0, shadowIn = 0, shadowInWrong = 0, darkUnlit = 0,
+         tooBright = 0;
     long shadowShown = 0, shadowShownOff = 0;  // rendered shadowed outside the band; level off
     double litLost = 0.0;                      // lightLost summed over litOut
     std::vector<double> distances;
@@ -360,6 +362,7 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
             // wrong whatever the truth of the real frame (a shader that draws shadows the map
             // does not hold draws them there too).
             if (!inputs.darkWithoutCaster.empty() && inputs.darkWithoutCaster[k]) ++darkUnlit;
+            if (!inputs.litTooBright.empty() && inputs.litTooBright[k]) ++tooBright;
             if (trueEdge[k]) {
                 // How far the render puts this piece of the true edge, beyond the tolerance.
                 double d = std::min(double(lookUp(toRenderedEdge, k)), diagonal);
@@ -375,6 +378,7 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::ui
     figures.falseShadowBandPct = percent(litInWrong, litIn);
     figures.falseLitBandPct = percent(shadowInWrong, shadowIn);
     figures.darkWithoutCasterPct = percent(darkUnlit, figures.evaluated);
+    figures.litTooBrightPct = percent(tooBright, figures.evaluated);
     figures.falseShadowSpecklePct = percent(litWrongSpeckled, litOutWrong);
     figures.shadowLevelOffPct = percent(shadowShownOff, shadowShown);
     figures.litLightLostPct = litOut > 0 ? 100.0 * litLost / double(litOut) : 0.0;

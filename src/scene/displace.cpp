@@ -77,8 +77,7 @@ Scene displacedScene(const Scene& scene, const Displacement& d) {
             o.normal = turned(o.normal, glm::vec3(0), axis, d.casterTurnDegrees);  // quads turn
             o.up = turned(o.up, glm::vec3(0), axis, d.casterTurnDegrees);
         }
-    out.light.position =
-        turned(scene.light.position, scene.light.target, axis, d.lightTurnDegrees);
+    out.light.position = turned(scene.light.position, scene.light.target, axis, d.lightTurnDegrees);
     return out;
 }
 
