@@ -193,6 +193,37 @@ nlohmann::json checkStageJob(Evaluator& rig, const std::vector<CheckCase>& cases
     return {{"results", list}, {"backend", backend}, {"machine", machine}};
 }
 
+// Whether the cases of a stage that ran out of time or memory fail the same way with our
+// shipped shaders alone (then it is the platform's or the scene's problem, exit 3, not the
+// submission's): "" when ours pass the limits, else one line naming the scene and its size. A
+// check without a submission is ours already: no second run.
+std::string shippedShadersFailToo(std::vector<CheckCase> cases, Backend backend,
+                                  const Limits& limits) {
+    WorkerOutcome ours;
+    if (!cases.front().request.overlay.empty()) {
+        for (CheckCase& c : cases) c.request.overlay.clear();
+        ours = runBounded(limits, [&] {
+            Evaluator rig(backend);
+            return checkStageJob(rig, cases, [](const CheckCase&) { return std::string(); });
+        });
+        if (ours.kind == WorkerOutcome::Kind::Ok || ours.kind == WorkerOutcome::Kind::Error)
+            return "";
+    }
+    CheckResult described = checkResultFor(cases.front().request);
+    describeUnrendered(cases.front().request, described);
+    std::string size;
+    try {
+        size = " (" +
+               std::to_string(loadScene(effectiveScene(cases.front().request)).objects.size()) +
+               " objects)";
+    } catch (const std::exception&) {
+    }
+    return "our shipped shaders fail the same way under these limits: a platform or scene "
+           "problem (scene " +
+           printableName(described.scene) + size +
+           "), not the submission's; raise --time-limit or --memory-limit, or use a smaller scene";
+}
+
 // Every stage and tree of `requests` evaluated in bounded workers: one worker goes through them
 // in order, reusing its contexts from one stage to the next (as one process did before), each
 // stage under its own time limit. A stage whose worker runs out of time or dies is one TIMEOUT
@@ -214,6 +245,14 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
             // Not the submission's fault (ours or the machine's): exit 3 once the report is out.
             if (outcome.kind == WorkerOutcome::Kind::Error && outcome.errorKind == "runtime")
                 platformFailure = true;
+            if (outcome.kind == WorkerOutcome::Kind::Timeout ||
+                outcome.kind == WorkerOutcome::Kind::Crash) {
+                std::string why = shippedShadersFailToo(plan[k], backend, limits);
+                if (!why.empty()) {
+                    platformFailure = true;
+                    results.back().judgement.message += "; " + why;
+                }
+            }
             std::string text = outcome.kind == WorkerOutcome::Kind::Error
                                    ? printable(jobErrorText(results.back(), outcome))
                                    : results.back().judgement.message;
