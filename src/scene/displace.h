@@ -20,8 +20,9 @@ struct Displacement {
 
 // The displacement of one seed: the same on every platform (mt19937_64's output is fixed by the
 // standard; the distributions are ours). The casters turn by 40..320 degrees (never close to
-// where they were), shift by up to 15 % of their extent per axis; the light turns 15..35 degrees
-// either way (its elevation kept, so the lessons' grazing and acne stay what they teach).
+// where they were), shift by up to 15 % of their extent per axis; the light turns 10..20 degrees
+// either way (its elevation kept, so the lessons' grazing and acne stay what they teach; at 35
+// degrees a shadow could stretch across the floor at a grazing angle our own shaders fail).
 Displacement displacementFor(std::uint64_t seed);
 
 // The axis a scene's casters turn about: the normal of its first object that casts no shadow (the
@@ -29,7 +30,8 @@ Displacement displacementFor(std::uint64_t seed);
 glm::vec3 receiverNormal(const Scene& scene);
 
 // `scene` with its casters (objects that cast a shadow) and light moved by `d`; receivers, the
-// mirror and the camera stay. Boxes stay axis-aligned: their centres move.
+// mirror and the camera stay. Boxes stay axis-aligned: their centres move. Casters that would
+// overlap after the turn turn on in 23-degree steps until apart.
 Scene displacedScene(const Scene& scene, const Displacement& d);
 
 }  // namespace sl
