@@ -111,9 +111,26 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
 std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCase>& cases,
                                        const std::function<std::string(const CheckCase&)>& diffPath,
                                        const std::function<void(const CheckResult&)>& progress) {
+    // Our shipped shaders' figures in the displaced views, measured in one go before the
+    // submission's (one context for ours, one for theirs: switching per row rebuilt both and
+    // traced the reference again each time).
+    std::map<std::size_t, std::map<std::string, double>> ours;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const RenderRequest& q = cases[k].request;
+        if (!q.displaceSeed || q.overlay.empty()) continue;
+        RenderRequest shipped = q;
+        shipped.overlay.clear();
+        rig.prepare(shipped);
+        CheckResult mine;
+        mine.figures = rig.accuracy();
+        ours[k] = mine.figureMap();
+    }
     std::vector<CheckResult> results;
-    for (const CheckCase& c : cases) {
-        CheckResult r = runCheck(rig, c.request, diffPath(c));
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const CheckCase& c = cases[k];
+        auto found = ours.find(k);
+        CheckResult r =
+            runCheck(rig, c.request, diffPath(c), found == ours.end() ? nullptr : &found->second);
         r.view = c.view;
         r.lesson =
             c.lesson.empty() && r.expectation.entry ? r.expectation.entry->label() : c.lesson;
@@ -160,17 +177,8 @@ namespace {
 // the lesson's bounds or to what our shipped shaders measure in the same view (a quarter more,
 // at least 0.5), whichever is wider: a shader that follows the map matches ours, one that
 // hard-codes the scene misses by tens of pixels and percent.
-Judgement judgeDisplaced(Evaluator& rig, const RenderRequest& request, const Expectation& entry,
-                         const CheckResult& theirs) {
-    std::map<std::string, double> ours = theirs.figureMap();
-    if (!request.overlay.empty()) {
-        RenderRequest shipped = request;
-        shipped.overlay.clear();
-        rig.prepare(shipped);
-        CheckResult mine = theirs;
-        mine.figures = rig.accuracy();
-        ours = mine.figureMap();
-    }
+Judgement judgeDisplaced(const Expectation& entry, const CheckResult& theirs,
+                         const std::map<std::string, double>& ours) {
     Expectation widened = entry;
     bool wider = false;
     for (Limit& l : widened.limits) {
@@ -188,7 +196,8 @@ Judgement judgeDisplaced(Evaluator& rig, const RenderRequest& request, const Exp
 
 }  // namespace
 
-CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath) {
+CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
+                     const std::map<std::string, double>* shipped) {
     if (request.view != ViewMode::Final)
         throw UsageError("--view " + std::string(viewName(request.view)) +
                          ": check judges the final picture; use --view final (or leave it out)");
@@ -243,8 +252,8 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
     }
-    if (request.displaceSeed)
-        r.judgement = judgeDisplaced(rig, request, *r.expectation.entry, r);
+    if (request.displaceSeed)  // without a submission's overlay, ours are the figures measured
+        r.judgement = judgeDisplaced(*r.expectation.entry, r, shipped ? *shipped : r.figureMap());
     else
         r.judgement = judge(*r.expectation.entry, r.figureMap());
     if (!r.expectation.exact)

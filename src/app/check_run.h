@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -47,7 +48,10 @@ CheckResult checkResultFor(const RenderRequest& request);
 // when not empty (shadow stages only). A shader that does not build is caught: the result is an
 // ERROR with the compiler's first line, the full message goes to stderr and the rig is reset.
 // Other failures propagate (bad input: UsageError; GL: std::runtime_error).
-CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath);
+// A displaced case (RenderRequest::displaceSeed) is judged against the wider of the lesson's
+// bounds and `shipped`, our shipped shaders' figures in the same view (the case's own when null).
+CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
+                     const std::map<std::string, double>* shipped = nullptr);
 
 // One thing a (stage, tree) check judges: a lesson entry's settings seen from one view.
 struct CheckCase {
