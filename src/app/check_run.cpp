@@ -96,8 +96,11 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
                 }
                 cases.push_back({r, view.name, label});
             }
+        // Only in the stage's own scene: a lesson scene such as the lab's (its light on the
+        // receiver's normal, so it cannot turn) gains little from it and doubles its cost.
         const StageInfo* info = findStage(base.stage);
-        if (!seed || customView || !info || info->needsMirror) continue;
+        if (!seed || customView || !info || info->needsMirror || scene != effectiveScene(base))
+            continue;
         for (const auto& [request, label] : lessons) {
             if (effectiveScene(request) != scene) continue;
             RenderRequest r = request;
