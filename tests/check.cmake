@@ -8,7 +8,7 @@ file(MAKE_DIRECTORY ${SL_CHECK_DIR})
 
 # Every stage in both trees shows its lesson: exit 0, and the report says so stage by stage.
 add_test(NAME check_all
-         COMMAND sh -c "${SL_EXE} check --all --report ${SL_CHECK_DIR}/all.json --diff-dir ${SL_CHECK_DIR}/all-diff && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all.json --count 167 --exit 0 --verdict peers/core=PASS --verdict peers/legacy=PASS --verdict rgb/core=PASS --verdict bias/legacy=PASS --verdict fixed/legacy=PASS && test -s ${SL_CHECK_DIR}/all-diff/hardware-core-lecture.png && test -s ${SL_CHECK_DIR}/all-diff/fixed-legacy-grazing.png")
+         COMMAND sh -c "${SL_EXE} check --all --report ${SL_CHECK_DIR}/all.json --diff-dir ${SL_CHECK_DIR}/all-diff && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all.json --count 210 --exit 0 --verdict peers/core=PASS --verdict peers/legacy=PASS --verdict rgb/core=PASS --verdict bias/legacy=PASS --verdict fixed/legacy=PASS && test -s ${SL_CHECK_DIR}/all-diff/hardware-core-lecture.png && test -s ${SL_CHECK_DIR}/all-diff/fixed-legacy-grazing.png")
 set_tests_properties(check_all PROPERTIES LABELS check TIMEOUT 600)
 
 # rgb: margin 0 shows acne, the slides' 0.01 cures it; both are the lesson (exit 0), and the
@@ -59,7 +59,7 @@ set_tests_properties(check_all_student_broken PROPERTIES LABELS check TIMEOUT 30
 # test per stage and tree, the same names and verdicts in both. Our shaders: 15 passes; a
 # student overlay that does not build: its stage an <error>, the others still graded.
 add_test(NAME check_formats
-         COMMAND sh -c "${SL_EXE} check --all --report ${SL_CHECK_DIR}/gradescope.json --format gradescope --junit ${SL_CHECK_DIR}/junit.xml && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/gradescope.json --junit ${SL_CHECK_DIR}/junit.xml --count 167 --errors 0 --failures 0 --verdict rgb/core/lecture=PASS --verdict fixed/legacy/grazing=PASS")
+         COMMAND sh -c "${SL_EXE} check --all --report ${SL_CHECK_DIR}/gradescope.json --format gradescope --junit ${SL_CHECK_DIR}/junit.xml && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/gradescope.json --junit ${SL_CHECK_DIR}/junit.xml --count 210 --errors 0 --failures 0 --verdict rgb/core/lecture=PASS --verdict fixed/legacy/grazing=PASS")
 set_tests_properties(check_formats PROPERTIES LABELS check TIMEOUT 600)
 add_test(NAME check_formats_student_broken
          COMMAND sh -c "${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken-gs.json --format gradescope --junit ${SL_CHECK_DIR}/broken.xml; test $? -eq 2 && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/broken-gs.json --junit ${SL_CHECK_DIR}/broken.xml --count 8 --errors 1 --failures 7 --verdict margin/core/lecture=ERROR --verdict hardware/core=MISSING")
@@ -118,7 +118,7 @@ set_tests_properties(example_unknown PROPERTIES LABELS example PASS_REGULAR_EXPR
 
 # The same verdicts on the EGL backend (the headless path without OSMesa).
 add_test(NAME check_all_egl
-         COMMAND sh -c "SHADOWLAB_BACKEND=egl ${SL_EXE} check --all --report ${SL_CHECK_DIR}/all-egl.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all-egl.json --count 167 --exit 0")
+         COMMAND sh -c "SHADOWLAB_BACKEND=egl ${SL_EXE} check --all --report ${SL_CHECK_DIR}/all-egl.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all-egl.json --count 210 --exit 0")
 set_tests_properties(check_all_egl PROPERTIES LABELS check TIMEOUT 600)
 
 # The mirror exercise's answer, worked by hand: eye (1, 1) reflected through the line p1 (-1, -1.5)

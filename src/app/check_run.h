@@ -3,8 +3,11 @@
 // stage's entry in src/stages/expectations.json. Shared by `check` and `example`.
 #pragma once
 
+#include <cstdint>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "eval/evaluator.h"
@@ -36,6 +39,7 @@ struct CheckResult {
     std::string note;                       // e.g. why no diff image was written
     std::string backend, machine;  // the headless backend, machineLine() of the context used
     double seconds = 0;
+    std::optional<std::uint64_t> seed;  // the displaced view's seed (RenderRequest::displaceSeed)
 
     std::string verdict() const {
         return missing ? "MISSING" : error ? errorVerdict : verdictName(judgement.verdict);
@@ -50,7 +54,10 @@ CheckResult checkResultFor(const RenderRequest& request);
 // when not empty (shadow stages only). A shader that does not build is caught: the result is an
 // ERROR with the compiler's first line, the full message goes to stderr and the rig is reset.
 // Other failures propagate (bad input: UsageError; GL: std::runtime_error).
-CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath);
+// A displaced case (RenderRequest::displaceSeed) is judged against the wider of the lesson's
+// bounds and `shipped`, our shipped shaders' figures in the same view (the case's own when null).
+CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
+                     const std::map<std::string, double>* shipped = nullptr);
 
 // One thing a (stage, tree) check judges: a lesson entry's settings seen from one view.
 struct CheckCase {
@@ -62,7 +69,14 @@ struct CheckCase {
 // that applies, each under its own scene and settings, unless the user narrowed it (`--set`,
 // `--scene`: the base request alone); and each from every view of its scene, unless the user
 // gave a camera or light (`--eye`, `--at`, `--fovy`, `--light`: one view named "custom").
-std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool customView);
+// With a `seed`, each scene of a stage that casts shadows gets one more view, "displaced": the
+// scene's own camera on its casters and light moved by displacementFor(seed) (GUIDE section 4:
+// a shader that knows the fixed views' geometry cannot know this one's).
+std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool customView,
+                                  std::optional<std::uint64_t> seed = std::nullopt);
+
+// A seed drawn now (std::random_device), for a run that was not given --seed.
+std::uint64_t drawSeed();
 
 // Runs the cases of one stage and tree in order on `rig`, reporting each result to `progress` as
 // it finishes. `diffPath(case)` names a case's diff image ("" for none).

@@ -37,6 +37,7 @@ struct CheckArgs {
     Limits limits;
     std::string stage, report, diff, diffDir, junit, format = "json";
     bool all = false, glslGiven = false, shadersGiven = false;
+    std::optional<std::uint64_t> seed;  // --seed: the displaced view's; else drawn at start
 };
 
 std::string canonicalOutput(const std::string& path) {
@@ -275,6 +276,37 @@ nlohmann::json checkStageJob(Evaluator& rig, const std::vector<CheckCase>& cases
     return {{"results", list}, {"backend", backend}, {"machine", machine}};
 }
 
+// Whether the cases of a stage that ran out of time or memory fail the same way with our
+// shipped shaders alone (then it is the platform's or the scene's problem, exit 3, not the
+// submission's): "" when ours pass the limits, else one line naming the scene and its size. A
+// check without a submission is ours already: no second run.
+std::string shippedShadersFailToo(std::vector<CheckCase> cases, Backend backend,
+                                  const Limits& limits) {
+    WorkerOutcome ours;
+    if (!cases.front().request.overlay.empty()) {
+        for (CheckCase& c : cases) c.request.overlay.clear();
+        ours = runBounded(limits, [&] {
+            Evaluator rig(backend);
+            return checkStageJob(rig, cases, [](const CheckCase&) { return std::string(); });
+        });
+        if (ours.kind == WorkerOutcome::Kind::Ok || ours.kind == WorkerOutcome::Kind::Error)
+            return "";
+    }
+    CheckResult described = checkResultFor(cases.front().request);
+    describeUnrendered(cases.front().request, described);
+    std::string size;
+    try {
+        size = " (" +
+               std::to_string(loadScene(effectiveScene(cases.front().request)).objects.size()) +
+               " objects)";
+    } catch (const std::exception&) {
+    }
+    return "our shipped shaders fail the same way under these limits: a platform or scene "
+           "problem (scene " +
+           printableName(described.scene) + size +
+           "), not the submission's; raise --time-limit or --memory-limit, or use a smaller scene";
+}
+
 // Every stage and tree of `requests` evaluated in bounded workers: one worker goes through them
 // in order, reusing its contexts from one stage to the next (as one process did before), each
 // stage under its own time limit. A stage whose worker runs out of time or dies is one TIMEOUT
@@ -296,6 +328,14 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
             // Not the submission's fault (ours or the machine's): exit 3 once the report is out.
             if (outcome.kind == WorkerOutcome::Kind::Error && outcome.errorKind == "runtime")
                 platformFailure = true;
+            if (outcome.kind == WorkerOutcome::Kind::Timeout ||
+                outcome.kind == WorkerOutcome::Kind::Crash) {
+                std::string why = shippedShadersFailToo(plan[k], backend, limits);
+                if (!why.empty()) {
+                    platformFailure = true;
+                    results.back().judgement.message += "; " + why;
+                }
+            }
             std::string text =
                 outcome.kind == WorkerOutcome::Kind::Error
                     ? capped(printable(jobErrorText(results.back(), outcome)), kMaxErrorText)
@@ -382,12 +422,14 @@ int runCheckCommand(const CheckArgs& a) {
     if (!a.diffDir.empty()) makeOutputDir(a.diffDir);
     for (const auto& n : notes) std::cerr << "shadowlab: note: " << n << "\n";
 
+    const std::uint64_t seed = a.seed ? *a.seed : drawSeed();
     auto start = std::chrono::steady_clock::now();
     const Backend backend = toBackend(a.common.backend);
     std::vector<CheckResult> results;
     std::string machine, backendName;
     std::cout << "check against " << expectationsPath() << ", " << base.width << "x" << base.height
-              << (base.overlay.empty() ? "" : ", shaders " + printableName(base.overlay)) << "\n"
+              << (base.overlay.empty() ? "" : ", shaders " + printableName(base.overlay))
+              << ", seed " << seed << " (--seed " << seed << " repeats the displaced views)\n"
               << "        " << checkTableHeader();
     // Every (stage, tree) with its lessons and views, planned before any GL work.
     const bool narrowed = !base.sets.empty() || base.sceneGiven;
@@ -395,7 +437,7 @@ int runCheckCommand(const CheckArgs& a) {
     std::vector<std::vector<CheckCase>> plan;
     std::size_t total = 0;
     for (const RenderRequest& r : requests) {
-        plan.push_back(checkCases(r, narrowed, customView));
+        plan.push_back(checkCases(r, narrowed, customView, seed));
         total += plan.back().size();
     }
     for (const auto& cases : plan)
@@ -480,6 +522,7 @@ int runCheckCommand(const CheckArgs& a) {
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::json report = reportJson(results, exitCode, seconds, backendName, machine);
+    report["seed"] = seed;
     const auto& s = report["summary"];
     std::cout << "checked " << s["checked"] << ": " << s["passed"] << " passed, " << s["failed"]
               << " failed, " << s["skipped"] << " skipped, " << s["errors"] << " errors, "
@@ -522,6 +565,8 @@ Command addCheckCommand(CLI::App& app) {
     cmd->add_option("--format", args->format,
                     "the --report's format: json (ours, default) or gradescope (results.json)");
     cmd->add_option("--junit", args->junit, "also write JUnit XML: one testcase per check");
+    cmd->add_option("--seed", args->seed,
+                    "the displaced views' seed (as the report's \"seed\"); default: drawn now");
     addLimitOptions(cmd, args->limits);
     return {cmd, [args, cmd] {
                 args->glslGiven = cmd->count("--glsl") > 0;

@@ -44,6 +44,8 @@ void addCommonOptions(CLI::App* app, CommonOptions& o, bool withStage) {
     app->add_option("--at", o.at, "camera target X,Y,Z");
     app->add_option("--fovy", o.fovy, "vertical field of view in degrees");
     app->add_option("--light", o.light, "light position X,Y,Z");
+    app->add_option("--displace", o.displace,
+                    "move the casters and light as check's displaced view of this seed");
     app->add_option("--set", o.sets, "stage parameter NAME=VALUE (repeatable)");
     app->add_option("--view", o.view, "final|shadow-map|light|visibility|light-depth");
     app->add_option("--backend", o.backend, "headless backend: auto|osmesa|egl");
@@ -98,6 +100,7 @@ RenderRequest toRequest(const CommonOptions& o) {
     if (!o.eye.empty()) r.eye = parseVec3("--eye", o.eye);
     if (!o.at.empty()) r.at = parseVec3("--at", o.at);
     if (!o.light.empty()) r.light = parseVec3("--light", o.light);
+    r.displaceSeed = o.displace;
     if (!o.fovy.empty()) {
         float f = parseFloat("--fovy", o.fovy);
         if (f < 1 || f > 170)

@@ -21,7 +21,8 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
     std::ostringstream key;
     key << static_cast<int>(r.tree) << "/" << r.scene << "/" << r.width << "x" << r.height
         << "/overlay=" << r.overlay << "/eye=" << vec(r.eye) << "/at=" << vec(r.at)
-        << "/fovy=" << (r.fovy ? std::to_string(*r.fovy) : "");
+        << "/fovy=" << (r.fovy ? std::to_string(*r.fovy) : "")
+        << "/displaced=" << (r.displaceSeed ? std::to_string(*r.displaceSeed) : "");
     if (key.str() != key_) {
         reset();
         context_ = createHeadlessContext(backend_, r.tree, r.width, r.height);
@@ -40,9 +41,7 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
 }
 
 void Evaluator::reset() {
-    idRenderer_.reset();  // the renderers' GL objects go before the context
-    shippedRenderer_.reset();
-    shippedIdRenderer_.reset();
+    for (auto& r : shipped_) r.reset();  // the renderers' GL objects go before the context
     renderer_.reset();
     context_.reset();
     key_.clear();
@@ -89,6 +88,7 @@ Accuracy shadowAccuracy(const ShadowFigures& f) {
     a.falseShadowSpecklePct = f.falseShadowSpecklePct;
     a.shadowLevelOffPct = f.shadowLevelOffPct;
     a.litLightLostPct = f.litLightLostPct;
+    a.litTooBrightPct = f.litTooBrightPct;
     a.errorPct = 0.5 * (a.falseShadowPct + a.falseLitPct);  // NaN when either is
     return a;
 }
@@ -111,8 +111,10 @@ ShadowEvidence Evaluator::shadowEvidence() {
     e.allLit = context_->read();
     r.allLit = false;
     const std::string& unshadowed = r.stage().unshadowedStage;
-    e.baseline = unshadowed.empty() ? e.allLit : renderWith(shippedRenderer(false), unshadowed);
-    e.renderedIds = decodeIdImage(renderWith(shippedRenderer(true), "phong"),
+    e.baseline = unshadowed.empty()
+                     ? e.allLit
+                     : renderWith(shippedRenderer(Shipped::Unhighlighted), unshadowed);
+    e.renderedIds = decodeIdImage(renderWith(shippedRenderer(Shipped::Ids), "phong"),
                                   int(r.scene().objects.size()), 1.0f);
     ShadowFigureInputs inputs;
     inputs.renderedIds = e.renderedIds;
@@ -121,6 +123,10 @@ ShadowEvidence Evaluator::shadowEvidence() {
         inputs.bandPx =
             mapTexelOnScreen(ref, r.camera, r.stats.lightViewProjection, r.stats.mapSize);
     inputs.darkWithoutCaster = classifyShadowed(e.allLit, e.baseline);
+    // Bounded from above too: clearly brighter than our lighting with its highlight is as wrong
+    // as darker (flat white, a flat colour, infinities written to an 8-bit target).
+    inputs.litTooBright =
+        classifyShadowed(renderWith(shippedRenderer(Shipped::Lit), "phong"), e.allLit);
     e.shadowed = classifyShadowed(e.withShadows, e.allLit);
     for (std::size_t k = 0; k < e.shadowed.size(); ++k)
         e.shadowed[k] = e.shadowed[k] || inputs.darkWithoutCaster[k];
@@ -143,14 +149,16 @@ Scene withoutHighlight(Scene scene) {
 
 }  // namespace
 
-Renderer& Evaluator::shippedRenderer(bool idColours) {
-    std::unique_ptr<Renderer>& slot = idColours ? shippedIdRenderer_ : shippedRenderer_;
+Renderer& Evaluator::shippedRenderer(Shipped kind) {
+    std::unique_ptr<Renderer>& slot = shipped_[static_cast<int>(kind)];
     if (!slot) {
         Renderer& r = *renderer_;
         GlslTree tree = r.shaders().tree();
+        Scene scene = kind == Shipped::Ids             ? idColouredScene(r.scene())
+                      : kind == Shipped::Unhighlighted ? withoutHighlight(r.scene())
+                                                       : r.scene();
         slot = std::make_unique<Renderer>(
-            idColours ? idColouredScene(r.scene()) : withoutHighlight(r.scene()),
-            ShaderLibrary(tree, shaderTreeRoot(tree), ""), context_->height());
+            std::move(scene), ShaderLibrary(tree, shaderTreeRoot(tree), ""), context_->height());
     }
     return *slot;
 }
@@ -166,39 +174,30 @@ Image Evaluator::renderWith(Renderer& other, const std::string& stage) {
     return context_->read();
 }
 
-// The mirror (GUIDE section 4): which object each mirror pixel shows, against the reference's
-// bounce, and how close the picture is to the exact stencil method, over the mirror's front.
+// The mirror (GUIDE section 4). Around it the stage is graded like any lit pass (its shadows
+// and its lighting); inside it, its picture against the exact stencil reflection drawn with our
+// shipped shaders, and our shipped shaders' id picture against the reference's bounce. Nothing
+// is measured against the submission's own renders: a tint after the branch, a lit pass without
+// shadows or a shader that recognises an id render would otherwise agree with itself.
 Accuracy Evaluator::mirrorAccuracy() {
     Renderer& r = *renderer_;
     int w = context_->width(), h = context_->height();
     const ReferenceImage& ref = reference();
     std::vector<std::uint8_t> mask = mirrorMask(ref, r.scene());
+    Accuracy a = shadowAccuracy(shadowEvidence().figures);
     r.allLit = false;
     r.render(context_->framebuffer(), w, h);
     Image shown = context_->read();
-    const std::string method = r.params().text("mirror-method");
-    r.params().set("mirror-method", "stencil");
-    r.render(context_->framebuffer(), w, h);
-    Image exact = context_->read();
-    r.params().set("mirror-method", method);
-
-    if (!idRenderer_)  // same shaders (a student's overlay too), the scene painted in id colours
-        idRenderer_ = std::make_unique<Renderer>(
-            idColouredScene(r.scene()),
-            ShaderLibrary(r.shaders().tree(), shaderTreeRoot(r.shaders().tree()),
-                          r.shaders().overlay()),
-            h);
-    Renderer& ids = *idRenderer_;
-    ids.selectStage(r.stage().id);
-    ids.params() = r.params();
-    ids.camera = r.camera;
-    ids.lightPosition = r.lightPosition;
-    ids.view = ViewMode::Final;
-    ids.render(context_->framebuffer(), w, h);
-    std::vector<int> seen =
-        decodeIdImage(context_->read(), mirrorId(r.scene()) - 1, kMirrorReflectance);
-
-    Accuracy a;
+    auto ours = [&](Shipped kind, const std::string& method) {
+        Renderer& other = shippedRenderer(kind);
+        other.selectStage(r.stage().id);
+        other.params() = r.params();
+        other.params().set("mirror-method", method);
+        return renderWith(other, r.stage().id);
+    };
+    Image exact = ours(Shipped::Lit, "stencil");
+    std::vector<int> seen = decodeIdImage(ours(Shipped::Ids, r.params().text("mirror-method")),
+                                          mirrorId(r.scene()) - 1, kMirrorReflectance);
     a.mirrorIdPct = mirrorIdAgreementPct(ref, seen);
     a.mirrorPsnrDb = psnrInMask(shown, exact, mask);
     a.errorPct = 100.0 - a.mirrorIdPct;

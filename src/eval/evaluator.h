@@ -22,7 +22,7 @@ struct Accuracy {
     double falseShadowBandPct = NAN, falseLitBandPct = NAN;
     double edgeMeanPx = NAN, edgeP95Px = NAN;
     double darkWithoutCasterPct = NAN, falseShadowSpecklePct = NAN, shadowLevelOffPct = NAN;
-    double litLightLostPct = NAN;
+    double litLightLostPct = NAN, litTooBrightPct = NAN;
     double mirrorIdPct = NAN, mirrorPsnrDb = NAN;
     // One number for charts: shadow stages the balanced error (false shadow % + false lit %) / 2
     // outside the edge band; the mirror 100 - id agreement %.
@@ -79,10 +79,11 @@ class Evaluator {
 
   private:
     Accuracy mirrorAccuracy();
-    // A renderer over the current scene without its highlight (or its id-coloured twin) with our
-    // shipped shaders only: what the stage's picture is measured against, whatever the overlay
-    // does.
-    Renderer& shippedRenderer(bool idColours);
+    // A renderer over the current scene with our shipped shaders only: what the stage's picture
+    // is measured against, whatever the overlay does. Unhighlighted: the scene without its
+    // highlight (the least light a lit surface keeps); Lit: as it is; Ids: in id colours.
+    enum class Shipped { Unhighlighted, Lit, Ids };
+    Renderer& shippedRenderer(Shipped kind);
     Image renderWith(Renderer& r, const std::string& stage);
 
     Backend backend_;
@@ -90,9 +91,7 @@ class Evaluator {
     std::string key_;
     std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<Renderer> renderer_;
-    std::unique_ptr<Renderer> idRenderer_;         // the overlay's shaders, id colours (mirror)
-    std::unique_ptr<Renderer> shippedRenderer_;    // our shaders, the scene's colours
-    std::unique_ptr<Renderer> shippedIdRenderer_;  // our shaders, id colours
+    std::unique_ptr<Renderer> shipped_[3];  // by Shipped
     glm::vec3 sceneLight_{0};
     std::string referenceKey_;
     ReferenceImage reference_;

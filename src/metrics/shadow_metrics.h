@@ -58,8 +58,8 @@ struct ShadowFigures {
     double falseLitPct = 0;
     // The same two inside the band.
     double falseShadowBandPct = 0, falseLitBandPct = 0;
-    // Of the truth-lit evaluated pixels: % dark even with the map forced to "everything lit"
-    // (darkWithoutCaster, counted in falseShadow too).
+    // Of the evaluated pixels, truth lit or shadowed: % dark even in the "everything lit" frame
+    // (darkWithoutCaster; where the truth is lit, counted in falseShadow too).
     double darkWithoutCasterPct = 0;
     // Of the truth-lit evaluated pixels rendered shadowed outside the band: % that touch a
     // rendered-lit neighbour. Acne is specks and stripes (high); a map that darkens whole
@@ -74,6 +74,9 @@ struct ShadowFigures {
     // false shadow for a hard test; it also sees a surface dimmed by less than the classifier's
     // 15 % (a filter whose far taps shadow their own surface). 0 when nothing is counted.
     double litLightLostPct = 0;
+    // Of the evaluated pixels: % clearly brighter in the "everything lit" frame than our own
+    // lighting with its highlight (litTooBright): flat white, a flat colour, infinities.
+    double litTooBrightPct = 0;
     // Distance in pixels from each true edge pixel to the nearest rendered edge pixel of the same
     // object (the image's diagonal when there is none), less that pixel's tolerance beyond one
     // pixel (bandPx - 1, never below 0): the mean and the 95th percentile (nearest rank). When
@@ -90,6 +93,7 @@ struct ShadowFigures {
 struct ShadowFigureInputs {
     std::vector<int> renderedIds;                 // the object the render shows (0 background)
     std::vector<std::uint8_t> darkWithoutCaster;  // dark with the map forced "everything lit"
+    std::vector<std::uint8_t> litTooBright;       // brighter there than our lighting
     std::vector<float> bandPx;                    // edge tolerance in pixels (>= 1)
     std::vector<std::uint8_t> shadowVisible;      // shadowVisiblePixels
     std::vector<std::uint8_t> shadowLevelOff;     // shadowLevelOff

@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "scene/displace.h"
 #include "scene/scene_json.h"
 
 namespace sl {
@@ -92,6 +93,7 @@ std::unique_ptr<Renderer> makeRenderer(const RenderRequest& r) {
     validateRequest(r);
     std::string sceneName = effectiveScene(r);
     Scene scene = loadScene(sceneName);
+    if (r.displaceSeed) scene = displacedScene(scene, displacementFor(*r.displaceSeed));
     const StageInfo* info = findStage(r.stage);
     if (info->needsMirror && !scene.mirror)
         throw UsageError("--scene " + sceneName + ": stage '" + r.stage +

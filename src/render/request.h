@@ -2,6 +2,7 @@
 // turns it into a configured Renderer. Bad values throw UsageError (exit code 2).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -28,6 +29,8 @@ struct RenderRequest {
     std::optional<float> fovy;
     std::vector<std::pair<std::string, std::string>> sets;  // --set NAME=VALUE
     ViewMode view = ViewMode::Final;
+    // Grading's displaced view: the scene's casters and light moved by displacementFor(seed).
+    std::optional<std::uint64_t> displaceSeed;
 };
 
 // The folder of our shaders for a tree.

@@ -36,14 +36,16 @@ void drawSceneLit(Program& program, const FrameContext& f, const Viewer& viewer,
 }
 
 void drawSceneFromLight(Program& program, const FrameContext& f,
-                        const glm::mat4& lightViewProjection, bool castersOnly,
+                        const glm::mat4& lightViewProjection, FromLight which,
                         const PerObject& perObject) {
     program.use();
     program.set("lightViewProjection", lightViewProjection);
     f.gpu.bind();
     for (std::size_t i = 0; i < f.scene.objects.size(); ++i) {
         const Object& o = f.scene.objects[i];
-        if (castersOnly && !o.castsShadow) continue;
+        if (which == FromLight::None || (which == FromLight::Casters && !o.castsShadow) ||
+            (which == FromLight::Receivers && o.castsShadow))
+            continue;
         glm::mat4 model = modelMatrix(o);
         program.set("model", model);
         if (perObject) perObject(program, i, model);

@@ -21,10 +21,15 @@ using PerObject = std::function<void(Program&, std::size_t index, const glm::mat
 void drawSceneLit(Program& program, const FrameContext& f, const Viewer& viewer, int debugView,
                   const PerObject& perObject = {});
 
+// Which objects a pass from the light draws: every one, the shadow casters only, or the objects
+// that cast no shadow only (grading's "everything lit" map: a real map of the scene with its
+// casters out of the light's way, which a shader cannot tell from any other frame).
+enum class FromLight { All, Casters, Receivers, None };
+
 // Depth-only style pass (shadow map): `lightViewProjection` as `lightViewProjection`, each
-// object's `model`; only shadow casters when `castersOnly`.
+// object's `model`, for the objects `which` names.
 void drawSceneFromLight(Program& program, const FrameContext& f,
-                        const glm::mat4& lightViewProjection, bool castersOnly,
+                        const glm::mat4& lightViewProjection, FromLight which,
                         const PerObject& perObject = {});
 
 // Clears the bound framebuffer to the scene's background.

@@ -1,6 +1,7 @@
 #include "render/shadow_map.h"
 
 #include <chrono>
+#include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
 
 #include "gl/state.h"
@@ -8,6 +9,12 @@
 #include "scene/mesh.h"
 
 namespace sl {
+
+namespace {
+// How much farther from the light the receivers lie in the "everything lit" map: 10 % of their
+// distance is many 8-bit depth steps and more than any filter's reach on the lessons' receivers.
+constexpr float kLitFrameFarther = 0.1f;
+}  // namespace
 
 MapStorage parseStorage(const std::string& t) {
     if (t == "rgb8") return MapStorage::Rgb8;
@@ -158,13 +165,23 @@ void ShadowMap::update(FrameContext& f, const ShadowMapSettings& s, Program& pro
         glClearColor(1, 1, 1, 1);  // the far value, in colour too
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        if (!f.allLit)  // forced "everything lit": the map stays at the far value
-            drawSceneFromLight(program, f, lightViewProjection_, s.castersOnly,
-                               [&](Program&, std::size_t i, const glm::mat4&) {
-                                   if (!s.cullBack) return;
-                                   bool closed = f.scene.objects[i].kind != PrimitiveKind::Quad;
-                                   closed ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
-                               });
+        // Forced "everything lit" (grading): the same frustum and pass over a real scene whose
+        // casters are out of the light's way and whose receivers lie a little farther from the
+        // light (scaled about it, so each covers the same texels): no surface is in shadow, not
+        // even of itself (acne), yet the map is one a real scene makes. A map of all far texels
+        // was a frame no scene makes, and a shader could recognise it.
+        FromLight which = s.castersOnly ? FromLight::Casters : FromLight::All;
+        if (f.allLit) which = s.castersOnly ? FromLight::None : FromLight::Receivers;
+        const glm::mat4 away = glm::translate(glm::mat4(1), f.lightPosition) *
+                               glm::scale(glm::mat4(1), glm::vec3(1.0f + kLitFrameFarther)) *
+                               glm::translate(glm::mat4(1), -f.lightPosition);
+        drawSceneFromLight(program, f, lightViewProjection_, which,
+                           [&](Program& p, std::size_t i, const glm::mat4& model) {
+                               if (f.allLit) p.set("model", away * model);
+                               if (!s.cullBack) return;
+                               bool closed = f.scene.objects[i].kind != PrimitiveKind::Quad;
+                               closed ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+                           });
     }
     ++f.stats.shadowMapRenders;
     f.stats.lightViewProjection = lightViewProjection_;

@@ -232,7 +232,8 @@ const std::vector<std::string>& figureNames() {
                                                    "dark_without_caster_pct",
                                                    "false_shadow_speckle_pct",
                                                    "shadow_level_off_pct",
-                                                   "lit_light_lost_pct"};
+                                                   "lit_light_lost_pct",
+                                                   "lit_too_bright_pct"};
     return names;
 }
 
