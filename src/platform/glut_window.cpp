@@ -16,6 +16,9 @@ namespace sl {
 
 namespace {
 
+// The command line's exit codes (app/options.h names them; the platform does not include app/).
+constexpr int kOk = 0, kBadInput = 2, kGlFailure = 3;
+
 constexpr int kPollMs = 125;  // shader files and on-screen messages, 8 times a second
 // Esc quits when it is released (or this long after the press, if no release comes): quitting
 // on the press destroyed the window before `xdotool key --window ID Escape` sent the release,
@@ -211,7 +214,7 @@ void requireGl33() {
 int runWindow(const WindowArgs& args) {
     WindowState state;
     state.args = args;
-    RenderRequest request = toRequest(args.common);
+    const RenderRequest& request = args.request;
     if (!args.screenshot.empty() && args.frames <= 0)
         throw UsageError("--screenshot needs --frames N (the frame to save)");
     if ((!args.keys.empty() || args.resizeTest) && args.frames <= 0)

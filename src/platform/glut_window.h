@@ -3,12 +3,19 @@
 // so every stage is one key away in one session.
 #pragma once
 
-#include "app/options.h"
+#include <memory>
+#include <string>
+
+#include "platform/program_trial.h"
+#include "render/request.h"
 
 namespace sl {
 
 struct WindowArgs {
-    CommonOptions common;
+    RenderRequest request;
+    std::shared_ptr<ProgramTrial> trial;  // where changed shaders are tried ("": adopted at once)
+    bool fullscreen = false;
+    float hudScale = 1;          // times the text size that suits the window
     int frames = 0;              // > 0: render this many frames, then exit (tests)
     std::string screenshot;      // with frames: save the last frame here
     bool screenshotHud = false;  // the screenshot includes the HUD (for the README)

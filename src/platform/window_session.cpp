@@ -1,5 +1,6 @@
 #include "platform/window_session.h"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
@@ -7,6 +8,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 #include "math/orbit.h"
 #include "metrics/image.h"
@@ -36,7 +38,7 @@ bool offers(const StageInfo& s, ViewMode v) {
 
 WindowSession::WindowSession(const WindowArgs& args)
     : args_(args),
-      request_(toRequest(args.common)),
+      request_(args.request),
       tree_(request_.tree),
       watch_({shaderTreeRoot(GlslTree::Core), shaderTreeRoot(GlslTree::Legacy), request_.overlay}) {
     const StageInfo* info = findStage(request_.stage);
@@ -45,6 +47,16 @@ WindowSession::WindowSession(const WindowArgs& args)
     validateRequest(request_);
     request_.tree = tree_;
     startScene_ = effectiveScene(request_);
+    trial_ = args.trial;
+    // A student's folder is tried before anything of it is compiled here (the window is not
+    // drawing yet, so waiting for the verdict costs nothing but time).
+    if (trial_ && !request_.overlay.empty()) {
+        startTrial(false);
+        while (trial_->running()) {
+            finishTrial();
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+    }
     // The first renderer is the request's own (its --set, --eye, --light, --view apply).
     RenderRequest first = request_;
     if (info->legacyOnly) first.tree = GlslTree::Legacy;
@@ -119,6 +131,7 @@ bool WindowSession::selectStage(std::size_t index, GlslTree sessionTree) {
     if (prevStage != s.id) selectedParam_ = 0;
     slot_ = next;
     scene_ = scene;
+    if (sessionTree != tree_) reloadErrors_.clear();  // the other tree's: not about this picture
     tree_ = sessionTree;
     renderError_.clear();
     return true;
@@ -164,7 +177,10 @@ bool WindowSession::key(unsigned char key, bool shift) {
             flash("camera and light reset", false);
             return true;
         case 'r':
-            reload(true);
+            flash(trial_ ? "r: drawing every stage with the shaders on disk in the trial worker..."
+                         : "r: shaders reloaded",
+                  false);
+            startTrial(true);
             return true;
         case 'p':
             saveShot();
@@ -204,9 +220,10 @@ bool WindowSession::drag(int dx, int dy) {
 bool WindowSession::tick(Clock::time_point now) {
     bool redraw = false;
     if (watch_.poll(now)) {
-        reload(false);
+        startTrial(false);
         redraw = true;
     }
+    if (trial_ && trial_->running() && finishTrial()) redraw = true;
     if (!flash_.empty() && now >= flashUntil_) {
         flash_.clear();
         redraw = true;
@@ -230,6 +247,109 @@ void WindowSession::reload(bool force) {
     if (errors.empty())
         say(std::cout, hadErrors ? "shadowlab: shaders reloaded; every program builds again"
                                  : "shadowlab: shaders reloaded");
+}
+
+std::string WindowSession::refusedKey(const std::string& stage) const {
+    return std::string(treeName(slot_ ? slot_->renderer->shaders().tree() : tree_)) + "/" + stage;
+}
+
+std::vector<TrialStage> WindowSession::trialStages() {
+    std::vector<TrialStage> stages;
+    for (const StageInfo& s : stageRegistry()) {
+        if (s.legacyOnly && tree_ == GlslTree::Core) continue;  // runs legacy, without the folder
+        TrialStage t;
+        t.stage = s.id;
+        try {
+            t.scene = sceneFor(s);
+        } catch (const std::exception&) {
+            continue;  // a scene that cannot load: the stage cannot be shown either
+        }
+        if (slot_ && slot_->renderer->stage().id == s.id) {  // as it is on screen
+            for (const ParamSpec& p : slot_->renderer->params().specs())
+                t.sets.emplace_back(p.name, slot_->renderer->params().text(p.name));
+        } else if (!slot_ && s.id == request_.stage) {
+            t.sets = request_.sets;
+        }
+        stages.push_back(std::move(t));
+    }
+    return stages;
+}
+
+void WindowSession::startTrial(bool force) {
+    if (!trial_) {  // no watchdog: adopted at once
+        reload(force);
+        return;
+    }
+    trialForce_ = force || !refused_.empty() || !reloadErrors_.empty() || !renderError_.empty();
+    trialFingerprint_ = watch_.current();
+    trialFile_ = watch_.newestFile();
+    // At the window's size (its size on the command line before the first frame).
+    trial_->start(tree_, tree_ == request_.tree ? request_.overlay : "", trialStages(),
+                  width_ > 0 ? width_ : request_.width, height_ > 0 ? height_ : request_.height);
+}
+
+bool WindowSession::finishTrial() {
+    std::vector<TrialVerdict> verdicts;
+    if (!trial_->poll(verdicts)) return false;
+    // Saved again meanwhile: these files were not the ones tried; the next trial decides.
+    if (watch_.pending() || watch_.current() != trialFingerprint_) return false;
+    adopt(verdicts);
+    return true;
+}
+
+void WindowSession::adopt(const std::vector<TrialVerdict>& verdicts) {
+    const bool hadErrors = !shownErrors().empty() || !renderError_.empty();
+    const std::string tree = treeName(tree_);
+    std::set<std::string> passed, said;
+    bool all = true;
+    for (const TrialVerdict& v : verdicts) {
+        const std::string key = tree + "/" + v.stage;
+        if (v.ok) {
+            passed.insert(v.stage);
+            refused_.erase(key);
+            continue;
+        }
+        all = false;
+        std::string why = v.what;
+        // A loop or a crash has no file in its message: name the one saved last.
+        if (!trialFile_.empty() && why.find(trialFile_) == std::string::npos)
+            why = trialFile_ + " (saved last): " + why;
+        // One line per new message: a broken shared file fails every stage with the same one.
+        if (refused_[key] != why && said.insert(why).second)
+            say(std::cerr,
+                "shadowlab: shader error (keeping the last good program): " + oneLine(why));
+        refused_[key] = why;
+    }
+    // The stages that drew in the worker take their new programs; the shared folders (common,
+    // phong, hud) only when every stage drew.
+    std::vector<std::string> errors;
+    for (auto& [key, slot] : slots_) {
+        if (slot.renderer->shaders().tree() != tree_) continue;
+        auto e = slot.renderer->reloadShaders(trialForce_, all ? nullptr : &passed);
+        errors.insert(errors.end(), e.begin(), e.end());
+    }
+    reloadErrors_ = errors;
+    renderError_.clear();
+    printedRenderError_.clear();
+    for (const auto& e : errors)
+        say(std::cerr, "shadowlab: shader error (keeping the last good program): " + oneLine(e));
+    if (shownErrors().empty() && slot_) {  // (at the start, before any frame: nothing to say)
+        say(std::cout, hadErrors ? "shadowlab: shaders reloaded; every program builds again"
+                                 : "shadowlab: shaders reloaded");
+        flash("shaders reloaded: every stage drew in the trial worker", false);
+    }
+}
+
+std::vector<std::string> WindowSession::shownErrors() const {
+    std::vector<std::string> errors;
+    for (const StageInfo& s : stageRegistry()) {
+        auto it = refused_.find(refusedKey(s.id));
+        if (it != refused_.end() &&
+            std::find(errors.begin(), errors.end(), it->second) == errors.end())
+            errors.push_back(it->second);
+    }
+    errors.insert(errors.end(), reloadErrors_.begin(), reloadErrors_.end());
+    return errors;
 }
 
 void WindowSession::flash(const std::string& text, bool error) {
@@ -303,8 +423,10 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
     const glm::vec4 white(1), grey(0.85f, 0.85f, 0.85f, 1), yellow(1, 1, 0.6f, 1),
         green(0.6f, 1, 0.6f, 1), blue(0.75f, 0.85f, 1, 1), errorText(1, 0.85f, 0.8f, 1);
     std::vector<HudBlock> blocks;
-    std::vector<std::string> errors = reloadErrors_;
-    if (!renderError_.empty()) errors.insert(errors.begin(), renderError_);
+    std::vector<std::string> errors = shownErrors();
+    if (!renderError_.empty() &&
+        std::find(errors.begin(), errors.end(), renderError_) == errors.end())
+        errors.insert(errors.begin(), renderError_);
     const std::string view = viewLabel(s, r.view);
 
     if (hudMode_ == HudMode::Compact) {
@@ -325,8 +447,11 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
     HudBlock top;
     top.lines.push_back({title() + ": " + s.title, yellow});
     std::ostringstream status;
-    status << treeText() << " | scene " << scene_ << " | view " << view << " | "
-           << static_cast<int>(drawMs_ * 10) / 10.0 << " ms to draw";
+    status << treeText() << " | scene " << scene_ << " | view " << view << " | ";
+    if (drawnFrames_ == 0)  // the time is known once the frame is done: the first one has none
+        status << "first frame";
+    else
+        status << static_cast<int>(drawMs_ * 10) / 10.0 << " ms to draw";
     top.lines.push_back({status.str(), white});
     if (scene_ != startScene_)
         top.lines.push_back({"scene " + scene_ + ": the " + s.id +
@@ -404,8 +529,13 @@ std::string WindowSession::draw(int width, int height, const std::string& saveTo
         r.lightPosition = circlingLight(r.lightPosition, kLightRadiansPerSecond, dt);
     }
     lastAnimation_ = start;
+    const std::string key = refusedKey(r.stage().id);
+    auto refused = refused_.find(key);
     try {
+        // Refused by the trial and never drawn here: building it from disk could hang or crash.
+        if (refused != refused_.end() && !drewOnce_.count(key)) throw ShaderError(refused->second);
         r.render(0, width, height);
+        drewOnce_.insert(key);
         renderError_.clear();
     } catch (const ShaderError& e) {  // no good program yet for this stage: show why
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -430,6 +560,7 @@ std::string WindowSession::draw(int width, int height, const std::string& saveTo
     if (!saveTo.empty() && withHud) saved = readPixelsToPng(saveTo);
     glFinish();
     drawMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    ++drawnFrames_;
     return saved;
 }
 
@@ -445,10 +576,16 @@ std::string WindowSession::stateJson() const {
     j["hud"] = hudMode_ == HudMode::Full      ? "full"
                : hudMode_ == HudMode::Compact ? "compact"
                                               : "hidden";
-    j["errors"] = reloadErrors_.size() + (renderError_.empty() ? 0 : 1);
-    j["error"] = !renderError_.empty()   ? oneLine(renderError_)
-                 : reloadErrors_.empty() ? ""
-                                         : oneLine(reloadErrors_[0]);
+    const std::vector<std::string> errors = shownErrors();
+    const bool renderErrorListed =
+        std::find(errors.begin(), errors.end(), renderError_) != errors.end();
+    j["errors"] = errors.size() + (renderError_.empty() || renderErrorListed ? 0 : 1);
+    j["error"] = !renderError_.empty() ? oneLine(renderError_)
+                 : errors.empty()      ? ""
+                                       : oneLine(errors[0]);
+    j["trying"] = trial_ && trial_->running();
+    j["picture"] = renderError_.empty() ? "stage" : "none";  // "none": no good program drew it
+    j["drawn"] = drawnFrames_;
     j["message"] = flash_;
     j["animating"] = animateLight_;
     j["lightAngle"] = std::atan2(r.lightPosition.z, r.lightPosition.x);  // radians, around y

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <map>
 #include <memory>
+#include <set>
 
 #include "platform/glut_window.h"
 #include "platform/shader_watch.h"
@@ -45,6 +46,13 @@ class WindowSession {
     Slot& slotFor(GlslTree tree, const std::string& scene, const std::string& stage);
     std::string sceneFor(const StageInfo& stage);
     void reload(bool force);
+    // The watchdog: changed shaders are drawn in the trial worker first (see program_trial.h).
+    void startTrial(bool force);
+    bool finishTrial();
+    void adopt(const std::vector<TrialVerdict>& verdicts);
+    std::vector<TrialStage> trialStages();
+    std::string refusedKey(const std::string& stage) const;
+    std::vector<std::string> shownErrors() const;
     void saveShot();
     void flash(const std::string& text, bool error);
     std::vector<HudBlock> hudBlocks() const;
@@ -69,11 +77,18 @@ class WindowSession {
     bool animateLight_ = false;
     Clock::time_point lastAnimation_;
     std::vector<std::string> reloadErrors_;
+    std::shared_ptr<ProgramTrial> trial_;
+    bool trialForce_ = false;
+    std::uint64_t trialFingerprint_ = 0;
+    std::string trialFile_;                       // the file changed last when the trial began
+    std::map<std::string, std::string> refused_;  // "tree/stage": why its new programs were refused
+    std::set<std::string> drewOnce_;              // "tree/stage" drawn by a good program here
     std::string renderError_, printedRenderError_;
     std::string flash_;
     bool flashIsError_ = false;
     Clock::time_point flashUntil_;
     double drawMs_ = 0;
+    long drawnFrames_ = 0;  // frames drawn (a test waits for a new one)
 };
 
 }  // namespace sl
