@@ -59,6 +59,10 @@ void pressKey(unsigned char key, bool shift) {
         return;
     }
     if (g->quitting) return;
+    if (key == 'f' || key == 'F') {  // full screen and back: the window's, not the session's
+        glutFullScreenToggle();
+        return;
+    }
     if (g->session->key(key, shift)) glutPostRedisplay();
 }
 
@@ -240,6 +244,7 @@ int runWindow(const WindowArgs& args) {
     if (!loadGl(reinterpret_cast<GlProcLoader>(&glutGetProcAddress)))
         throw std::runtime_error("could not load GL entry points through glutGetProcAddress");
     requireGl33();
+    if (args.fullscreen) glutFullScreen();
     passShiftTabAsTab();
     watchWindow();
     // Before the session is built (compiling takes a while): keys typed meanwhile queue up for

@@ -189,9 +189,9 @@ bool WindowSession::key(unsigned char key, bool shift) {
             showHelp_ = !showHelp_;
             return true;
         case 'i':
-            hudMode_ = hudMode_ == HudMode::Full      ? HudMode::Compact
-                       : hudMode_ == HudMode::Compact ? HudMode::Hidden
-                                                      : HudMode::Full;
+            hudMode_ = hudMode_ == HudMode::Compact ? HudMode::Full
+                       : hudMode_ == HudMode::Full  ? HudMode::Hidden
+                                                    : HudMode::Compact;
             return true;
         case 'l':
             animateLight_ = !animateLight_;
@@ -415,10 +415,20 @@ std::string WindowSession::title() const {
     return std::to_string(r.stageIndex()) + " " + r.stage().id;
 }
 
+HudBlock WindowSession::flashBlock() const {
+    HudBlock b;
+    b.bottom = true;
+    b.lines = {
+        {flash_, flashIsError_ ? glm::vec4(1, 0.85f, 0.8f, 1) : glm::vec4(0.6f, 1, 0.6f, 1)}};
+    b.maxLines = 3;
+    b.panel = flashIsError_ ? glm::vec4(0.25f, 0.02f, 0.02f, 0.9f) : glm::vec4(0, 0, 0, 0.75f);
+    return b;
+}
+
 std::vector<HudBlock> WindowSession::hudBlocks() const {
     Renderer& r = *slot_->renderer;
     const StageInfo& s = r.stage();
-    const float scale = hudScale(width_, height_);
+    const float scale = textScale(width_, height_);
     const int rows = std::max(3, static_cast<int>((height_ / scale - 6) / Hud::kLineHeight));
     const glm::vec4 white(1), grey(0.85f, 0.85f, 0.85f, 1), yellow(1, 1, 0.6f, 1),
         green(0.6f, 1, 0.6f, 1), blue(0.75f, 0.85f, 1, 1), errorText(1, 0.85f, 0.8f, 1);
@@ -428,19 +438,29 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         std::find(errors.begin(), errors.end(), renderError_) == errors.end())
         errors.insert(errors.begin(), renderError_);
     const std::string view = viewLabel(s, r.view);
+    const std::string legend = viewLegend(s, r.view);
 
-    if (hudMode_ == HudMode::Compact) {
-        std::string line = title() + " | " + treeName(r.shaders().tree()) + " | " + view;
+    if (hudMode_ == HudMode::Compact) {  // for a projector: what the picture is, and how to read it
+        HudBlock top;
+        std::string line = title() + " | " + treeName(r.shaders().tree());
         const auto& specs = r.params().specs();
         if (!specs.empty()) {
             const std::string& name = specs[selectedParam_ % specs.size()].name;
             line += " | " + name + " = " + r.params().text(name);
         }
-        if (!errors.empty()) line += " | SHADER ERROR (i: details)";
-        HudBlock b;
-        b.lines = {{line, errors.empty() ? yellow : errorText}};
-        b.maxLines = 1;
-        blocks.push_back(b);
+        top.lines.push_back({line, yellow});
+        if (!errors.empty())
+            top.lines.push_back({"shader error (i: all of it): " + oneLine(errors[0]), errorText});
+        top.maxLines = 4;
+        blocks.push_back(top);
+        if (!legend.empty()) {
+            HudBlock b;
+            b.bottom = true;
+            b.lines = {{legend, white}};
+            b.maxLines = 2;
+            blocks.push_back(b);
+        }
+        if (!flash_.empty()) blocks.push_back(flashBlock());
         return blocks;
     }
 
@@ -482,7 +502,6 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         std::max(3, showHelp_ ? rows - 3 : rows * 11 / 20);  // help asked for: room for it
     blocks.push_back(top);
 
-    std::string legend = viewLegend(s, r.view);
     if (!legend.empty()) {
         HudBlock b;
         b.bottom = true;
@@ -490,14 +509,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         b.maxLines = 2;
         blocks.push_back(b);
     }
-    if (!flash_.empty()) {
-        HudBlock b;
-        b.bottom = true;
-        b.lines = {{flash_, flashIsError_ ? errorText : green}};
-        b.maxLines = 3;
-        b.panel = flashIsError_ ? glm::vec4(0.25f, 0.02f, 0.02f, 0.9f) : glm::vec4(0, 0, 0, 0.75f);
-        blocks.push_back(b);
-    }
+    if (!flash_.empty()) blocks.push_back(flashBlock());
     if (!errors.empty()) {
         HudBlock b;
         b.bottom = true;
@@ -518,6 +530,51 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
     return blocks;
 }
 
+float WindowSession::textScale(int width, int height) const {
+    return std::max(0.5f, hudScale(width, height) * args_.hudScale);
+}
+
+void WindowSession::drawStage(GLuint target, int width, int height) {
+    Renderer& r = *slot_->renderer;
+    const std::string key = refusedKey(r.stage().id);
+    auto refused = refused_.find(key);
+    try {
+        // Refused by the trial and never drawn here: building it from disk could hang or crash.
+        if (refused != refused_.end() && !drewOnce_.count(key)) throw ShaderError(refused->second);
+        r.render(target, width, height);
+        drewOnce_.insert(key);
+        renderError_.clear();
+    } catch (const ShaderError& e) {  // no good program yet for this stage: show why
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+        glViewport(0, 0, width, height);
+        glClearColor(0.08f, 0.02f, 0.02f, 1);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        renderError_ = e.what();
+        if (printedRenderError_ != renderError_)
+            say(std::cerr, "shadowlab: shader error (no good program for this stage yet): " +
+                               oneLine(e.what()));
+        printedRenderError_ = renderError_;
+    }
+}
+
+void WindowSession::PictureTarget::resize(int width, int height) {
+    if (width == width_ && height == height_) return;
+    width_ = width;
+    height_ = height;
+    colour_ = Renderbuffer::create();
+    glBindRenderbuffer(GL_RENDERBUFFER, colour_.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    depthStencil_ = Renderbuffer::create();
+    glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+    fbo_ = Framebuffer::create();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              depthStencil_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 std::string WindowSession::draw(int width, int height, const std::string& saveTo, bool withHud) {
     width_ = width;
     height_ = height;
@@ -529,30 +586,38 @@ std::string WindowSession::draw(int width, int height, const std::string& saveTo
         r.lightPosition = circlingLight(r.lightPosition, kLightRadiansPerSecond, dt);
     }
     lastAnimation_ = start;
-    const std::string key = refusedKey(r.stage().id);
-    auto refused = refused_.find(key);
-    try {
-        // Refused by the trial and never drawn here: building it from disk could hang or crash.
-        if (refused != refused_.end() && !drewOnce_.count(key)) throw ShaderError(refused->second);
-        r.render(0, width, height);
-        drewOnce_.insert(key);
-        renderError_.clear();
-    } catch (const ShaderError& e) {  // no good program yet for this stage: show why
+    const float scale = textScale(width, height);
+    std::pair<int, int> bands{0, 0};
+    if (hudMode_ != HudMode::Hidden)
+        bands = hudBands(layoutHud(hudBlocks(), width, height, scale), height, scale);
+    // The picture goes between the panels, so that none covers it; panels asked for that would
+    // leave it less than half the window (the full panel with the help) lie over it instead.
+    if (bands.first + bands.second > height / 2) bands = {0, 0};
+    std::string saved;
+    if (!saveTo.empty() && !withHud) {  // the picture alone, at the window's size
+        drawStage(0, width, height);
+        saved = readPixelsToPng(saveTo);
+    }
+    const int pictureHeight = height - bands.first - bands.second;
+    if (bands.first + bands.second == 0) {
+        drawStage(0, width, height);
+    } else {
+        picture_.resize(width, pictureHeight);
+        drawStage(picture_.framebuffer(), width, pictureHeight);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, width, height);
-        glClearColor(0.08f, 0.02f, 0.02f, 1);
+        glClearColor(0.1f, 0.1f, 0.12f, 1);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        renderError_ = e.what();
-        if (printedRenderError_ != renderError_)
-            say(std::cerr, "shadowlab: shader error (no good program for this stage yet): " +
-                               oneLine(e.what()));
-        printedRenderError_ = renderError_;
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, picture_.framebuffer());
+        glBlitFramebuffer(0, 0, width, pictureHeight, 0, bands.second, width,
+                          bands.second + pictureHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
-    std::string saved;
-    if (!saveTo.empty() && !withHud) saved = readPixelsToPng(saveTo);
+    pictureTop_ = bands.first;
+    pictureHeight_ = pictureHeight;
     if (hudMode_ != HudMode::Hidden) {
         try {
-            hud_.draw(r.shaders(), hudBlocks(), width, height, hudScale(width, height));
+            hud_.draw(r.shaders(), hudBlocks(), width, height, scale);
         } catch (const ShaderError& e) {  // a student's broken hud/text: the picture still shows
             if (renderError_.empty()) renderError_ = e.what();
         }
@@ -593,6 +658,11 @@ std::string WindowSession::stateJson() const {
     j["param"] = specs.empty() ? "" : specs[selectedParam_ % specs.size()].name;
     j["value"] = specs.empty() ? "" : r.params().text(j["param"].get<std::string>());
     j["help"] = showHelp_;
+    j["width"] = width_;
+    j["height"] = height_;
+    j["pictureTop"] = pictureTop_;  // window rows above the picture (the top panels' band)
+    j["pictureHeight"] = pictureHeight_;
+    j["textScale"] = textScale(width_, height_);
     return j.dump();
 }
 

@@ -56,9 +56,26 @@ class WindowSession {
     void saveShot();
     void flash(const std::string& text, bool error);
     std::vector<HudBlock> hudBlocks() const;
+    HudBlock flashBlock() const;
     std::string title() const;
     std::string treeText() const;
     std::string readPixelsToPng(const std::string& path) const;
+    float textScale(int width, int height) const;
+    void drawStage(GLuint target, int width, int height);
+
+    // The picture's own framebuffer when panels take bands of the window.
+    class PictureTarget {
+      public:
+        void resize(int width, int height);
+        GLuint framebuffer() const { return fbo_.id(); }
+
+      private:
+        int width_ = 0, height_ = 0;
+        Renderbuffer colour_, depthStencil_;
+        Framebuffer fbo_;
+    };
+    PictureTarget picture_;
+    int pictureTop_ = 0, pictureHeight_ = 0;
 
     WindowArgs args_;
     RenderRequest request_;
@@ -73,7 +90,7 @@ class WindowSession {
     int width_ = 0, height_ = 0;
     std::size_t selectedParam_ = 0;
     bool showHelp_ = false;
-    HudMode hudMode_ = HudMode::Full;
+    HudMode hudMode_ = HudMode::Compact;  // the full panel is one key away (i)
     bool animateLight_ = false;
     Clock::time_point lastAnimation_;
     std::vector<std::string> reloadErrors_;

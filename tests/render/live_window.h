@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -16,8 +17,11 @@
 #include <string>
 #include <thread>
 
+#include "metrics/image.h"
+
 // Last: its macros (None, Bool, Status...) would clash with gtest's headers.
-#include <X11/Xlib.h>  // NOLINT(llvm-include-order)
+#include <X11/Xlib.h>   // NOLINT(llvm-include-order)
+#include <X11/Xutil.h>  // NOLINT(llvm-include-order)
 
 namespace sl::test {
 
@@ -64,13 +68,16 @@ inline pid_t spawn(const std::string& command, const std::string& dir,
 // without, the window must take it itself (a bare X server has no window manager to do it).
 class LiveWindow {
   public:
-    LiveWindow(const std::string& args, const std::string& dir, bool focus = true) : dir_(dir) {
+    // `screen`: the virtual screen's size (a projector's 1920x1080 for the full-screen tests).
+    LiveWindow(const std::string& args, const std::string& dir, bool focus = true,
+               const std::string& screen = "1280x1024")
+        : dir_(dir) {
         fs::create_directories(dir + "/x");
         // Xvfb picks a free display itself and writes its number once it accepts connections
         // (-displayfd): two servers started at once never race for one number, as xvfb-run -a's
         // look at the lock files can ("failed to open display" under a parallel ctest).
-        xserver_ =
-            spawn("exec Xvfb -displayfd 1 -ac -nolisten tcp -screen 0 1280x1024x24", dir + "/x");
+        xserver_ = spawn("exec Xvfb -displayfd 1 -ac -nolisten tcp -screen 0 " + screen + "x24",
+                         dir + "/x");
         if (!waitUntil(
                 [&] { return readText(dir + "/x/stdout.txt").find('\n') != std::string::npos; },
                 30))
@@ -180,6 +187,41 @@ class LiveWindow {
         bool sent = XSendEvent(d, e.xclient.window, False, NoEventMask, &e) != 0;
         XCloseDisplay(d);  // flushes
         return sent;
+    }
+    // What the X server shows in the window now (HUD included): a screenshot.
+    Image grab() {
+        Image img;
+        Display* d = XOpenDisplay(display_.c_str());
+        if (!d) return img;
+        const ::Window win = std::stoul(id_);
+        XWindowAttributes a{};
+        XGetWindowAttributes(d, win, &a);
+        // From the screen, where the window is (a window's own image fails when part of it is
+        // off the screen: BadMatch).
+        const ::Window root = DefaultRootWindow(d);
+        int x0 = 0, y0 = 0;
+        ::Window child;
+        XTranslateCoordinates(d, win, root, 0, 0, &x0, &y0, &child);
+        const int rootW = DisplayWidth(d, DefaultScreen(d)),
+                  rootH = DisplayHeight(d, DefaultScreen(d));
+        a.width = std::min(a.width, rootW - x0);
+        a.height = std::min(a.height, rootH - y0);
+        if (x0 < 0 || y0 < 0 || a.width <= 0 || a.height <= 0) {
+            XCloseDisplay(d);
+            return img;
+        }
+        if (XImage* x = XGetImage(d, root, x0, y0, a.width, a.height, AllPlanes, ZPixmap)) {
+            img = Image(a.width, a.height);
+            for (int j = 0; j < a.height; ++j)
+                for (int i = 0; i < a.width; ++i) {
+                    unsigned long p = XGetPixel(x, i, j);
+                    std::uint8_t* q = img.at(i, j);
+                    q[0] = (p >> 16) & 255, q[1] = (p >> 8) & 255, q[2] = p & 255, q[3] = 255;
+                }
+            XDestroyImage(x);
+        }
+        XCloseDisplay(d);
+        return img;
     }
     std::string out() const { return readText(dir_ + "/stdout.txt"); }
     std::string err() const { return readText(dir_ + "/stderr.txt"); }

@@ -389,13 +389,14 @@ TEST(LiveWindow, RepairedShaderClearsTheError) {
     EXPECT_NE(w.out().find("every program builds again\n"), std::string::npos) << w.out();
 }
 
-// `i` cycles the HUD: full, one line, hidden, full; `h` shows the help.
+// `i` cycles the HUD: compact (the default, for a projector), full, hidden, compact; `h`
+// shows the help.
 TEST(LiveWindow, HudToggles) {
     std::string dir = tempDir("live-hud");
     LiveWindow w("--state state.json --size 320x240", dir);
     ASSERT_TRUE(w.ready()) << w.err();
-    ASSERT_TRUE(w.waitState([](const auto& s) { return s["hud"] == "full"; }, 30));
-    for (const char* expected : {"compact", "hidden", "full"}) {
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["hud"] == "compact"; }, 30));
+    for (const char* expected : {"full", "hidden", "compact"}) {
         ASSERT_TRUE(w.keys("i"));
         EXPECT_TRUE(w.waitState([&](const auto& s) { return s["hud"] == expected; }, 10))
             << expected;
@@ -510,7 +511,7 @@ TEST(Window, MirrorBringsItsSceneAndFixedRunsLegacy) {
 // Caps Lock (or Shift) on a letter is the same command: `I` and `H` as `i` and `h`.
 TEST(Window, CapitalLettersAreTheSameCommands) {
     auto s = stateAfterKeys("IH");
-    EXPECT_EQ(s["hud"], "compact");
+    EXPECT_EQ(s["hud"], "full");
     EXPECT_EQ(s["help"], true);
 }
 

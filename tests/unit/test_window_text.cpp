@@ -50,8 +50,8 @@ TEST(HudText, ABlockSaysHowManyLinesDoNotFit) {
 }
 
 TEST(HudText, ScaleFollowsTheSmallerSide) {
-    EXPECT_EQ(hudScale(320, 240), 1.0f);
-    EXPECT_FLOAT_EQ(hudScale(1920, 1080), 3.0f);
+    EXPECT_FLOAT_EQ(hudScale(320, 240), 1.2f);
+    EXPECT_FLOAT_EQ(hudScale(1920, 1080), 5.4f);
     EXPECT_FLOAT_EQ(hudScale(400, 1080), hudScale(1080, 400));  // a tall narrow window too
 }
 

@@ -1,0 +1,149 @@
+// The window on a projector, live under Xvfb with real X events: full screen at 1920x1080 with
+// text tall enough to read from the back of a hall (measured on a screenshot of the window), and
+// panels that never cover the picture: the rows between them are the whole picture, the same as
+// the headless render at that size (the mirror's reflection at three sizes, the shadow-map view).
+#include <gtest/gtest.h>
+
+#include "render_fixture.h"
+
+// Last: it includes Xlib, whose macros (None, Bool, Status...) would clash with gtest's headers.
+#include "live_window.h"  // NOLINT(llvm-include-order)
+
+using namespace sl;
+using namespace sl::test;
+
+namespace {
+
+// The height in pixels of the first line of yellow HUD text above row `below`.
+int firstTextLineHeight(const Image& img, int below) {
+    int first = -1, last = -1;
+    for (int j = 0; j < below && j < img.height; ++j) {
+        bool yellow = false;
+        for (int i = 0; i < img.width && !yellow; ++i) {
+            const std::uint8_t* p = img.at(i, j);
+            yellow = p[0] > 200 && p[1] > 200 && p[2] < 190;
+        }
+        if (yellow && first < 0) first = j;
+        if (yellow) last = j;
+        if (!yellow && first >= 0) break;
+    }
+    return first < 0 ? 0 : last - first + 1;
+}
+
+// The rows [top, top + request.height) of the window against the headless picture: the same
+// tolerance as the window-against-headless tests (mean under 1 level, under 0.5 % of the pixels
+// off by more than 8).
+void expectWholePicture(const Image& window, int top, const RenderRequest& request,
+                        const std::string& what) {
+    Image headless = renderHeadless(request).image;
+    ASSERT_EQ(window.width, headless.width) << what;
+    ASSERT_LE(top + headless.height, window.height) << what;
+    long off = 0;
+    double sum = 0;
+    for (int j = 0; j < headless.height; ++j)
+        for (int i = 0; i < headless.width; ++i) {
+            int worst = 0;
+            for (int k = 0; k < 3; ++k) {
+                int d = std::abs(window.at(i, top + j)[k] - headless.at(i, j)[k]);
+                worst = std::max(worst, d);
+                sum += d;
+            }
+            off += worst > 8;
+        }
+    const long pixels = long(headless.width) * headless.height;
+    EXPECT_LT(sum / (3.0 * pixels), 1.0) << what;
+    EXPECT_LT(off, pixels / 200) << what << ": " << off << " pixels differ";
+}
+
+// Waits for a frame drawn at the given size (a new one unless the window has that size now);
+// false if none comes.
+bool frameAt(LiveWindow& w, int width, int height) {
+    auto now = w.state();
+    const bool already = now.value("width", 0) == width && now.value("height", 0) == height;
+    const long drawn = already ? 0 : now.value("drawn", 0L);
+    return w.waitState(
+        [&](const auto& s) {
+            return s["width"] == width && s["height"] == height && s["drawn"] > drawn;
+        },
+        30);
+}
+
+}  // namespace
+
+// --fullscreen on a 1920x1080 screen: the window takes it all, the HUD's text is at least 3 % of
+// the height (it was 2.3 %), `f` leaves full screen and comes back; --hud-scale scales the text.
+TEST(LiveWindowProjector, FullScreenTextIsLegibleAt1920x1080) {
+    std::string dir = tempDir("live-fullscreen");
+    LiveWindow w("--fullscreen --state state.json", dir, true, "1920x1080");
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(
+        w.waitState([](const auto& s) { return s["width"] == 1920 && s["height"] == 1080; }, 30))
+        << w.state().dump();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    Image shot = w.grab();
+    ASSERT_GE(shot.width, 1900);  // less a border pixel: no window manager to place it
+    const int text = firstTextLineHeight(shot, w.state()["pictureTop"]);
+    std::cout << "text height at 1920x1080: " << text << " px (" << 100.0 * text / 1080
+              << " % of the height)\n";
+    EXPECT_GE(text, 0.03 * 1080) << "text height in pixels";
+    ASSERT_TRUE(w.keys("f"));
+    EXPECT_TRUE(w.waitState([](const auto& s) { return s["width"] == 640; }, 15))
+        << w.state().dump();
+    ASSERT_TRUE(w.keys("f"));
+    EXPECT_TRUE(w.waitState([](const auto& s) { return s["width"] == 1920; }, 15))
+        << w.state().dump();
+    EXPECT_EQ(w.quit(), 0);
+
+    std::string dir2 = tempDir("live-hud-scale");
+    LiveWindow half("--fullscreen --hud-scale 0.5 --state state.json", dir2, true, "1920x1080");
+    ASSERT_TRUE(half.ready()) << half.err();
+    ASSERT_TRUE(half.waitState([](const auto& s) { return s["width"] == 1920; }, 30));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const int halfText = firstTextLineHeight(half.grab(), half.state()["pictureTop"]);
+    EXPECT_NEAR(halfText, text / 2.0, 2) << "--hud-scale 0.5";
+    EXPECT_EQ(half.quit(), 0);
+}
+
+// The default HUD over the mirror stage at 1024x768, 1280x720 and 1920x1080 (the window resized
+// with xdotool), then the hardware stage's shadow-map view: between the panels the window shows
+// the whole picture, reflection included, exactly as rendered headless at that size.
+TEST(LiveWindowProjector, PanelsNeverCoverThePicture) {
+    std::string dir = tempDir("live-uncovered");
+    LiveWindow w("--stage mirror --state state.json --size 1024x768", dir, true, "1920x1080");
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["stage"] == "mirror"; }, 30));
+    // With no window manager the window sits at -1,-1 (its border): all of it on the screen.
+    ASSERT_EQ(w.xdo("windowmove " + w.id() + " 0 0"), 0);
+    for (auto [width, height] : {std::pair{1024, 768}, {1280, 720}, {1920, 1080}}) {
+        ASSERT_EQ(w.xdo("windowsize " + w.id() + " " + std::to_string(width) + " " +
+                        std::to_string(height)),
+                  0);
+        ASSERT_TRUE(frameAt(w, width, height)) << width << "x" << height;
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        auto s = w.state();
+        const int top = s["pictureTop"], pictureHeight = s["pictureHeight"];
+        EXPECT_GT(top, 0) << "the compact HUD takes a band at the top";
+        RenderRequest r;
+        r.stage = "mirror";
+        r.width = width;
+        r.height = pictureHeight;
+        expectWholePicture(w.grab(), top, r, "mirror at " + std::to_string(width));
+    }
+    ASSERT_EQ(w.xdo("windowsize " + w.id() + " 1024 768"), 0);
+    ASSERT_TRUE(frameAt(w, 1024, 768));
+    ASSERT_TRUE(w.keys("5 v"));
+    ASSERT_TRUE(w.waitState(
+        [](const auto& s) { return s["stage"] == "hardware" && s["view"] == "shadow-map"; }, 30))
+        << w.state().dump();
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    auto s = w.state();
+    const int top = s["pictureTop"], pictureHeight = s["pictureHeight"];
+    EXPECT_LT(top + pictureHeight, 768) << "the view's legend takes a band at the bottom";
+    RenderRequest r;
+    r.stage = "hardware";
+    r.view = ViewMode::ShadowMap;
+    r.width = 1024;
+    r.height = pictureHeight;
+    expectWholePicture(w.grab(), top, r, "hardware shadow-map view");
+    EXPECT_EQ(w.quit(), 0);
+}
