@@ -3,6 +3,10 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
 #include "app/commands.h"
 #include "app/worker.h"
 #include "gl/debug.h"
@@ -11,6 +15,8 @@
 #include "platform/headless.h"
 #include "render/hud.h"
 #include "render/renderer.h"
+#include "scene/scene_json.h"
+#include "stages/expectations.h"
 
 namespace sl {
 
@@ -113,6 +119,56 @@ class WorkerTrial : public ProgramTrial {
     std::unique_ptr<BackgroundSeries> series_;
 };
 
+// The lessons `n` steps through: each stage's entries of expectations.json (its defaults first),
+// then the lecture's figures of slides_examples/ for that stage (one per variant).
+std::vector<WindowLesson> windowLessons() {
+    std::vector<WindowLesson> lessons;
+    for (const Expectation& e : expectations()) {
+        WindowLesson l{e.stage, e.scene, e.trees, e.set, e.label() + ": " + e.outcome, e.look};
+        lessons.push_back(l);
+    }
+    namespace fs = std::filesystem;
+    std::vector<fs::path> files;
+    std::error_code error;
+    for (const auto& f : fs::directory_iterator(dataDir() + "/slides_examples", error))
+        if (f.path().extension() == ".json") files.push_back(f.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& path : files) {
+        std::ifstream in(path);
+        nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+        if (!j.is_object() || !j.contains("stage") || !j["stage"].is_string()) continue;
+        auto strings = [](const nlohmann::json& o) {
+            std::vector<std::pair<std::string, std::string>> sets;
+            if (o.is_object())
+                for (const auto& [k, v] : o.items())
+                    if (v.is_string()) sets.emplace_back(k, v.get<std::string>());
+            return sets;
+        };
+        WindowLesson l;
+        l.stage = j["stage"];
+        l.scene = j.value("scene", "");
+        if (j.contains("glsl") && j["glsl"].is_string()) l.trees = {j["glsl"]};
+        if (j.contains("view") && j["view"].is_string()) parseView(j["view"], l.view);
+        if (j.contains("comment") && j["comment"].is_array() && !j["comment"].empty() &&
+            j["comment"].back().is_string())
+            l.look = j["comment"].back();
+        const std::string name = "figure " + path.stem().string();
+        if (j.contains("variants") && j["variants"].is_array()) {
+            for (const auto& v : j["variants"]) {
+                WindowLesson variant = l;
+                variant.name = name + " " + v.value("label", "");
+                variant.sets = strings(v.value("parameters", nlohmann::json()));
+                lessons.push_back(variant);
+            }
+        } else {
+            l.name = name;
+            l.sets = strings(j.value("parameters", nlohmann::json()));
+            lessons.push_back(l);
+        }
+    }
+    return lessons;
+}
+
 }  // namespace
 
 Command addWindowCommand(CLI::App& app) {
@@ -152,6 +208,7 @@ Command addWindowCommand(CLI::App& app) {
                 return guarded([&] {
                     WindowArgs args = a->window;
                     args.request = toRequest(a->common);
+                    args.lessons = windowLessons();
                     args.trial =
                         std::make_shared<WorkerTrial>(a->limits, toBackend(a->common.backend));
                     return runWindow(args);

@@ -72,6 +72,7 @@ WindowSession::WindowSession(const WindowArgs& args)
 }
 
 std::string WindowSession::sceneFor(const StageInfo& s) {
+    if (lessonScene_.first == s.id && !lessonScene_.second.empty()) return lessonScene_.second;
     RenderRequest r = request_;
     r.stage = s.id;
     std::string name = effectiveScene(r);
@@ -128,7 +129,11 @@ bool WindowSession::selectStage(std::size_t index, GlslTree sessionTree) {
     r.selectStage(s.id);
     if (&r != &prev && prevStage == s.id) r.params() = prev.params();  // the same stage, other tree
     r.view = offers(s, prevView) ? prevView : ViewMode::Final;
-    if (prevStage != s.id) selectedParam_ = 0;
+    if (prevStage != s.id) {
+        selectedParam_ = 0;
+        lesson_ = 0;
+        lessonScene_ = {};
+    }
     slot_ = next;
     scene_ = scene;
     if (sessionTree != tree_) reloadErrors_.clear();  // the other tree's: not about this picture
@@ -166,6 +171,9 @@ bool WindowSession::key(unsigned char key, bool shift) {
             for (int k = 0; k < steps; ++k) r.params().step(p.name, direction);
             return true;
         }
+        case 'n':  // the stage's next lesson, its settings applied
+            nextLesson();
+            return true;
         case 'x':  // the stage's parameters back to their defaults
             for (const ParamSpec& p : specs) r.params().set(p.name, p.defaultText());
             flash("parameters of '" + r.stage().id + "' reset", false);
@@ -247,6 +255,50 @@ void WindowSession::reload(bool force) {
     if (errors.empty())
         say(std::cout, hadErrors ? "shadowlab: shaders reloaded; every program builds again"
                                  : "shadowlab: shaders reloaded");
+}
+
+std::vector<const WindowLesson*> WindowSession::lessons() const {
+    std::vector<const WindowLesson*> list;
+    Renderer& r = *slot_->renderer;
+    const std::string tree = treeName(r.shaders().tree());
+    for (const WindowLesson& l : args_.lessons) {
+        bool inTree = l.trees.empty();
+        for (const auto& t : l.trees) inTree = inTree || t == tree;
+        if (l.stage == r.stage().id && inTree) list.push_back(&l);
+    }
+    return list;
+}
+
+void WindowSession::nextLesson() {
+    auto list = lessons();
+    if (list.empty()) {
+        flash("n: this stage has no lessons", false);
+        return;
+    }
+    lesson_ = (lesson_ + 1) % list.size();
+    const WindowLesson& l = *list[lesson_];
+    const StageInfo& s = slot_->renderer->stage();
+    lessonScene_ = {s.id, l.scene};
+    if (sceneFor(s) != scene_) selectStage(slot_->renderer->stageIndex(), tree_);  // its scene
+    Renderer& r = *slot_->renderer;
+    for (const ParamSpec& p : r.params().specs()) r.params().set(p.name, p.defaultText());
+    std::string refused;
+    for (const auto& [name, value] : l.sets) {
+        std::string e = r.params().set(name, value);
+        if (!e.empty()) refused = e;
+    }
+    if (offers(r.stage(), l.view)) r.view = l.view;
+    if (!refused.empty()) flash("n: " + refused, true);  // else the HUD names the lesson
+}
+
+std::string WindowSession::lessonLine() const {
+    auto list = lessons();
+    if (list.empty()) return "";
+    const std::size_t k = lesson_ % list.size();
+    std::string line = "lesson " + std::to_string(k + 1) + "/" + std::to_string(list.size()) +
+                       " (n): " + list[k]->name;
+    if (!list[k]->look.empty()) line += ". Look for: " + list[k]->look;
+    return line;
 }
 
 std::string WindowSession::refusedKey(const std::string& stage) const {
@@ -449,9 +501,11 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
             line += " | " + name + " = " + r.params().text(name);
         }
         top.lines.push_back({line, yellow});
+        const std::string lesson = lessonLine();
+        if (!lesson.empty()) top.lines.push_back({lesson, white});
         if (!errors.empty())
             top.lines.push_back({"shader error (i: all of it): " + oneLine(errors[0]), errorText});
-        top.maxLines = 4;
+        top.maxLines = 5;
         blocks.push_back(top);
         if (!legend.empty()) {
             HudBlock b;
@@ -493,6 +547,8 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
                                  r.params().text(specs[i].name),
                              selected ? green : grey});
     }
+    const std::string lesson = lessonLine();
+    if (!lesson.empty()) top.lines.push_back({lesson, white});
     for (const auto& n : r.stats.notes) top.lines.push_back({n, blue});
     if (showHelp_)
         for (const auto& h : windowHelp()) top.lines.push_back({h, white});
@@ -658,6 +714,8 @@ std::string WindowSession::stateJson() const {
     j["param"] = specs.empty() ? "" : specs[selectedParam_ % specs.size()].name;
     j["value"] = specs.empty() ? "" : r.params().text(j["param"].get<std::string>());
     j["help"] = showHelp_;
+    j["lesson"] = lessonLine();
+    for (const ParamSpec& p : specs) j["params"][p.name] = r.params().text(p.name);
     j["width"] = width_;
     j["height"] = height_;
     j["pictureTop"] = pictureTop_;  // window rows above the picture (the top panels' band)

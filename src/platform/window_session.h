@@ -56,6 +56,10 @@ class WindowSession {
     void saveShot();
     void flash(const std::string& text, bool error);
     std::vector<HudBlock> hudBlocks() const;
+    // The stage's lessons in the tree it runs in, and the one chosen with `n` ("" when none).
+    std::vector<const WindowLesson*> lessons() const;
+    void nextLesson();
+    std::string lessonLine() const;
     HudBlock flashBlock() const;
     std::string title() const;
     std::string treeText() const;
@@ -75,6 +79,8 @@ class WindowSession {
         Framebuffer fbo_;
     };
     PictureTarget picture_;
+    std::size_t lesson_ = 0;                           // index into lessons(); 0 = the defaults
+    std::pair<std::string, std::string> lessonScene_;  // stage, scene its lesson brings
     int pictureTop_ = 0, pictureHeight_ = 0;
 
     WindowArgs args_;

@@ -147,3 +147,42 @@ TEST(LiveWindowProjector, PanelsNeverCoverThePicture) {
     expectWholePicture(w.grab(), top, r, "hardware shadow-map view");
     EXPECT_EQ(w.quit(), 0);
 }
+
+// `n` steps through the stage's lessons with real key presses: the bias stage's -0.5 and flipped
+// light, the hardware stage's lab scene with its polygon offsets, the lecture's figures after
+// the entries; the HUD names each and says what to look for.
+TEST(LiveWindowProjector, LessonKeyAppliesEachLesson) {
+    std::string dir = tempDir("live-lessons");
+    LiveWindow w("--stage bias --state state.json --size 640x480", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["stage"] == "bias"; }, 30));
+    auto lesson = [&](const std::string& fragment) {
+        return w.waitState(
+            [&](const auto& s) {
+                return s["lesson"].template get<std::string>().find(fragment) != std::string::npos;
+            },
+            15);
+    };
+    EXPECT_TRUE(lesson("lesson 1/")) << w.state().dump();
+    EXPECT_NE(w.state()["lesson"].get<std::string>().find("Look for: "), std::string::npos);
+    ASSERT_TRUE(w.keys("n"));
+    ASSERT_TRUE(lesson("light-z=flipped")) << w.state().dump();
+    EXPECT_EQ(w.state()["params"]["light-z"], "flipped");
+    ASSERT_TRUE(w.keys("n"));
+    ASSERT_TRUE(lesson("bias-z=+0.5")) << w.state().dump();
+    auto s = w.state();
+    EXPECT_EQ(s["params"]["light-z"], "standard") << "each lesson starts from the defaults";
+    EXPECT_EQ(s["params"]["bias-z"], "+0.5");
+    ASSERT_TRUE(w.keys("n"));
+    ASSERT_TRUE(lesson("figure bias-inverted")) << w.state().dump();
+    // The hardware stage: the lab scene comes with its lessons, and goes with the stage.
+    ASSERT_TRUE(w.keys("5 n n"));
+    ASSERT_TRUE(lesson("offset-factor=0 offset-units=6: acne")) << w.state().dump();
+    s = w.state();
+    EXPECT_EQ(s["scene"], "lab");
+    EXPECT_EQ(s["params"]["offset-factor"], "0");
+    ASSERT_TRUE(w.keys("4"));
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["stage"] == "margin"; }, 15));
+    EXPECT_EQ(w.state()["scene"], "slides");
+    EXPECT_EQ(w.quit(), 0);
+}
