@@ -171,6 +171,13 @@ bool WindowSession::key(unsigned char key, bool shift) {
             for (int k = 0; k < steps; ++k) r.params().step(p.name, direction);
             return true;
         }
+        case 's':  // the split view: the lesson's failure beside its fix
+            split_ = !split_;
+            if (split_ && splitHalves().empty()) {
+                split_ = false;
+                flash("s: this stage has no second lesson in this scene to show beside it", false);
+            }
+            return true;
         case 'n':  // the stage's next lesson, its settings applied
             nextLesson();
             return true;
@@ -289,6 +296,49 @@ void WindowSession::nextLesson() {
     }
     if (offers(r.stage(), l.view)) r.view = l.view;
     if (!refused.empty()) flash("n: " + refused, true);  // else the HUD names the lesson
+}
+
+std::vector<WindowSession::Half> WindowSession::splitHalves() const {
+    Renderer& r = *slot_->renderer;
+    if (const ParamSpec* method = r.params().find("mirror-method")) {
+        std::vector<Half> halves;
+        for (const auto& choice : method->choices)
+            halves.push_back({"mirror-method=" + choice, {{"mirror-method", choice}}});
+        if (halves.size() >= 2) halves.resize(2);
+        return halves;
+    }
+    auto list = lessons();
+    if (list.size() < 2) return {};
+    const std::size_t k = lesson_ % list.size();
+    for (std::size_t step = 1; step < list.size(); ++step) {
+        const WindowLesson& next = *list[(k + step) % list.size()];
+        if (next.scene == list[k]->scene && next.view == list[k]->view)
+            return {{list[k]->name, list[k]->sets}, {next.name, next.sets}};
+    }
+    return {};
+}
+
+// Both halves with the renderer's own camera and light, each with its settings (the stage's
+// defaults and the lesson's); the settings on screen come back afterwards.
+void WindowSession::drawSplit(int width, int height) {
+    Renderer& r = *slot_->renderer;
+    const auto halves = splitHalves();
+    const ParamSet kept = r.params();
+    const int half = width / 2;
+    for (std::size_t k = 0; k < halves.size() && k < 2; ++k) {
+        for (const ParamSpec& p : r.params().specs()) r.params().set(p.name, p.defaultText());
+        for (const auto& [name, value] : halves[k].sets) r.params().set(name, value);
+        r.sceneChanged();  // the two halves' shadow maps differ: no cached map carries over
+        picture_.resize(half, height);
+        drawStage(picture_.framebuffer(), half, height);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, picture_.framebuffer());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glBlitFramebuffer(0, 0, half, height, int(k) * half, pictureBottom_, int(k) * half + half,
+                          pictureBottom_ + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    r.params() = kept;
+    r.sceneChanged();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 std::string WindowSession::lessonLine() const {
@@ -492,6 +542,18 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
     const std::string view = viewLabel(s, r.view);
     const std::string legend = viewLegend(s, r.view);
 
+    if (split_) {
+        const auto halves = splitHalves();
+        for (std::size_t k = 0; k < halves.size() && k < 2; ++k) {
+            HudBlock b;
+            b.bottom = true;
+            b.column = int(k);
+            b.half = true;
+            b.lines = {{(k == 0 ? "left: " : "right: ") + halves[k].name, white}};
+            b.maxLines = 3;
+            blocks.push_back(b);
+        }
+    }
     if (hudMode_ == HudMode::Compact) {  // for a projector: what the picture is, and how to read it
         HudBlock top;
         std::string line = title() + " | " + treeName(r.shaders().tree());
@@ -655,7 +717,15 @@ std::string WindowSession::draw(int width, int height, const std::string& saveTo
         saved = readPixelsToPng(saveTo);
     }
     const int pictureHeight = height - bands.first - bands.second;
-    if (bands.first + bands.second == 0) {
+    pictureBottom_ = bands.second;
+    if (split_ && splitHalves().empty()) split_ = false;  // another stage, or its only lesson
+    if (split_) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, width, height);
+        glClearColor(0.1f, 0.1f, 0.12f, 1);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        drawSplit(width, pictureHeight);
+    } else if (bands.first + bands.second == 0) {
         drawStage(0, width, height);
     } else {
         picture_.resize(width, pictureHeight);
@@ -671,6 +741,8 @@ std::string WindowSession::draw(int width, int height, const std::string& saveTo
     }
     pictureTop_ = bands.first;
     pictureHeight_ = pictureHeight;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);  // the stage's passes leave theirs
     if (hudMode_ != HudMode::Hidden) {
         try {
             hud_.draw(r.shaders(), hudBlocks(), width, height, scale);
@@ -715,6 +787,9 @@ std::string WindowSession::stateJson() const {
     j["value"] = specs.empty() ? "" : r.params().text(j["param"].get<std::string>());
     j["help"] = showHelp_;
     j["lesson"] = lessonLine();
+    j["split"] = nlohmann::json::array();
+    if (split_)
+        for (const Half& h : splitHalves()) j["split"].push_back(h.name);
     for (const ParamSpec& p : specs) j["params"][p.name] = r.params().text(p.name);
     j["width"] = width_;
     j["height"] = height_;

@@ -60,6 +60,14 @@ class WindowSession {
     std::vector<const WindowLesson*> lessons() const;
     void nextLesson();
     std::string lessonLine() const;
+    // The split view's two halves: the lesson on screen and the next one in the same scene
+    // (its failure and its fix), or the mirror's texture and stencil methods. Empty: no pair.
+    struct Half {
+        std::string name;
+        std::vector<std::pair<std::string, std::string>> sets;
+    };
+    std::vector<Half> splitHalves() const;
+    void drawSplit(int width, int height);
     HudBlock flashBlock() const;
     std::string title() const;
     std::string treeText() const;
@@ -79,9 +87,10 @@ class WindowSession {
         Framebuffer fbo_;
     };
     PictureTarget picture_;
+    bool split_ = false;
     std::size_t lesson_ = 0;                           // index into lessons(); 0 = the defaults
     std::pair<std::string, std::string> lessonScene_;  // stage, scene its lesson brings
-    int pictureTop_ = 0, pictureHeight_ = 0;
+    int pictureTop_ = 0, pictureHeight_ = 0, pictureBottom_ = 0;
 
     WindowArgs args_;
     RenderRequest request_;

@@ -90,23 +90,25 @@ std::vector<HudPanel> layoutHud(const std::vector<HudBlock>& blocks, int width, 
     std::vector<HudPanel> panels;
     if (width <= 0 || height <= 0) return panels;
     const float w = width / scale, h = height / scale;  // the HUD's own (unscaled) pixels
-    const float maxText = std::max(w - 2 * (kHudMargin + Hud::kPad), 8.0f);
-    float top = kHudMargin, bottom = h - kHudMargin;
+    float top[2] = {kHudMargin, kHudMargin}, bottom[2] = {h - kHudMargin, h - kHudMargin};
     for (const HudBlock& block : blocks) {
+        const int c = block.column == 1 ? 1 : 0;
+        const float span = c == 1 || block.half ? w / 2 : w;
         HudPanel p;
-        p.lines = layoutHudBlock(block, maxText);
+        p.lines = layoutHudBlock(block, std::max(span - 2 * (kHudMargin + Hud::kPad), 8.0f));
+        p.x = c * w / 2 + kHudMargin;
         if (p.lines.empty()) continue;
         p.width = 0;
         for (const auto& l : p.lines)
             p.width = std::max(p.width, textWidth(l.text) + 2 * Hud::kPad);
         p.height = p.lines.size() * Hud::kLineHeight + 2 * Hud::kPad - 3;
-        p.y = block.bottom ? bottom - p.height : top;
+        p.y = block.bottom ? bottom[c] - p.height : top[c];
         p.bottom = block.bottom;
         p.color = block.panel;
         if (block.bottom)
-            bottom = p.y - kHudMargin;
+            bottom[c] = p.y - kHudMargin;
         else
-            top = p.y + p.height + kHudMargin;
+            top[c] = p.y + p.height + kHudMargin;
         panels.push_back(std::move(p));
     }
     return panels;
@@ -140,10 +142,10 @@ void Hud::draw(ShaderLibrary& shaders, const std::vector<HudBlock>& blocks, int 
     // stb_easy_font writes 16-byte vertices: x, y, z as floats, then 4 colour bytes.
     glVertexAttribPointer(kPositionAttribute, 3, GL_FLOAT, GL_FALSE, 16, nullptr);
     for (const HudPanel& p : layoutHud(blocks, width, height, scale)) {
-        drawRect(program, kHudMargin, p.y, kHudMargin + p.width, p.y + p.height, p.color);
+        drawRect(program, p.x, p.y, p.x + p.width, p.y + p.height, p.color);
         float y = p.y + kPad;
         for (const HudLine& line : p.lines) {
-            drawText(program, line, kHudMargin + kPad, y);
+            drawText(program, line, p.x + kPad, y);
             y += kLineHeight;
         }
     }

@@ -21,6 +21,10 @@ struct HudBlock {
     bool bottom = false;
     int maxLines = 0;  // wrapped lines beyond this become one "(N more lines)" line; 0: no limit
     glm::vec4 panel{0.0f, 0.0f, 0.0f, 0.78f};  // white text stays readable on a white view
+    // The split view's halves: 0 from the left edge, 1 from the middle; `half`: wrapped to half
+    // the window (column 1 always is).
+    int column = 0;
+    bool half = false;
 };
 
 // Text size for a width x height window: from its smaller side, so a projector's 1080 lines
@@ -38,7 +42,7 @@ std::vector<HudLine> layoutHudBlock(const HudBlock& block, float maxPixels);
 // Where a block's panel goes, in the HUD's unscaled pixels (y down from the top).
 struct HudPanel {
     std::vector<HudLine> lines;
-    float y = 0, width = 0, height = 0;
+    float x = 0, y = 0, width = 0, height = 0;
     bool bottom = false;
     glm::vec4 color{0.0f};
 };
