@@ -190,7 +190,24 @@ void tick(int) {
     glutTimerFunc(kPollMs, tick, 0);
 }
 
+// Arrow keys orbit as a drag of 20 pixels does.
+void special(int key, int, int) {
+    if (g->quitting) return;
+    const int step = 20;
+    bool redraw = key == GLUT_KEY_LEFT    ? g->session->drag(-step, 0)
+                  : key == GLUT_KEY_RIGHT ? g->session->drag(step, 0)
+                  : key == GLUT_KEY_UP    ? g->session->drag(0, -step)
+                  : key == GLUT_KEY_DOWN  ? g->session->drag(0, step)
+                                          : false;
+    if (redraw) glutPostRedisplay();
+}
+
 void mouse(int button, int state, int x, int y) {
+    // The wheel: X buttons 4 and 5 (freeglut's 3 and 4), one notch a press.
+    if ((button == 3 || button == 4) && state == GLUT_DOWN) {
+        if (g->session->zoom(button == 3 ? 1 : -1)) glutPostRedisplay();
+        return;
+    }
     if (button != GLUT_LEFT_BUTTON) return;
     g->dragX = state == GLUT_DOWN ? x : -1;
     g->dragY = y;
@@ -260,6 +277,7 @@ int runWindow(const WindowArgs& args) {
     glutKeyboardFunc(keyboard);
     glutKeyboardUpFunc(keyboardUp);
     glutMouseFunc(mouse);
+    glutSpecialFunc(special);
     glutMotionFunc(motion);
     glutTimerFunc(kPollMs, tick, 0);
     if (args.frames > 0) glutIdleFunc(glutPostRedisplay);  // --frames: frame after frame

@@ -214,6 +214,10 @@ bool WindowSession::key(unsigned char key, bool shift) {
             return true;
         case 'v': {
             const auto& views = r.stage().views;
+            if (views.size() < 2) {
+                flash("v: '" + r.stage().id + "' has one view, the final picture", false);
+                return true;
+            }
             std::size_t i = 0;
             while (i < views.size() && views[i] != r.view) ++i;
             r.view = views[(i + 1) % views.size()];
@@ -229,6 +233,12 @@ bool WindowSession::key(unsigned char key, bool shift) {
 bool WindowSession::drag(int dx, int dy) {
     Renderer& r = *slot_->renderer;
     r.camera = orbitCamera(r.camera, -dx * 0.01f, dy * 0.01f, sceneFloorHeight(r.scene()));
+    return true;
+}
+
+bool WindowSession::zoom(int steps) {
+    Renderer& r = *slot_->renderer;
+    r.camera = zoomCamera(r.camera, std::pow(0.9f, float(steps)));
     return true;
 }
 
@@ -787,6 +797,8 @@ std::string WindowSession::stateJson() const {
     j["value"] = specs.empty() ? "" : r.params().text(j["param"].get<std::string>());
     j["help"] = showHelp_;
     j["lesson"] = lessonLine();
+    j["eye"] = {r.camera.eye.x, r.camera.eye.y, r.camera.eye.z};
+    j["eyeDistance"] = glm::length(r.camera.eye - r.camera.at);
     j["split"] = nlohmann::json::array();
     if (split_)
         for (const Half& h : splitHalves()) j["split"].push_back(h.name);

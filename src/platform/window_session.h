@@ -24,6 +24,8 @@ class WindowSession {
     // Input. Each returns true when the picture must be redrawn.
     bool key(unsigned char key, bool shift);
     bool drag(int dx, int dy);
+    // The mouse wheel: `steps` notches toward the target (negative: away).
+    bool zoom(int steps);
     // A few times a second: settled shader edits, the end of an on-screen message.
     bool tick(Clock::time_point now);
 

@@ -222,3 +222,46 @@ TEST(LiveWindowProjector, SplitShowsFailureBesideFix) {
     EXPECT_TRUE(w.waitState([](const auto& s) { return s["split"].empty(); }, 15));
     EXPECT_EQ(w.quit(), 0);
 }
+
+// The small keys, pressed for real: arrows orbit, the mouse wheel zooms (over the window), `v`
+// in the one-view fixed stage says so, `r` says on screen that it is trying and then that the
+// shaders reloaded, and Esc closes the window fast.
+TEST(LiveWindowProjector, ArrowsWheelAndConfirmations) {
+    std::string dir = tempDir("live-keys");
+    LiveWindow w("--state state.json --size 640x480", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["drawn"] > 0; }, 30));
+    const auto eye = w.state()["eye"];
+    const double distance = w.state()["eyeDistance"];
+    ASSERT_TRUE(w.keys("Left Up"));
+    EXPECT_TRUE(w.waitState([&](const auto& s) { return s["eye"] != eye; }, 10));
+    EXPECT_NEAR(w.state()["eyeDistance"].get<double>(), distance, 1e-3) << "orbit keeps distance";
+    ASSERT_EQ(w.xdo("mousemove --window " + w.id() + " 300 200"), 0);
+    ASSERT_EQ(w.xdo("click 4"), 0);  // the wheel up: closer
+    EXPECT_TRUE(w.waitState(
+        [&](const auto& s) {
+            return std::abs(s["eyeDistance"].template get<double>() - 0.9 * distance) < 1e-3;
+        },
+        10))
+        << w.state().dump();
+    ASSERT_TRUE(w.keys("6 v"));
+    EXPECT_TRUE(w.waitState(
+        [](const auto& s) {
+            return s["message"].template get<std::string>().find("has one view") !=
+                   std::string::npos;
+        },
+        10))
+        << w.state().dump();
+    ASSERT_TRUE(w.keys("0 r"));
+    EXPECT_TRUE(w.waitState(
+        [](const auto& s) {
+            return s["message"].template get<std::string>().rfind("shaders reloaded", 0) == 0;
+        },
+        30))
+        << w.state().dump();
+    auto escape = Clock::now();
+    EXPECT_EQ(w.quit(), 0);
+    const double closing = std::chrono::duration<double>(Clock::now() - escape).count();
+    std::cout << "Esc to exit: " << closing << " s\n";
+    EXPECT_LT(closing, 1.0);
+}

@@ -76,8 +76,9 @@ TEST(WindowText, ShotNameCarriesStageTreeViewAndTime) {
 TEST(WindowText, HelpListsEveryKey) {
     std::string all;
     for (const auto& h : windowHelp()) all += h + "\n";
-    for (const char* key : {"0-7", "[ ]", "g:", "Shift-Tab", "= -", "Shift",
-                            "x:", "c:", "v:", "l:", "drag", "r:", "p:", "i:", "h:", "Esc"})
+    for (const char* key :
+         {"0-8", "[ ]", "g:", "Shift-Tab", "= -", "Shift", "x:", "c:", "v:",    "l:",    "drag",
+          "r:",  "p:",  "i:", "h:",        "Esc", "n:",    "s:", "f:", "wheel", "arrows"})
         EXPECT_NE(all.find(key), std::string::npos) << key;
 }
 
