@@ -32,8 +32,9 @@ std::string calledFromMain(const std::string& function, const std::string& call)
 struct Breakage {
     const char* name;
     std::string frag;
-    const char* said;   // a fragment of the error the window must show
-    bool slow = false;  // the trial takes seconds: long enough to press a key meanwhile
+    const char* said;               // a fragment of the error the window must show
+    bool slow = false;              // the trial takes seconds: long enough to press a key meanwhile
+    std::string file = "lit.frag";  // which of margin's files it replaces
 };
 
 // The i-- loop of the issue: llvmpipe stops a loop after 65,535 iterations, so it ends, but a
@@ -72,13 +73,24 @@ Breakage link() {
             "did not link"};
 }
 
+// A vertex input the meshes do not supply.
+Breakage vertexInput() {
+    const std::string ours = std::string(SHADOWLAB_SOURCE_DIR) + "/shaders_core/margin/lit.vert";
+    std::string text =
+        replaced(readText(ours), "in vec3 normal;", "in vec3 normal;\nin vec3 tangent;");
+    text = replaced(text, "gl_Position = ", "gl_Position = 1e-9 * vec4(tangent, 0.0) + ");
+    Breakage b{"vertex input", text, "vertex input 'tangent'"};
+    b.file = "lit.vert";
+    return b;
+}
+
 // Live: every breakage saved in turn over a good shader, each repaired before the next.
 void breakWhileLive(const std::string& limits, const std::vector<Breakage>& breakages) {
     std::string dir = tempDir("live-watchdog");
     fs::create_directories(dir + "/mine/margin");
-    const std::string file = dir + "/mine/margin/lit.frag";
     const std::string good = readText(kOurs);
-    auto save = [&](const std::string& text) {  // as an editor does: written, then renamed
+    auto save = [&](const std::string& text, const std::string& name = "lit.frag") {
+        const std::string file = dir + "/mine/margin/" + name;  // as an editor saves: renamed
         std::ofstream(file + ".tmp") << text;
         fs::rename(file + ".tmp", file);
     };
@@ -101,7 +113,7 @@ void breakWhileLive(const std::string& limits, const std::vector<Breakage>& brea
     int shots = 0;
     const Image before = shot(++shots);
     for (const Breakage& b : breakages) {
-        save(b.frag);
+        save(b.frag, b.file);
         // While the worker tries it, the window answers a key within a second (Tab selects the
         // next parameter: the picture stays the same).
         if (b.slow) {
@@ -123,7 +135,7 @@ void breakWhileLive(const std::string& limits, const std::vector<Breakage>& brea
             [&](const auto& s) {
                 std::string e = s["error"];
                 return s["trying"] == false && s["errors"].template get<int>() > 0 &&
-                       e.find("mine/margin/lit.frag") != std::string::npos &&
+                       e.find("mine/margin/" + b.file) != std::string::npos &&
                        e.find(b.said) != std::string::npos;
             },
             120))
@@ -133,7 +145,10 @@ void breakWhileLive(const std::string& limits, const std::vector<Breakage>& brea
         const Image after = shot(++shots);
         ASSERT_EQ(after.rgba.size(), before.rgba.size());
         EXPECT_TRUE(after.rgba == before.rgba) << b.name << ": the picture changed";
-        save(good);
+        if (b.file == "lit.frag")
+            save(good);
+        else
+            fs::remove(dir + "/mine/margin/" + b.file);  // ours again
         ASSERT_TRUE(w.waitState([](const auto& s) { return s["errors"] == 0; }, 60))
             << b.name << " repaired: " << w.state().dump();
     }
@@ -146,8 +161,8 @@ void breakWhileLive(const std::string& limits, const std::vector<Breakage>& brea
 
 }  // namespace
 
-TEST(LiveWindowWatchdog, LoopUniformTypeAndLinkErrorKeepTheLastGoodProgram) {
-    breakWhileLive("", {loop(), uniformType(), link()});
+TEST(LiveWindowWatchdog, LoopUniformTypeLinkAndVertexInputKeepTheLastGoodProgram) {
+    breakWhileLive("", {loop(), uniformType(), link(), vertexInput()});
 }
 
 // A crash and a blow-up take the compiler several seconds to reach: a longer time limit, and a
