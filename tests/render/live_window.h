@@ -72,6 +72,20 @@ class LiveWindow {
     LiveWindow(const std::string& args, const std::string& dir, bool focus = true,
                const std::string& screen = "1280x1024")
         : dir_(dir) {
+        // Under a loaded parallel run the window now and then cannot open the display its
+        // server just announced: a fresh server and window then, at most three times.
+        for (int attempt = 0; attempt < 3; ++attempt) {
+            start(args, dir, focus, screen);
+            if (ready() || err().find("failed to open display") == std::string::npos) break;
+            stop();
+            reaped_ = false;
+        }
+    }
+    ~LiveWindow() { stop(); }
+
+  private:
+    void start(const std::string& args, const std::string& dir, bool focus,
+               const std::string& screen) {
         fs::create_directories(dir + "/x");
         // Xvfb picks a free display itself and writes its number once it accepts connections
         // (-displayfd): two servers started at once never race for one number, as xvfb-run -a's
@@ -104,7 +118,7 @@ class LiveWindow {
                             60))
             id_.clear();
     }
-    ~LiveWindow() {
+    void stop() {
         if (alive()) {
             ::kill(window_, SIGKILL);
             ::waitpid(window_, nullptr, 0);
@@ -112,8 +126,12 @@ class LiveWindow {
         if (xserver_ > 0) {
             ::kill(-xserver_, SIGTERM);
             ::waitpid(xserver_, nullptr, 0);
+            xserver_ = -1;
         }
+        // (alive() reaped the window: reaped_ stays true until a restart resets it)
     }
+
+  public:
     bool ready() const { return !id_.empty(); }
     const std::string& id() const { return id_; }
     bool alive() {
