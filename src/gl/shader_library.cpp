@@ -452,6 +452,15 @@ Program& ShaderLibrary::program(const std::string& stage, const std::string& pas
     return it->second.program;
 }
 
+std::set<std::string> ShaderLibrary::ignoredUniforms(const std::string& stage) const {
+    std::set<std::string> names;
+    for (const auto& [key, entry] : programs_)
+        if (key.rfind(stage + "/", 0) == 0)
+            names.insert(entry.program.ignoredUniforms().begin(),
+                         entry.program.ignoredUniforms().end());
+    return names;
+}
+
 std::vector<std::string> ShaderLibrary::reload(bool force, const std::set<std::string>* stages) {
     std::vector<std::string> errors;
     for (auto& [key, entry] : programs_) {

@@ -40,6 +40,9 @@ class ShaderLibrary {
     // built and no earlier good version exists.
     Program& program(const std::string& stage, const std::string& pass);
 
+    // The uniforms the built programs of `stage` (its folder) were given but do not read.
+    std::set<std::string> ignoredUniforms(const std::string& stage) const;
+
     // Rebuilds programs whose files changed on disk (all of them when `force`). A failed
     // rebuild keeps the previous program; its message is returned (empty vector: all good).
     // `stages` given: only the programs of those stages (the window adopts what its trial passed).

@@ -1,6 +1,7 @@
 #include "platform/window_session.h"
 
 #include <algorithm>
+#include <cctype>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
@@ -527,6 +528,21 @@ std::string WindowSession::title() const {
     return std::to_string(r.stageIndex()) + " " + r.stage().id;
 }
 
+// A parameter's uniform is its name in camelCase (margin-kind: marginKind); a student's program
+// that does not read it gets the parameter marked, so a change that does nothing says why.
+std::string WindowSession::ignoredMark(const std::string& param) const {
+    std::string uniform;
+    for (std::size_t i = 0; i < param.size(); ++i)
+        if (param[i] == '-' && i + 1 < param.size())
+            uniform += char(std::toupper(static_cast<unsigned char>(param[++i])));
+        else
+            uniform += param[i];
+    Renderer& r = *slot_->renderer;
+    return r.shaders().ignoredUniforms(r.stage().id).count(uniform)
+               ? " (your shader does not read it)"
+               : "";
+}
+
 HudBlock WindowSession::flashBlock() const {
     HudBlock b;
     b.bottom = true;
@@ -570,7 +586,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         const auto& specs = r.params().specs();
         if (!specs.empty()) {
             const std::string& name = specs[selectedParam_ % specs.size()].name;
-            line += " | " + name + " = " + r.params().text(name);
+            line += " | " + name + " = " + r.params().text(name) + ignoredMark(name);
         }
         top.lines.push_back({line, yellow});
         const std::string lesson = lessonLine();
@@ -616,7 +632,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
     for (std::size_t i = 0; i < specs.size(); ++i) {
         bool selected = i == selectedParam_ % specs.size();
         top.lines.push_back({std::string(selected ? "> " : "  ") + specs[i].name + " = " +
-                                 r.params().text(specs[i].name),
+                                 r.params().text(specs[i].name) + ignoredMark(specs[i].name),
                              selected ? green : grey});
     }
     const std::string lesson = lessonLine();
@@ -803,6 +819,8 @@ std::string WindowSession::stateJson() const {
     if (split_)
         for (const Half& h : splitHalves()) j["split"].push_back(h.name);
     for (const ParamSpec& p : specs) j["params"][p.name] = r.params().text(p.name);
+    for (const ParamSpec& p : specs)
+        if (!ignoredMark(p.name).empty()) j["ignored"].push_back(p.name);
     j["width"] = width_;
     j["height"] = height_;
     j["pictureTop"] = pictureTop_;  // window rows above the picture (the top panels' band)

@@ -71,6 +71,7 @@ class WindowSession {
     std::vector<Half> splitHalves() const;
     void drawSplit(int width, int height);
     HudBlock flashBlock() const;
+    std::string ignoredMark(const std::string& param) const;
     std::string title() const;
     std::string treeText() const;
     std::string readPixelsToPng(const std::string& path) const;

@@ -265,3 +265,31 @@ TEST(LiveWindowProjector, ArrowsWheelAndConfirmations) {
     std::cout << "Esc to exit: " << closing << " s\n";
     EXPECT_LT(closing, 1.0);
 }
+
+// Honest HUD: a student's margin shader that returns 0.01 instead of reading `margin` gets the
+// parameter marked on screen (it changes nothing); ours reads every parameter, nothing marked.
+TEST(LiveWindowProjector, ParameterTheShaderDoesNotReadIsMarked) {
+    std::string dir = tempDir("live-ignored");
+    fs::create_directories(dir + "/mine/margin");
+    std::string text =
+        readText(std::string(SHADOWLAB_SOURCE_DIR) + "/shaders_core/margin/lit.frag");
+    const std::string uses = "return margin;";
+    ASSERT_NE(text.find(uses), std::string::npos);
+    text.replace(text.find(uses), uses.size(), "return 0.01;");
+    std::ofstream(dir + "/mine/margin/lit.frag") << text;
+    LiveWindow w("--shaders mine --stage margin --state state.json --size 640x480", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["drawn"] > 0; }, 30));
+    ASSERT_TRUE(w.keys("Tab"));  // a redraw after the first frame's notes
+    EXPECT_TRUE(w.waitState(
+        [](const auto& s) {
+            return s.contains("ignored") && s["ignored"].size() == 1 && s["ignored"][0] == "margin";
+        },
+        15))
+        << w.state().dump();
+    ASSERT_TRUE(w.keys("g"));  // the legacy tree: ours, every parameter read
+    EXPECT_TRUE(w.waitState(
+        [](const auto& s) { return s["tree"] == "legacy" && !s.contains("ignored"); }, 15))
+        << w.state().dump();
+    EXPECT_EQ(w.quit(), 0);
+}
