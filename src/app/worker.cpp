@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <memory>
 #include <new>
 #include <optional>
 #include <stdexcept>
@@ -353,6 +354,20 @@ class Worker {
     Read next(const std::optional<Clock::time_point>& deadline, std::string& line) {
         return nextLine(fd_, buffer_, deadline, line);
     }
+    // A line if one has arrived, EndOfFile if the child has gone, else Deadline (nothing yet).
+    Read nextNow(std::string& line) {
+        struct pollfd p = {fd_, POLLIN, 0};
+        while (buffer_.find('\n') == std::string::npos && ::poll(&p, 1, 0) > 0) {
+            char chunk[65536];
+            ssize_t n = ::read(fd_, chunk, sizeof chunk);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) return Read::EndOfFile;
+            buffer_.append(chunk, static_cast<std::size_t>(n));
+        }
+        return nextLine(fd_, buffer_, Clock::now() - std::chrono::seconds(1), line) == Read::Line
+                   ? Read::Line
+                   : Read::Deadline;
+    }
     // Reaps the child, killing it at the deadline; returns its wait status and whether it had
     // to be killed.
     int finish(const std::optional<Clock::time_point>& deadline, bool& killed) {
@@ -396,7 +411,72 @@ WorkerOutcome endedWithout(int status, bool killed) {
     return out;
 }
 
+// What the worker's line for a job says.
+WorkerOutcome outcomeOfLine(const std::string& line) {
+    WorkerOutcome out;
+    nlohmann::json message = nlohmann::json::parse(line, nullptr, false);
+    if (message.is_object() && message.contains("error")) {
+        out.kind = WorkerOutcome::Kind::Error;
+        out.errorKind = message["error"].value("kind", "runtime");
+        out.errorWhat = message["error"].value("what", "");
+    } else if (message.is_object() && message.contains("ok")) {
+        out.value = std::move(message["ok"]);
+    } else {
+        out.kind = WorkerOutcome::Kind::Crash;
+        out.outOfMemory = message.is_object() && message.contains("oom");
+    }
+    return out;
+}
+
 }  // namespace
+
+struct BackgroundSeries::Running {
+    std::unique_ptr<Worker> worker;
+    Clock::time_point since;
+};
+
+BackgroundSeries::BackgroundSeries(const Limits& limits, std::size_t count, SeriesJob job)
+    : limits_(limits), count_(count), job_(std::move(job)) {}
+
+BackgroundSeries::~BackgroundSeries() = default;  // ~Worker kills and reaps a running child
+
+bool BackgroundSeries::poll() {
+    if (failed_) return true;
+    while (outcomes_.size() < count_) {
+        if (!running_) {  // a fresh worker for the next job (the first, or after a failure)
+            running_ = std::make_unique<Running>();
+            running_->worker = std::make_unique<Worker>(limits_, job_, outcomes_.size(), count_);
+            running_->since = Clock::now();
+        }
+        // Only what has arrived: a deadline already past makes nextLine return at once, so
+        // look at the pipe without waiting first.
+        std::string line;
+        Read read = running_->worker->nextNow(line);
+        const auto deadline = deadlineFrom(running_->since, limits_);
+        WorkerOutcome out;
+        if (read == Read::Line) {
+            out = outcomeOfLine(line);
+        } else if (read == Read::EndOfFile) {
+            bool killed = false;
+            int status = running_->worker->finish(deadlineFrom(Clock::now(), limits_), killed);
+            out = endedWithout(status, killed);
+        } else if (deadline && Clock::now() >= *deadline) {
+            out.kind = WorkerOutcome::Kind::Timeout;
+        } else {
+            return false;  // still working
+        }
+        out.seconds = std::chrono::duration<double>(Clock::now() - running_->since).count();
+        running_->since = Clock::now();
+        const bool ok = out.kind == WorkerOutcome::Kind::Ok;
+        outcomes_.push_back(std::move(out));
+        if (!ok || outcomes_.size() == count_) {
+            running_.reset();  // killed and reaped
+            failed_ = !ok;
+        }
+        if (failed_) return true;
+    }
+    return true;
+}
 
 void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& job,
                       const std::function<void(std::size_t, const WorkerOutcome&)>& done) {
@@ -409,17 +489,7 @@ void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& 
             Read read = worker.next(deadlineFrom(since, limits), line);
             WorkerOutcome out;
             if (read == Read::Line) {
-                nlohmann::json message = nlohmann::json::parse(line, nullptr, false);
-                if (message.is_object() && message.contains("error")) {
-                    out.kind = WorkerOutcome::Kind::Error;  // ~Worker ends the child
-                    out.errorKind = message["error"].value("kind", "runtime");
-                    out.errorWhat = message["error"].value("what", "");
-                } else if (message.is_object() && message.contains("ok")) {
-                    out.value = std::move(message["ok"]);
-                } else {
-                    out.kind = WorkerOutcome::Kind::Crash;
-                    out.outOfMemory = message.is_object() && message.contains("oom");
-                }
+                out = outcomeOfLine(line);  // an Error: ~Worker ends the child
             } else if (read == Read::Deadline) {
                 out.kind = WorkerOutcome::Kind::Timeout;  // ~Worker kills it
             } else if (read == Read::TooLong) {

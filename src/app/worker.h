@@ -5,8 +5,10 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace sl {
 
@@ -60,6 +62,30 @@ void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& 
 // Workers started after this keep Mesa's shader cache in `folder` (a private one the caller
 // removes); "" (the default): no shader cache at all. Never the user's ~/.cache.
 void useShaderCacheFolder(const std::string& folder);
+
+// The same series watched without blocking: the window tries a student's changed shaders in
+// it between frames, and must answer keys while a looping shader spins in the worker. Stops at
+// the first job that fails (its outcome is the last). The destructor kills a running worker.
+class BackgroundSeries {
+  public:
+    BackgroundSeries(const Limits& limits, std::size_t count, SeriesJob job);
+    ~BackgroundSeries();
+    BackgroundSeries(const BackgroundSeries&) = delete;
+    BackgroundSeries& operator=(const BackgroundSeries&) = delete;
+    // Reads what the worker has sent (never waits); true once every job has an outcome or one
+    // failed. The first call starts the worker (fork: call it where no other thread is in GL).
+    bool poll();
+    const std::vector<WorkerOutcome>& outcomes() const { return outcomes_; }
+
+  private:
+    struct Running;
+    Limits limits_;
+    std::size_t count_;
+    SeriesJob job_;
+    std::vector<WorkerOutcome> outcomes_;
+    std::unique_ptr<Running> running_;
+    bool failed_ = false;
+};
 
 // "30 s" or "no time limit"; "2048 MB" or "no memory limit".
 std::string timeLimitText(const Limits& limits);

@@ -105,8 +105,10 @@ GLint Program::location(const char* uniform) {
     // Once per program and uniform in a process: a reload builds a new Program, and the same
     // note on every reload would bury what changed.
     static std::set<std::string> said;
-    if (loc < 0 && reportMissing_ && (reportOnly_.empty() || reportOnly_.count(uniform)) &&
-        said.insert(name_ + "/" + uniform).second)
+    const bool ignored =
+        loc < 0 && reportMissing_ && (reportOnly_.empty() || reportOnly_.count(uniform));
+    if (ignored) ignored_.insert(uniform);
+    if (ignored && said.insert(name_ + "/" + uniform).second)
         std::cerr << "shadowlab: note: " << name_ << " (your shader) has no active uniform '"
                   << uniform << "'; the value the stage sets is ignored" << std::endl;
     return loc;

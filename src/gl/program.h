@@ -49,6 +49,9 @@ class Program {
     // after a frame, these are what the stage never sets: they keep their initial value.
     std::vector<std::string> uniformsNeverSet();
 
+    // The uniforms the stage set that this student's program does not read (see above).
+    const std::set<std::string>& ignoredUniforms() const { return ignored_; }
+
     // The files it was built from, named when a uniform's declared type does not fit.
     void setOrigin(std::string files) { origin_ = std::move(files); }
     // The student's files in it ("" when every file is ours), named by a GL error in a draw.
@@ -84,6 +87,7 @@ class Program {
     std::unordered_map<GLint, GLenum> types_;  // by location, filled on first use
     bool reportMissing_ = false;
     std::set<std::string> reportOnly_;
+    std::set<std::string> ignored_;
 };
 
 }  // namespace sl

@@ -480,9 +480,19 @@ Program& ShaderLibrary::program(const std::string& stage, const std::string& pas
     return it->second.program;
 }
 
-std::vector<std::string> ShaderLibrary::reload(bool force) {
+std::set<std::string> ShaderLibrary::ignoredUniforms(const std::string& stage) const {
+    std::set<std::string> names;
+    for (const auto& [key, entry] : programs_)
+        if (key.rfind(stage + "/", 0) == 0)
+            names.insert(entry.program.ignoredUniforms().begin(),
+                         entry.program.ignoredUniforms().end());
+    return names;
+}
+
+std::vector<std::string> ShaderLibrary::reload(bool force, const std::set<std::string>* stages) {
     std::vector<std::string> errors;
     for (auto& [key, entry] : programs_) {
+        if (stages && !stages->count(key.substr(0, key.find('/')))) continue;
         bool changed = force;
         for (std::size_t i = 0; i < entry.files.size() && !changed; ++i)
             changed = modificationStamp(entry.files[i]) != entry.stamps[i];

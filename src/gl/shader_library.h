@@ -6,6 +6,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -39,9 +40,13 @@ class ShaderLibrary {
     // built and no earlier good version exists.
     Program& program(const std::string& stage, const std::string& pass);
 
+    // The uniforms the built programs of `stage` (its folder) were given but do not read.
+    std::set<std::string> ignoredUniforms(const std::string& stage) const;
+
     // Rebuilds programs whose files changed on disk (all of them when `force`). A failed
     // rebuild keeps the previous program; its message is returned (empty vector: all good).
-    std::vector<std::string> reload(bool force);
+    // `stages` given: only the programs of those stages (the window adopts what its trial passed).
+    std::vector<std::string> reload(bool force, const std::set<std::string>* stages = nullptr);
 
     // Where a relative shader path is found: the overlay's file if it has one, else ours.
     // Only files inside the overlay and our tree, after resolving ".." and symbolic links:

@@ -46,3 +46,17 @@ glm::vec3 circlingLight(const glm::vec3& start, float radiansPerSecond, double s
 }
 
 }  // namespace sl
+
+namespace sl {
+
+Camera zoomCamera(const Camera& c, float factor) {
+    const glm::vec3 offset = c.eye - c.at;
+    const float distance = glm::length(offset);
+    if (!(distance > 0) || !(factor > 0)) return c;
+    const float wanted = std::clamp(distance * factor, 2 * c.zNear, 0.5f * c.zFar);
+    Camera out = c;
+    out.eye = c.at + offset * (wanted / distance);
+    return out;
+}
+
+}  // namespace sl

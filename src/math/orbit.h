@@ -13,6 +13,10 @@ float sceneFloorHeight(const Scene& scene);
 // above `floorY` and short of straight up, whatever the drag.
 Camera orbitCamera(const Camera& c, float yaw, float pitch, float floorY, float clearance = 0.05f);
 
+// Moves the eye along its line to `at`, its distance times `factor` (the mouse wheel), kept
+// between twice the near plane and half the far plane so the scene never leaves the frustum.
+Camera zoomCamera(const Camera& c, float factor);
+
 // The light on its circle around the y axis after `seconds` at `radiansPerSecond`, starting
 // from `start` (height and radius kept).
 glm::vec3 circlingLight(const glm::vec3& start, float radiansPerSecond, double seconds);

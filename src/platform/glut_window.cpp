@@ -16,6 +16,9 @@ namespace sl {
 
 namespace {
 
+// The command line's exit codes (app/options.h names them; the platform does not include app/).
+constexpr int kOk = 0, kBadInput = 2, kGlFailure = 3;
+
 constexpr int kPollMs = 125;  // shader files and on-screen messages, 8 times a second
 // Esc quits when it is released (or this long after the press, if no release comes): quitting
 // on the press destroyed the window before `xdotool key --window ID Escape` sent the release,
@@ -56,6 +59,10 @@ void pressKey(unsigned char key, bool shift) {
         return;
     }
     if (g->quitting) return;
+    if (key == 'f' || key == 'F') {  // full screen and back: the window's, not the session's
+        glutFullScreenToggle();
+        return;
+    }
     if (g->session->key(key, shift)) glutPostRedisplay();
 }
 
@@ -183,7 +190,24 @@ void tick(int) {
     glutTimerFunc(kPollMs, tick, 0);
 }
 
+// Arrow keys orbit as a drag of 20 pixels does.
+void special(int key, int, int) {
+    if (g->quitting) return;
+    const int step = 20;
+    bool redraw = key == GLUT_KEY_LEFT    ? g->session->drag(-step, 0)
+                  : key == GLUT_KEY_RIGHT ? g->session->drag(step, 0)
+                  : key == GLUT_KEY_UP    ? g->session->drag(0, -step)
+                  : key == GLUT_KEY_DOWN  ? g->session->drag(0, step)
+                                          : false;
+    if (redraw) glutPostRedisplay();
+}
+
 void mouse(int button, int state, int x, int y) {
+    // The wheel: X buttons 4 and 5 (freeglut's 3 and 4), one notch a press.
+    if ((button == 3 || button == 4) && state == GLUT_DOWN) {
+        if (g->session->zoom(button == 3 ? 1 : -1)) glutPostRedisplay();
+        return;
+    }
     if (button != GLUT_LEFT_BUTTON) return;
     g->dragX = state == GLUT_DOWN ? x : -1;
     g->dragY = y;
@@ -211,7 +235,7 @@ void requireGl33() {
 int runWindow(const WindowArgs& args) {
     WindowState state;
     state.args = args;
-    RenderRequest request = toRequest(args.common);
+    const RenderRequest& request = args.request;
     if (!args.screenshot.empty() && args.frames <= 0)
         throw UsageError("--screenshot needs --frames N (the frame to save)");
     if ((!args.keys.empty() || args.resizeTest) && args.frames <= 0)
@@ -237,6 +261,7 @@ int runWindow(const WindowArgs& args) {
     if (!loadGl(reinterpret_cast<GlProcLoader>(&glutGetProcAddress)))
         throw std::runtime_error("could not load GL entry points through glutGetProcAddress");
     requireGl33();
+    if (args.fullscreen) glutFullScreen();
     passShiftTabAsTab();
     watchWindow();
     // Before the session is built (compiling takes a while): keys typed meanwhile queue up for
@@ -252,6 +277,7 @@ int runWindow(const WindowArgs& args) {
     glutKeyboardFunc(keyboard);
     glutKeyboardUpFunc(keyboardUp);
     glutMouseFunc(mouse);
+    glutSpecialFunc(special);
     glutMotionFunc(motion);
     glutTimerFunc(kPollMs, tick, 0);
     if (args.frames > 0) glutIdleFunc(glutPostRedisplay);  // --frames: frame after frame

@@ -3,12 +3,34 @@
 // so every stage is one key away in one session.
 #pragma once
 
-#include "app/options.h"
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "platform/program_trial.h"
+#include "render/request.h"
 
 namespace sl {
 
+// A lesson the window steps through with `n`: an entry of expectations.json or a lecture figure
+// of slides_examples/, with its settings and what to look for on screen.
+struct WindowLesson {
+    std::string stage;
+    std::string scene;               // "": the stage's own
+    std::vector<std::string> trees;  // empty: every tree the stage runs in
+    std::vector<std::pair<std::string, std::string>> sets;
+    std::string name;  // "margin margin-kind=slope: almost no acne"
+    std::string look;  // what to look for, one short line
+    ViewMode view = ViewMode::Final;
+};
+
 struct WindowArgs {
-    CommonOptions common;
+    RenderRequest request;
+    std::shared_ptr<ProgramTrial> trial;  // where changed shaders are tried ("": adopted at once)
+    bool fullscreen = false;
+    float hudScale = 1;  // times the text size that suits the window
+    std::vector<WindowLesson> lessons;
     int frames = 0;              // > 0: render this many frames, then exit (tests)
     std::string screenshot;      // with frames: save the last frame here
     bool screenshotHud = false;  // the screenshot includes the HUD (for the README)

@@ -16,7 +16,13 @@ constexpr std::chrono::milliseconds kEmptySettle(1000);
 
 // FNV-1a over the names, sizes and modification times of the files under `folder`; `empty`
 // counts the files of size 0.
-void hashFolder(const std::string& folder, int depth, int& entries, std::uint64_t& h, int& empty) {
+struct Newest {
+    std::string path;
+    long long seconds = 0, nanos = 0;
+};
+
+void hashFolder(const std::string& folder, int depth, int& entries, std::uint64_t& h, int& empty,
+                Newest& newest) {
     DIR* dir = ::opendir(folder.c_str());
     if (!dir) return;
     auto mix = [&h](const void* data, std::size_t n) {
@@ -31,7 +37,7 @@ void hashFolder(const std::string& folder, int depth, int& entries, std::uint64_
         struct stat st;
         if (::lstat(path.c_str(), &st) != 0) continue;
         if (S_ISDIR(st.st_mode)) {
-            if (depth < kMaxDepth) hashFolder(path, depth + 1, entries, h, empty);
+            if (depth < kMaxDepth) hashFolder(path, depth + 1, entries, h, empty, newest);
             continue;
         }
         if (!S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode)) continue;
@@ -42,6 +48,8 @@ void hashFolder(const std::string& folder, int depth, int& entries, std::uint64_
                               static_cast<long long>(st.st_mtim.tv_sec),
                               static_cast<long long>(st.st_mtim.tv_nsec)};
         mix(stamp, sizeof stamp);
+        if (stamp[1] > newest.seconds || (stamp[1] == newest.seconds && stamp[2] > newest.nanos))
+            newest = {path, stamp[1], stamp[2]};
     }
     ::closedir(dir);
 }
@@ -54,8 +62,10 @@ ShaderWatch::ShaderWatch(std::vector<std::string> folders, std::chrono::millisec
 std::uint64_t ShaderWatch::fingerprint() {
     std::uint64_t h = 14695981039346656037ULL;
     int entries = 0, empty = 0;
-    for (const auto& f : folders_) hashFolder(f, 0, entries, h, empty);
+    Newest newest;
+    for (const auto& f : folders_) hashFolder(f, 0, entries, h, empty, newest);
     empty_ = empty;
+    newest_ = newest.path;
     return h;
 }
 

@@ -23,6 +23,9 @@ class ShaderWatch {
     bool poll(Clock::time_point now);
     // True while a change has been seen but has not settled yet.
     bool pending() const { return pending_; }
+    // The folders' state now (names, sizes, times), and the file modified last when it was taken.
+    std::uint64_t current() { return fingerprint(); }
+    const std::string& newestFile() const { return newest_; }
 
   private:
     std::uint64_t fingerprint();  // also counts the empty files
@@ -30,6 +33,7 @@ class ShaderWatch {
     std::vector<std::string> folders_;
     std::chrono::milliseconds settle_;
     int empty_ = 0;  // empty files in the last fingerprint (set by it: declared before last_)
+    std::string newest_;
     std::uint64_t last_;
     Clock::time_point changedAt_{};
     bool pending_ = false;

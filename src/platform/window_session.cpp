@@ -1,6 +1,7 @@
 #include "platform/window_session.h"
 
 #include <algorithm>
+#include <cctype>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
@@ -8,6 +9,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 #include "math/orbit.h"
 #include "metrics/image.h"
@@ -37,7 +39,7 @@ bool offers(const StageInfo& s, ViewMode v) {
 
 WindowSession::WindowSession(const WindowArgs& args)
     : args_(args),
-      request_(toRequest(args.common)),
+      request_(args.request),
       tree_(request_.tree),
       watch_({shaderTreeRoot(GlslTree::Core), shaderTreeRoot(GlslTree::Legacy), request_.overlay}) {
     const StageInfo* info = findStage(request_.stage);
@@ -46,6 +48,16 @@ WindowSession::WindowSession(const WindowArgs& args)
     validateRequest(request_);
     request_.tree = tree_;
     startScene_ = effectiveScene(request_);
+    trial_ = args.trial;
+    // A student's folder is tried before anything of it is compiled here (the window is not
+    // drawing yet, so waiting for the verdict costs nothing but time).
+    if (trial_ && !request_.overlay.empty()) {
+        startTrial(false);
+        while (trial_->running()) {
+            finishTrial();
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+    }
     // The first renderer is the request's own (its --set, --eye, --light, --view apply).
     RenderRequest first = request_;
     if (info->legacyOnly) first.tree = GlslTree::Legacy;
@@ -61,6 +73,7 @@ WindowSession::WindowSession(const WindowArgs& args)
 }
 
 std::string WindowSession::sceneFor(const StageInfo& s) {
+    if (lessonScene_.first == s.id && !lessonScene_.second.empty()) return lessonScene_.second;
     RenderRequest r = request_;
     r.stage = s.id;
     std::string name = effectiveScene(r);
@@ -117,9 +130,14 @@ bool WindowSession::selectStage(std::size_t index, GlslTree sessionTree) {
     r.selectStage(s.id);
     if (&r != &prev && prevStage == s.id) r.params() = prev.params();  // the same stage, other tree
     r.view = offers(s, prevView) ? prevView : ViewMode::Final;
-    if (prevStage != s.id) selectedParam_ = 0;
+    if (prevStage != s.id) {
+        selectedParam_ = 0;
+        lesson_ = 0;
+        lessonScene_ = {};
+    }
     slot_ = next;
     scene_ = scene;
+    if (sessionTree != tree_) reloadErrors_.clear();  // the other tree's: not about this picture
     tree_ = sessionTree;
     renderError_.clear();
     return true;
@@ -154,6 +172,16 @@ bool WindowSession::key(unsigned char key, bool shift) {
             for (int k = 0; k < steps; ++k) r.params().step(p.name, direction);
             return true;
         }
+        case 's':  // the split view: the lesson's failure beside its fix
+            split_ = !split_;
+            if (split_ && splitHalves().empty()) {
+                split_ = false;
+                flash("s: this stage has no second lesson in this scene to show beside it", false);
+            }
+            return true;
+        case 'n':  // the stage's next lesson, its settings applied
+            nextLesson();
+            return true;
         case 'x':  // the stage's parameters back to their defaults
             for (const ParamSpec& p : specs) r.params().set(p.name, p.defaultText());
             flash("parameters of '" + r.stage().id + "' reset", false);
@@ -165,7 +193,10 @@ bool WindowSession::key(unsigned char key, bool shift) {
             flash("camera and light reset", false);
             return true;
         case 'r':
-            reload(true);
+            flash(trial_ ? "r: drawing every stage with the shaders on disk in the trial worker..."
+                         : "r: shaders reloaded",
+                  false);
+            startTrial(true);
             return true;
         case 'p':
             saveShot();
@@ -174,9 +205,9 @@ bool WindowSession::key(unsigned char key, bool shift) {
             showHelp_ = !showHelp_;
             return true;
         case 'i':
-            hudMode_ = hudMode_ == HudMode::Full      ? HudMode::Compact
-                       : hudMode_ == HudMode::Compact ? HudMode::Hidden
-                                                      : HudMode::Full;
+            hudMode_ = hudMode_ == HudMode::Compact ? HudMode::Full
+                       : hudMode_ == HudMode::Full  ? HudMode::Hidden
+                                                    : HudMode::Compact;
             return true;
         case 'l':
             animateLight_ = !animateLight_;
@@ -184,6 +215,10 @@ bool WindowSession::key(unsigned char key, bool shift) {
             return true;
         case 'v': {
             const auto& views = r.stage().views;
+            if (views.size() < 2) {
+                flash("v: '" + r.stage().id + "' has one view, the final picture", false);
+                return true;
+            }
             std::size_t i = 0;
             while (i < views.size() && views[i] != r.view) ++i;
             r.view = views[(i + 1) % views.size()];
@@ -202,12 +237,19 @@ bool WindowSession::drag(int dx, int dy) {
     return true;
 }
 
+bool WindowSession::zoom(int steps) {
+    Renderer& r = *slot_->renderer;
+    r.camera = zoomCamera(r.camera, std::pow(0.9f, float(steps)));
+    return true;
+}
+
 bool WindowSession::tick(Clock::time_point now) {
     bool redraw = false;
     if (watch_.poll(now)) {
-        reload(false);
+        startTrial(false);
         redraw = true;
     }
+    if (trial_ && trial_->running() && finishTrial()) redraw = true;
     if (!flash_.empty() && now >= flashUntil_) {
         flash_.clear();
         redraw = true;
@@ -231,6 +273,196 @@ void WindowSession::reload(bool force) {
     if (errors.empty())
         say(std::cout, hadErrors ? "shadowlab: shaders reloaded; every program builds again"
                                  : "shadowlab: shaders reloaded");
+}
+
+std::vector<const WindowLesson*> WindowSession::lessons() const {
+    std::vector<const WindowLesson*> list;
+    Renderer& r = *slot_->renderer;
+    const std::string tree = treeName(r.shaders().tree());
+    for (const WindowLesson& l : args_.lessons) {
+        bool inTree = l.trees.empty();
+        for (const auto& t : l.trees) inTree = inTree || t == tree;
+        if (l.stage == r.stage().id && inTree) list.push_back(&l);
+    }
+    return list;
+}
+
+void WindowSession::nextLesson() {
+    auto list = lessons();
+    if (list.empty()) {
+        flash("n: this stage has no lessons", false);
+        return;
+    }
+    lesson_ = (lesson_ + 1) % list.size();
+    const WindowLesson& l = *list[lesson_];
+    const StageInfo& s = slot_->renderer->stage();
+    lessonScene_ = {s.id, l.scene};
+    if (sceneFor(s) != scene_) selectStage(slot_->renderer->stageIndex(), tree_);  // its scene
+    Renderer& r = *slot_->renderer;
+    for (const ParamSpec& p : r.params().specs()) r.params().set(p.name, p.defaultText());
+    std::string refused;
+    for (const auto& [name, value] : l.sets) {
+        std::string e = r.params().set(name, value);
+        if (!e.empty()) refused = e;
+    }
+    if (offers(r.stage(), l.view)) r.view = l.view;
+    if (!refused.empty()) flash("n: " + refused, true);  // else the HUD names the lesson
+}
+
+std::vector<WindowSession::Half> WindowSession::splitHalves() const {
+    Renderer& r = *slot_->renderer;
+    if (const ParamSpec* method = r.params().find("mirror-method")) {
+        std::vector<Half> halves;
+        for (const auto& choice : method->choices)
+            halves.push_back({"mirror-method=" + choice, {{"mirror-method", choice}}});
+        if (halves.size() >= 2) halves.resize(2);
+        return halves;
+    }
+    auto list = lessons();
+    if (list.size() < 2) return {};
+    const std::size_t k = lesson_ % list.size();
+    for (std::size_t step = 1; step < list.size(); ++step) {
+        const WindowLesson& next = *list[(k + step) % list.size()];
+        if (next.scene == list[k]->scene && next.view == list[k]->view)
+            return {{list[k]->name, list[k]->sets}, {next.name, next.sets}};
+    }
+    return {};
+}
+
+// Both halves with the renderer's own camera and light, each with its settings (the stage's
+// defaults and the lesson's); the settings on screen come back afterwards.
+void WindowSession::drawSplit(int width, int height) {
+    Renderer& r = *slot_->renderer;
+    const auto halves = splitHalves();
+    const ParamSet kept = r.params();
+    const int half = width / 2;
+    for (std::size_t k = 0; k < halves.size() && k < 2; ++k) {
+        for (const ParamSpec& p : r.params().specs()) r.params().set(p.name, p.defaultText());
+        for (const auto& [name, value] : halves[k].sets) r.params().set(name, value);
+        r.sceneChanged();  // the two halves' shadow maps differ: no cached map carries over
+        picture_.resize(half, height);
+        drawStage(picture_.framebuffer(), half, height);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, picture_.framebuffer());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glBlitFramebuffer(0, 0, half, height, int(k) * half, pictureBottom_, int(k) * half + half,
+                          pictureBottom_ + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    r.params() = kept;
+    r.sceneChanged();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+std::string WindowSession::lessonLine() const {
+    auto list = lessons();
+    if (list.empty()) return "";
+    const std::size_t k = lesson_ % list.size();
+    std::string line = "lesson " + std::to_string(k + 1) + "/" + std::to_string(list.size()) +
+                       " (n): " + list[k]->name;
+    if (!list[k]->look.empty()) line += ". Look for: " + list[k]->look;
+    return line;
+}
+
+std::string WindowSession::refusedKey(const std::string& stage) const {
+    return std::string(treeName(slot_ ? slot_->renderer->shaders().tree() : tree_)) + "/" + stage;
+}
+
+std::vector<TrialStage> WindowSession::trialStages() {
+    std::vector<TrialStage> stages;
+    for (const StageInfo& s : stageRegistry()) {
+        if (s.legacyOnly && tree_ == GlslTree::Core) continue;  // runs legacy, without the folder
+        TrialStage t;
+        t.stage = s.id;
+        try {
+            t.scene = sceneFor(s);
+        } catch (const std::exception&) {
+            continue;  // a scene that cannot load: the stage cannot be shown either
+        }
+        if (slot_ && slot_->renderer->stage().id == s.id) {  // as it is on screen
+            for (const ParamSpec& p : slot_->renderer->params().specs())
+                t.sets.emplace_back(p.name, slot_->renderer->params().text(p.name));
+        } else if (!slot_ && s.id == request_.stage) {
+            t.sets = request_.sets;
+        }
+        stages.push_back(std::move(t));
+    }
+    return stages;
+}
+
+void WindowSession::startTrial(bool force) {
+    if (!trial_) {  // no watchdog: adopted at once
+        reload(force);
+        return;
+    }
+    trialForce_ = force || !refused_.empty() || !reloadErrors_.empty() || !renderError_.empty();
+    trialFingerprint_ = watch_.current();
+    trialFile_ = watch_.newestFile();
+    // At the window's size (its size on the command line before the first frame).
+    trial_->start(tree_, tree_ == request_.tree ? request_.overlay : "", trialStages(),
+                  width_ > 0 ? width_ : request_.width, height_ > 0 ? height_ : request_.height);
+}
+
+bool WindowSession::finishTrial() {
+    std::vector<TrialVerdict> verdicts;
+    if (!trial_->poll(verdicts)) return false;
+    // Saved again meanwhile: these files were not the ones tried; the next trial decides.
+    if (watch_.pending() || watch_.current() != trialFingerprint_) return false;
+    adopt(verdicts);
+    return true;
+}
+
+void WindowSession::adopt(const std::vector<TrialVerdict>& verdicts) {
+    const bool hadErrors = !shownErrors().empty() || !renderError_.empty();
+    const std::string tree = treeName(tree_);
+    std::set<std::string> passed, said;
+    bool all = true;
+    for (const TrialVerdict& v : verdicts) {
+        const std::string key = tree + "/" + v.stage;
+        if (v.ok) {
+            passed.insert(v.stage);
+            refused_.erase(key);
+            continue;
+        }
+        all = false;
+        std::string why = v.what;
+        // A loop or a crash has no file in its message: name the one saved last.
+        if (!trialFile_.empty() && why.find(trialFile_) == std::string::npos)
+            why = trialFile_ + " (saved last): " + why;
+        // One line per new message: a broken shared file fails every stage with the same one.
+        if (refused_[key] != why && said.insert(why).second)
+            say(std::cerr,
+                "shadowlab: shader error (keeping the last good program): " + oneLine(why));
+        refused_[key] = why;
+    }
+    // The stages that drew in the worker take their new programs; the shared folders (common,
+    // phong, hud) only when every stage drew.
+    std::vector<std::string> errors;
+    for (auto& [key, slot] : slots_) {
+        if (slot.renderer->shaders().tree() != tree_) continue;
+        auto e = slot.renderer->reloadShaders(trialForce_, all ? nullptr : &passed);
+        errors.insert(errors.end(), e.begin(), e.end());
+    }
+    reloadErrors_ = errors;
+    renderError_.clear();
+    printedRenderError_.clear();
+    for (const auto& e : errors)
+        say(std::cerr, "shadowlab: shader error (keeping the last good program): " + oneLine(e));
+    if (shownErrors().empty() && slot_) {  // (at the start, before any frame: nothing to say)
+        say(std::cout, hadErrors ? "shadowlab: shaders reloaded; every program builds again"
+                                 : "shadowlab: shaders reloaded");
+        flash("shaders reloaded: every stage drew in the trial worker", false);
+    }
+}
+
+std::vector<std::string> WindowSession::shownErrors() const {
+    std::vector<std::string> errors;
+    for (const StageInfo& s : stageRegistry()) {
+        auto it = refused_.find(refusedKey(s.id));
+        if (it != refused_.end() &&
+            std::find(errors.begin(), errors.end(), it->second) == errors.end())
+            errors.push_back(it->second);
+    }
+    errors.insert(errors.end(), reloadErrors_.begin(), reloadErrors_.end());
+    return errors;
 }
 
 void WindowSession::flash(const std::string& text, bool error) {
@@ -296,38 +528,92 @@ std::string WindowSession::title() const {
     return std::to_string(r.stageIndex()) + " " + r.stage().id;
 }
 
+// A parameter's uniform is its name in camelCase (margin-kind: marginKind); a student's program
+// that does not read it gets the parameter marked, so a change that does nothing says why.
+std::string WindowSession::ignoredMark(const std::string& param) const {
+    std::string uniform;
+    for (std::size_t i = 0; i < param.size(); ++i)
+        if (param[i] == '-' && i + 1 < param.size())
+            uniform += char(std::toupper(static_cast<unsigned char>(param[++i])));
+        else
+            uniform += param[i];
+    Renderer& r = *slot_->renderer;
+    return r.shaders().ignoredUniforms(r.stage().id).count(uniform)
+               ? " (your shader does not read it)"
+               : "";
+}
+
+HudBlock WindowSession::flashBlock() const {
+    HudBlock b;
+    b.bottom = true;
+    b.lines = {
+        {flash_, flashIsError_ ? glm::vec4(1, 0.85f, 0.8f, 1) : glm::vec4(0.6f, 1, 0.6f, 1)}};
+    b.maxLines = 3;
+    b.panel = flashIsError_ ? glm::vec4(0.25f, 0.02f, 0.02f, 0.9f) : glm::vec4(0, 0, 0, 0.75f);
+    return b;
+}
+
 std::vector<HudBlock> WindowSession::hudBlocks() const {
     Renderer& r = *slot_->renderer;
     const StageInfo& s = r.stage();
-    const float scale = hudScale(width_, height_);
+    const float scale = textScale(width_, height_);
     const int rows = std::max(3, static_cast<int>((height_ / scale - 6) / Hud::kLineHeight));
     const glm::vec4 white(1), grey(0.85f, 0.85f, 0.85f, 1), yellow(1, 1, 0.6f, 1),
         green(0.6f, 1, 0.6f, 1), blue(0.75f, 0.85f, 1, 1), errorText(1, 0.85f, 0.8f, 1);
     std::vector<HudBlock> blocks;
-    std::vector<std::string> errors = reloadErrors_;
-    if (!renderError_.empty()) errors.insert(errors.begin(), renderError_);
+    std::vector<std::string> errors = shownErrors();
+    if (!renderError_.empty() &&
+        std::find(errors.begin(), errors.end(), renderError_) == errors.end())
+        errors.insert(errors.begin(), renderError_);
     const std::string view = viewLabel(s, r.view);
+    const std::string legend = viewLegend(s, r.view);
 
-    if (hudMode_ == HudMode::Compact) {
-        std::string line = title() + " | " + treeName(r.shaders().tree()) + " | " + view;
+    if (split_) {
+        const auto halves = splitHalves();
+        for (std::size_t k = 0; k < halves.size() && k < 2; ++k) {
+            HudBlock b;
+            b.bottom = true;
+            b.column = int(k);
+            b.half = true;
+            b.lines = {{(k == 0 ? "left: " : "right: ") + halves[k].name, white}};
+            b.maxLines = 3;
+            blocks.push_back(b);
+        }
+    }
+    if (hudMode_ == HudMode::Compact) {  // for a projector: what the picture is, and how to read it
+        HudBlock top;
+        std::string line = title() + " | " + treeName(r.shaders().tree());
         const auto& specs = r.params().specs();
         if (!specs.empty()) {
             const std::string& name = specs[selectedParam_ % specs.size()].name;
-            line += " | " + name + " = " + r.params().text(name);
+            line += " | " + name + " = " + r.params().text(name) + ignoredMark(name);
         }
-        if (!errors.empty()) line += " | SHADER ERROR (i: details)";
-        HudBlock b;
-        b.lines = {{line, errors.empty() ? yellow : errorText}};
-        b.maxLines = 1;
-        blocks.push_back(b);
+        top.lines.push_back({line, yellow});
+        const std::string lesson = lessonLine();
+        if (!lesson.empty()) top.lines.push_back({lesson, white});
+        if (!errors.empty())
+            top.lines.push_back({"shader error (i: all of it): " + oneLine(errors[0]), errorText});
+        top.maxLines = 5;
+        blocks.push_back(top);
+        if (!legend.empty()) {
+            HudBlock b;
+            b.bottom = true;
+            b.lines = {{legend, white}};
+            b.maxLines = 2;
+            blocks.push_back(b);
+        }
+        if (!flash_.empty()) blocks.push_back(flashBlock());
         return blocks;
     }
 
     HudBlock top;
     top.lines.push_back({title() + ": " + s.title, yellow});
     std::ostringstream status;
-    status << treeText() << " | scene " << scene_ << " | view " << view << " | "
-           << static_cast<int>(drawMs_ * 10) / 10.0 << " ms to draw";
+    status << treeText() << " | scene " << scene_ << " | view " << view << " | ";
+    if (drawnFrames_ == 0)  // the time is known once the frame is done: the first one has none
+        status << "first frame";
+    else
+        status << static_cast<int>(drawMs_ * 10) / 10.0 << " ms to draw";
     top.lines.push_back({status.str(), white});
     if (scene_ != startScene_)
         top.lines.push_back({"scene " + scene_ + ": the " + s.id +
@@ -346,9 +632,11 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
     for (std::size_t i = 0; i < specs.size(); ++i) {
         bool selected = i == selectedParam_ % specs.size();
         top.lines.push_back({std::string(selected ? "> " : "  ") + specs[i].name + " = " +
-                                 r.params().text(specs[i].name),
+                                 r.params().text(specs[i].name) + ignoredMark(specs[i].name),
                              selected ? green : grey});
     }
+    const std::string lesson = lessonLine();
+    if (!lesson.empty()) top.lines.push_back({lesson, white});
     for (const auto& n : r.stats.notes) top.lines.push_back({n, blue});
     if (showHelp_)
         for (const auto& h : windowHelp()) top.lines.push_back({h, white});
@@ -358,7 +646,6 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         std::max(3, showHelp_ ? rows - 3 : rows * 11 / 20);  // help asked for: room for it
     blocks.push_back(top);
 
-    std::string legend = viewLegend(s, r.view);
     if (!legend.empty()) {
         HudBlock b;
         b.bottom = true;
@@ -366,14 +653,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         b.maxLines = 2;
         blocks.push_back(b);
     }
-    if (!flash_.empty()) {
-        HudBlock b;
-        b.bottom = true;
-        b.lines = {{flash_, flashIsError_ ? errorText : green}};
-        b.maxLines = 3;
-        b.panel = flashIsError_ ? glm::vec4(0.25f, 0.02f, 0.02f, 0.9f) : glm::vec4(0, 0, 0, 0.75f);
-        blocks.push_back(b);
-    }
+    if (!flash_.empty()) blocks.push_back(flashBlock());
     if (!errors.empty()) {
         HudBlock b;
         b.bottom = true;
@@ -394,6 +674,51 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
     return blocks;
 }
 
+float WindowSession::textScale(int width, int height) const {
+    return std::max(0.5f, hudScale(width, height) * args_.hudScale);
+}
+
+void WindowSession::drawStage(GLuint target, int width, int height) {
+    Renderer& r = *slot_->renderer;
+    const std::string key = refusedKey(r.stage().id);
+    auto refused = refused_.find(key);
+    try {
+        // Refused by the trial and never drawn here: building it from disk could hang or crash.
+        if (refused != refused_.end() && !drewOnce_.count(key)) throw ShaderError(refused->second);
+        r.render(target, width, height);
+        drewOnce_.insert(key);
+        renderError_.clear();
+    } catch (const ShaderError& e) {  // no good program yet for this stage: show why
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+        glViewport(0, 0, width, height);
+        glClearColor(0.08f, 0.02f, 0.02f, 1);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        renderError_ = e.what();
+        if (printedRenderError_ != renderError_)
+            say(std::cerr, "shadowlab: shader error (no good program for this stage yet): " +
+                               oneLine(e.what()));
+        printedRenderError_ = renderError_;
+    }
+}
+
+void WindowSession::PictureTarget::resize(int width, int height) {
+    if (width == width_ && height == height_) return;
+    width_ = width;
+    height_ = height;
+    colour_ = Renderbuffer::create();
+    glBindRenderbuffer(GL_RENDERBUFFER, colour_.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    depthStencil_ = Renderbuffer::create();
+    glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+    fbo_ = Framebuffer::create();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              depthStencil_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 std::string WindowSession::draw(int width, int height, const std::string& saveTo, bool withHud) {
     width_ = width;
     height_ = height;
@@ -405,25 +730,48 @@ std::string WindowSession::draw(int width, int height, const std::string& saveTo
         r.lightPosition = circlingLight(r.lightPosition, kLightRadiansPerSecond, dt);
     }
     lastAnimation_ = start;
-    try {
-        r.render(0, width, height);
-        renderError_.clear();
-    } catch (const ShaderError& e) {  // no good program yet for this stage: show why
+    const float scale = textScale(width, height);
+    std::pair<int, int> bands{0, 0};
+    if (hudMode_ != HudMode::Hidden)
+        bands = hudBands(layoutHud(hudBlocks(), width, height, scale), height, scale);
+    // The picture goes between the panels, so that none covers it; panels asked for that would
+    // leave it less than half the window (the full panel with the help) lie over it instead.
+    if (bands.first + bands.second > height / 2) bands = {0, 0};
+    std::string saved;
+    if (!saveTo.empty() && !withHud) {  // the picture alone, at the window's size
+        drawStage(0, width, height);
+        saved = readPixelsToPng(saveTo);
+    }
+    const int pictureHeight = height - bands.first - bands.second;
+    pictureBottom_ = bands.second;
+    if (split_ && splitHalves().empty()) split_ = false;  // another stage, or its only lesson
+    if (split_) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, width, height);
-        glClearColor(0.08f, 0.02f, 0.02f, 1);
+        glClearColor(0.1f, 0.1f, 0.12f, 1);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        renderError_ = e.what();
-        if (printedRenderError_ != renderError_)
-            say(std::cerr, "shadowlab: shader error (no good program for this stage yet): " +
-                               oneLine(e.what()));
-        printedRenderError_ = renderError_;
+        drawSplit(width, pictureHeight);
+    } else if (bands.first + bands.second == 0) {
+        drawStage(0, width, height);
+    } else {
+        picture_.resize(width, pictureHeight);
+        drawStage(picture_.framebuffer(), width, pictureHeight);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, width, height);
+        glClearColor(0.1f, 0.1f, 0.12f, 1);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, picture_.framebuffer());
+        glBlitFramebuffer(0, 0, width, pictureHeight, 0, bands.second, width,
+                          bands.second + pictureHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
-    std::string saved;
-    if (!saveTo.empty() && !withHud) saved = readPixelsToPng(saveTo);
+    pictureTop_ = bands.first;
+    pictureHeight_ = pictureHeight;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);  // the stage's passes leave theirs
     if (hudMode_ != HudMode::Hidden) {
         try {
-            hud_.draw(r.shaders(), hudBlocks(), width, height, hudScale(width, height));
+            hud_.draw(r.shaders(), hudBlocks(), width, height, scale);
         } catch (const ShaderError& e) {  // a student's broken hud/text: the picture still shows
             if (renderError_.empty()) renderError_ = e.what();
         }
@@ -431,6 +779,7 @@ std::string WindowSession::draw(int width, int height, const std::string& saveTo
     if (!saveTo.empty() && withHud) saved = readPixelsToPng(saveTo);
     glFinish();
     drawMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    ++drawnFrames_;
     return saved;
 }
 
@@ -446,10 +795,16 @@ std::string WindowSession::stateJson() const {
     j["hud"] = hudMode_ == HudMode::Full      ? "full"
                : hudMode_ == HudMode::Compact ? "compact"
                                               : "hidden";
-    j["errors"] = reloadErrors_.size() + (renderError_.empty() ? 0 : 1);
-    j["error"] = !renderError_.empty()   ? oneLine(renderError_)
-                 : reloadErrors_.empty() ? ""
-                                         : oneLine(reloadErrors_[0]);
+    const std::vector<std::string> errors = shownErrors();
+    const bool renderErrorListed =
+        std::find(errors.begin(), errors.end(), renderError_) != errors.end();
+    j["errors"] = errors.size() + (renderError_.empty() || renderErrorListed ? 0 : 1);
+    j["error"] = !renderError_.empty() ? oneLine(renderError_)
+                 : errors.empty()      ? ""
+                                       : oneLine(errors[0]);
+    j["trying"] = trial_ && trial_->running();
+    j["picture"] = renderError_.empty() ? "stage" : "none";  // "none": no good program drew it
+    j["drawn"] = drawnFrames_;
     j["message"] = flash_;
     j["animating"] = animateLight_;
     j["lightAngle"] = std::atan2(r.lightPosition.z, r.lightPosition.x);  // radians, around y
@@ -457,6 +812,20 @@ std::string WindowSession::stateJson() const {
     j["param"] = specs.empty() ? "" : specs[selectedParam_ % specs.size()].name;
     j["value"] = specs.empty() ? "" : r.params().text(j["param"].get<std::string>());
     j["help"] = showHelp_;
+    j["lesson"] = lessonLine();
+    j["eye"] = {r.camera.eye.x, r.camera.eye.y, r.camera.eye.z};
+    j["eyeDistance"] = glm::length(r.camera.eye - r.camera.at);
+    j["split"] = nlohmann::json::array();
+    if (split_)
+        for (const Half& h : splitHalves()) j["split"].push_back(h.name);
+    for (const ParamSpec& p : specs) j["params"][p.name] = r.params().text(p.name);
+    for (const ParamSpec& p : specs)
+        if (!ignoredMark(p.name).empty()) j["ignored"].push_back(p.name);
+    j["width"] = width_;
+    j["height"] = height_;
+    j["pictureTop"] = pictureTop_;  // window rows above the picture (the top panels' band)
+    j["pictureHeight"] = pictureHeight_;
+    j["textScale"] = textScale(width_, height_);
     return j.dump();
 }
 

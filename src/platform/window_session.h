@@ -5,6 +5,7 @@
 #include <chrono>
 #include <map>
 #include <memory>
+#include <set>
 
 #include "platform/glut_window.h"
 #include "platform/shader_watch.h"
@@ -23,6 +24,8 @@ class WindowSession {
     // Input. Each returns true when the picture must be redrawn.
     bool key(unsigned char key, bool shift);
     bool drag(int dx, int dy);
+    // The mouse wheel: `steps` notches toward the target (negative: away).
+    bool zoom(int steps);
     // A few times a second: settled shader edits, the end of an on-screen message.
     bool tick(Clock::time_point now);
 
@@ -45,12 +48,52 @@ class WindowSession {
     Slot& slotFor(GlslTree tree, const std::string& scene, const std::string& stage);
     std::string sceneFor(const StageInfo& stage);
     void reload(bool force);
+    // The watchdog: changed shaders are drawn in the trial worker first (see program_trial.h).
+    void startTrial(bool force);
+    bool finishTrial();
+    void adopt(const std::vector<TrialVerdict>& verdicts);
+    std::vector<TrialStage> trialStages();
+    std::string refusedKey(const std::string& stage) const;
+    std::vector<std::string> shownErrors() const;
     void saveShot();
     void flash(const std::string& text, bool error);
     std::vector<HudBlock> hudBlocks() const;
+    // The stage's lessons in the tree it runs in, and the one chosen with `n` ("" when none).
+    std::vector<const WindowLesson*> lessons() const;
+    void nextLesson();
+    std::string lessonLine() const;
+    // The split view's two halves: the lesson on screen and the next one in the same scene
+    // (its failure and its fix), or the mirror's texture and stencil methods. Empty: no pair.
+    struct Half {
+        std::string name;
+        std::vector<std::pair<std::string, std::string>> sets;
+    };
+    std::vector<Half> splitHalves() const;
+    void drawSplit(int width, int height);
+    HudBlock flashBlock() const;
+    std::string ignoredMark(const std::string& param) const;
     std::string title() const;
     std::string treeText() const;
     std::string readPixelsToPng(const std::string& path) const;
+    float textScale(int width, int height) const;
+    void drawStage(GLuint target, int width, int height);
+
+    // The picture's own framebuffer when panels take bands of the window.
+    class PictureTarget {
+      public:
+        void resize(int width, int height);
+        GLuint framebuffer() const { return fbo_.id(); }
+
+      private:
+        int width_ = 0, height_ = 0;
+        Renderbuffer colour_, depthStencil_;
+        Framebuffer fbo_;
+    };
+    PictureTarget picture_;
+    bool split_ = false;
+    std::size_t lesson_ = 0;                           // index into lessons(); 0 = the defaults
+    std::pair<std::string, std::string> lessonScene_;  // stage, scene its lesson brings
+    int pictureTop_ = 0, pictureHeight_ = 0, pictureBottom_ = 0;
 
     WindowArgs args_;
     RenderRequest request_;
@@ -65,15 +108,22 @@ class WindowSession {
     int width_ = 0, height_ = 0;
     std::size_t selectedParam_ = 0;
     bool showHelp_ = false;
-    HudMode hudMode_ = HudMode::Full;
+    HudMode hudMode_ = HudMode::Compact;  // the full panel is one key away (i)
     bool animateLight_ = false;
     Clock::time_point lastAnimation_;
     std::vector<std::string> reloadErrors_;
+    std::shared_ptr<ProgramTrial> trial_;
+    bool trialForce_ = false;
+    std::uint64_t trialFingerprint_ = 0;
+    std::string trialFile_;                       // the file changed last when the trial began
+    std::map<std::string, std::string> refused_;  // "tree/stage": why its new programs were refused
+    std::set<std::string> drewOnce_;              // "tree/stage" drawn by a good program here
     std::string renderError_, printedRenderError_;
     std::string flash_;
     bool flashIsError_ = false;
     Clock::time_point flashUntil_;
     double drawMs_ = 0;
+    long drawnFrames_ = 0;  // frames drawn (a test waits for a new one)
 };
 
 }  // namespace sl

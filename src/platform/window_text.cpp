@@ -60,14 +60,16 @@ std::string shotFileName(const std::string& stage, const std::string& tree, cons
 
 const std::vector<std::string>& windowHelp() {
     static const std::vector<std::string> help = {
-        "0-7: stage by number    [ ]: previous / next stage (all eight, either tree)",
+        "0-8: stage by number    [ ]: previous / next stage (all nine, either tree)",
+        "n: the stage's next lesson (settings applied)    s: split, failure beside fix",
         "g: switch the GLSL tree (core / legacy); fixed always runs legacy",
         "Tab / Shift-Tab: next / previous parameter",
         "= -: change it one step    Shift + -: ten steps (+ and _)",
         "x: reset this stage's parameters    c: reset camera and light",
-        "v: next debug view    l: animate the light    left drag: orbit",
+        "v: next debug view    l: animate the light    left drag, arrows: orbit",
+        "mouse wheel: zoom    f: full screen",
         "r: reload shaders now    p: save a PNG (./shots or --shots DIR)",
-        "i: HUD full / one line / hidden    h: this help    Esc: quit",
+        "i: HUD compact / full / hidden    h: this help    Esc: quit",
     };
     return help;
 }

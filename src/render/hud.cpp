@@ -3,6 +3,7 @@
 #include <stb_easy_font.h>
 
 #include <algorithm>
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/state.h"
@@ -18,7 +19,9 @@ float textWidth(const std::string& s) {
 }  // namespace
 
 float hudScale(int width, int height) {
-    return std::clamp(std::min(width, height) / 360.0f, 1.0f, 4.0f);
+    // 200 rows of HUD pixels on the smaller side: 7-pixel glyphs are 3.5 % of a projected
+    // 1080-line picture (they were 2 %, unreadable from the back of a lecture hall).
+    return std::clamp(std::min(width, height) / 200.0f, 1.0f, 8.0f);
 }
 
 std::vector<HudLine> wrapHudLines(const std::vector<HudLine>& lines, float maxPixels) {
@@ -82,6 +85,47 @@ void Hud::drawText(Program& program, const HudLine& line, float x, float y) {
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles_.size() / 4));
 }
 
+std::vector<HudPanel> layoutHud(const std::vector<HudBlock>& blocks, int width, int height,
+                                float scale) {
+    std::vector<HudPanel> panels;
+    if (width <= 0 || height <= 0) return panels;
+    const float w = width / scale, h = height / scale;  // the HUD's own (unscaled) pixels
+    float top[2] = {kHudMargin, kHudMargin}, bottom[2] = {h - kHudMargin, h - kHudMargin};
+    for (const HudBlock& block : blocks) {
+        const int c = block.column == 1 ? 1 : 0;
+        const float span = c == 1 || block.half ? w / 2 : w;
+        HudPanel p;
+        p.lines = layoutHudBlock(block, std::max(span - 2 * (kHudMargin + Hud::kPad), 8.0f));
+        p.x = c * w / 2 + kHudMargin;
+        if (p.lines.empty()) continue;
+        p.width = 0;
+        for (const auto& l : p.lines)
+            p.width = std::max(p.width, textWidth(l.text) + 2 * Hud::kPad);
+        p.height = p.lines.size() * Hud::kLineHeight + 2 * Hud::kPad - 3;
+        p.y = block.bottom ? bottom[c] - p.height : top[c];
+        p.bottom = block.bottom;
+        p.color = block.panel;
+        if (block.bottom)
+            bottom[c] = p.y - kHudMargin;
+        else
+            top[c] = p.y + p.height + kHudMargin;
+        panels.push_back(std::move(p));
+    }
+    return panels;
+}
+
+std::pair<int, int> hudBands(const std::vector<HudPanel>& panels, int height, float scale) {
+    float top = 0, bottom = 0;
+    const float h = height / scale;
+    for (const HudPanel& p : panels) {
+        if (p.bottom)
+            bottom = std::max(bottom, h - p.y + kHudMargin);
+        else
+            top = std::max(top, p.y + p.height + kHudMargin);
+    }
+    return {static_cast<int>(std::ceil(top * scale)), static_cast<int>(std::ceil(bottom * scale))};
+}
+
 void Hud::draw(ShaderLibrary& shaders, const std::vector<HudBlock>& blocks, int width, int height,
                float scale) {
     if (width <= 0 || height <= 0) return;
@@ -97,25 +141,13 @@ void Hud::draw(ShaderLibrary& shaders, const std::vector<HudBlock>& blocks, int 
     glEnableVertexAttribArray(kPositionAttribute);
     // stb_easy_font writes 16-byte vertices: x, y, z as floats, then 4 colour bytes.
     glVertexAttribPointer(kPositionAttribute, 3, GL_FLOAT, GL_FALSE, 16, nullptr);
-    const float margin = 3, maxText = std::max(w - 2 * (margin + kPad), 8.0f);
-    float top = margin, bottom = h - margin;
-    for (const HudBlock& block : blocks) {
-        std::vector<HudLine> lines = layoutHudBlock(block, maxText);
-        if (lines.empty()) continue;
-        float textW = 0;
-        for (const auto& l : lines) textW = std::max(textW, textWidth(l.text));
-        float panelH = lines.size() * kLineHeight + 2 * kPad - 3;
-        float y0 = block.bottom ? bottom - panelH : top;
-        drawRect(program, margin, y0, margin + textW + 2 * kPad, y0 + panelH, block.panel);
-        float y = y0 + kPad;
-        for (const HudLine& line : lines) {
-            drawText(program, line, margin + kPad, y);
+    for (const HudPanel& p : layoutHud(blocks, width, height, scale)) {
+        drawRect(program, p.x, p.y, p.x + p.width, p.y + p.height, p.color);
+        float y = p.y + kPad;
+        for (const HudLine& line : p.lines) {
+            drawText(program, line, p.x + kPad, y);
             y += kLineHeight;
         }
-        if (block.bottom)
-            bottom = y0 - margin;
-        else
-            top = y0 + panelH + margin;
     }
     glDisableVertexAttribArray(kPositionAttribute);
     glBindVertexArray(0);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gl/shader_library.h"
@@ -20,6 +21,10 @@ struct HudBlock {
     bool bottom = false;
     int maxLines = 0;  // wrapped lines beyond this become one "(N more lines)" line; 0: no limit
     glm::vec4 panel{0.0f, 0.0f, 0.0f, 0.78f};  // white text stays readable on a white view
+    // The split view's halves: 0 from the left edge, 1 from the middle; `half`: wrapped to half
+    // the window (column 1 always is).
+    int column = 0;
+    bool half = false;
 };
 
 // Text size for a width x height window: from its smaller side, so a projector's 1080 lines
@@ -33,6 +38,22 @@ std::vector<HudLine> wrapHudLines(const std::vector<HudLine>& lines, float maxPi
 // Wraps a block's lines for `maxPixels` and cuts them to its maxLines, the last line saying
 // how many more there are.
 std::vector<HudLine> layoutHudBlock(const HudBlock& block, float maxPixels);
+
+// Where a block's panel goes, in the HUD's unscaled pixels (y down from the top).
+struct HudPanel {
+    std::vector<HudLine> lines;
+    float x = 0, y = 0, width = 0, height = 0;
+    bool bottom = false;
+    glm::vec4 color{0.0f};
+};
+constexpr float kHudMargin = 3;  // between panels and from the window's edge
+
+// The panels of `blocks` on a width x height window: top blocks downward, bottom ones upward.
+std::vector<HudPanel> layoutHud(const std::vector<HudBlock>& blocks, int width, int height,
+                                float scale);
+// The window pixels the panels take at the top and at the bottom (margins included): the window
+// draws the picture between them, so that no panel covers it.
+std::pair<int, int> hudBands(const std::vector<HudPanel>& panels, int height, float scale);
 
 class Hud {
   public:

@@ -26,7 +26,10 @@ class Renderer {
     void render(GLuint target, int width, int height);
 
     // Rebuilds changed (or all) shader programs; a failure keeps the last good program.
-    std::vector<std::string> reloadShaders(bool force) { return shaders_.reload(force); }
+    std::vector<std::string> reloadShaders(bool force,
+                                           const std::set<std::string>* stages = nullptr) {
+        return shaders_.reload(force, stages);
+    }
     std::string explain() const { return stage_ ? stage_->explain() : ""; }
 
     const Scene& scene() const { return scene_; }

@@ -57,8 +57,8 @@ bool sameValues(const ParamSet& a, const ParamSet& b) {
 Expectation parseEntry(const json& j, const std::string& where) {
     auto fail = [&](const std::string& what) { throw ExpectationError(where + ": " + what); };
     if (!j.is_object()) fail("an entry must be an object");
-    static const std::vector<std::string> known = {"stage",   "scene", "trees",  "set",
-                                                   "outcome", "why",   "limits", "measured"};
+    static const std::vector<std::string> known = {"stage", "scene",  "trees",    "set", "outcome",
+                                                   "why",   "limits", "measured", "look"};
     for (const auto& [key, value] : j.items()) {
         bool ok = false;
         for (const auto& k : known) ok = ok || k == key;
@@ -80,6 +80,7 @@ Expectation parseEntry(const json& j, const std::string& where) {
     e.scene = text("scene", false);
     e.outcome = text("outcome", true);
     e.why = text("why", true);
+    e.look = text("look", false);
     if (j.contains("trees")) {
         if (!j["trees"].is_array() || j["trees"].empty()) fail("\"trees\" must be a list");
         for (const auto& t : j["trees"]) {

@@ -38,6 +38,7 @@ struct Expectation {
     std::vector<std::pair<std::string, std::string>> set;  // the settings it is about
     std::string outcome;  // the lesson in a few words: "acne", "no shadows", "correct", ...
     std::string why;
+    std::string look;  // what to look for on screen, one short line (the window shows it)
     std::vector<Limit> limits;
     // "rgb", "margin margin-kind=slope", "hardware scene=lab offset-factor=20 ..."
     std::string label() const;

@@ -108,9 +108,10 @@ void ShadowStage::describe(FrameContext& f) {
     const LightFrustum& lf = map_.frustum();
     static const char* storage[] = {"rgb8", "depth16", "depth24", "depth32f"};
     char line[256];
-    std::snprintf(line, sizeof line, "map %dx%d %s (%.1f MiB), rendered %u times%s", settings_.size,
+    std::snprintf(line, sizeof line, "map %dx%d %s (%.1f MiB), rendered %u %s%s", settings_.size,
                   settings_.size, storage[static_cast<int>(settings_.storage)],
                   map_.bytes() / 1048576.0, f.stats.shadowMapRenders,
+                  f.stats.shadowMapRenders == 1 ? "time" : "times",
                   map_.addedColourAttachment() ? ", R32F colour added for completeness" : "");
     f.stats.notes.push_back(line);
     std::snprintf(line, sizeof line, "light fit %s: near %.3f far %.3f fovy %.1f (far/near %.1f)",

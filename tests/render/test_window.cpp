@@ -18,8 +18,8 @@
 
 #include "render_fixture.h"
 
-// Last: its macros (None, Bool, Status...) would clash with gtest's headers.
-#include <X11/Xlib.h>  // NOLINT(llvm-include-order)
+// Last: it includes Xlib, whose macros (None, Bool, Status...) would clash with gtest's headers.
+#include "live_window.h"  // NOLINT(llvm-include-order)
 
 using namespace sl;
 using namespace sl::test;
@@ -132,186 +132,7 @@ TEST(Window, SurvivesResizeTo0x0AndBackMirror) {
 
 // ---- live sessions: a window on its own virtual X server, driven by real X key events -------
 
-namespace {
-
-namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-bool waitUntil(const std::function<bool()>& done, double seconds) {
-    auto end = Clock::now() + std::chrono::duration<double>(seconds);
-    while (Clock::now() < end) {
-        if (done()) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    return done();
-}
-
-// Starts `command` through sh in its own process group, in `dir`, output to files there.
-pid_t spawn(const std::string& command, const std::string& dir, const std::string& display = "") {
-    pid_t pid = ::fork();
-    if (pid == 0) {
-        ::setpgid(0, 0);
-        if (::chdir(dir.c_str()) != 0) ::_exit(127);
-        if (!display.empty()) ::setenv("DISPLAY", display.c_str(), 1);
-        int out = ::open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int err = ::open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        ::dup2(out, 1);
-        ::dup2(err, 2);
-        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-        ::_exit(127);
-    }
-    return pid;
-}
-
-// One window session as a user has it: `shadowlab window ARGS` on a display of its own
-// (parallel tests never share one; -ac: no cookie to pass to the window), keys
-// sent with xdotool as real X events. `focus`: give the window the keyboard with xdotool;
-// without, the window must take it itself (a bare X server has no window manager to do it).
-class LiveWindow {
-  public:
-    LiveWindow(const std::string& args, const std::string& dir, bool focus = true) : dir_(dir) {
-        fs::create_directories(dir + "/x");
-        // Xvfb picks a free display itself and writes its number once it accepts connections
-        // (-displayfd): two servers started at once never race for one number, as xvfb-run -a's
-        // look at the lock files can ("failed to open display" under a parallel ctest).
-        xserver_ =
-            spawn("exec Xvfb -displayfd 1 -ac -nolisten tcp -screen 0 1280x1024x24", dir + "/x");
-        if (!waitUntil(
-                [&] { return readText(dir + "/x/stdout.txt").find('\n') != std::string::npos; },
-                30))
-            return;
-        display_ = ":" + readText(dir + "/x/stdout.txt");
-        display_.erase(display_.find_last_not_of("\n ") + 1);
-        window_ = spawn("exec " + std::string(SHADOWLAB_BIN) + " window " + args, dir, display_);
-        // The window exists once xdotool finds it; it gets the keyboard focus (no window manager).
-        std::string id;
-        waitUntil(
-            [&] {
-                id = capture("xdotool search --name '^shadowlab$' 2>/dev/null | head -1");
-                return !id.empty() || !alive();
-            },
-            60);
-        id_ = id;
-        if (id_.empty()) return;
-        // Keys typed to the X server (XTEST) go to the focused window, whatever the pointer is
-        // over: the pointer is put outside the window so that only the focus can route them.
-        xdo("mousemove 1270 1010");
-        if (focus)
-            xdo("windowfocus --sync " + id_);
-        else if (!waitUntil([&] { return capture("xdotool getwindowfocus 2>/dev/null") == id_; },
-                            60))
-            id_.clear();
-    }
-    ~LiveWindow() {
-        if (alive()) {
-            ::kill(window_, SIGKILL);
-            ::waitpid(window_, nullptr, 0);
-        }
-        if (xserver_ > 0) {
-            ::kill(-xserver_, SIGTERM);
-            ::waitpid(xserver_, nullptr, 0);
-        }
-    }
-    bool ready() const { return !id_.empty(); }
-    const std::string& id() const { return id_; }
-    bool alive() {
-        if (window_ <= 0 || reaped_) return false;
-        if (::waitpid(window_, &exitStatus_, WNOHANG) != window_) return true;
-        reaped_ = true;
-        return false;
-    }
-    // Real key presses (xdotool key names: bracketright, shift+Tab, Escape...).
-    bool keys(const std::string& names) { return xdo("key --delay 40 " + names) == 0; }
-    int xdo(const std::string& what) {
-        return std::system(("DISPLAY=" + display_ + " xdotool " + what).c_str());
-    }
-    std::string capture(const std::string& command) {
-        std::string text;
-        if (FILE* p = ::popen(("DISPLAY=" + display_ + " " + command).c_str(), "r")) {
-            char buffer[256];
-            while (std::fgets(buffer, sizeof buffer, p)) text += buffer;
-            ::pclose(p);
-        }
-        while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-        return text;
-    }
-    nlohmann::json state() {
-        std::string text = readText(dir_ + "/state.json");
-        return nlohmann::json::parse(text, nullptr, false);
-    }
-    bool waitState(const std::function<bool(const nlohmann::json&)>& ok, double seconds) {
-        return waitUntil(
-            [&] {
-                auto s = state();
-                return !s.is_discarded() && ok(s);
-            },
-            seconds);
-    }
-    // CPU seconds the window's process has used (user + system).
-    double cpuSeconds() const {
-        std::string stat = readText("/proc/" + std::to_string(window_) + "/stat");
-        std::istringstream in(stat.substr(stat.rfind(')') + 2));
-        std::string field;
-        long long utime = 0, stime = 0;
-        for (int k = 3; k <= 15 && in >> field; ++k) {
-            if (k == 14) utime = std::stoll(field);
-            if (k == 15) stime = std::stoll(field);
-        }
-        return double(utime + stime) / ::sysconf(_SC_CLK_TCK);
-    }
-    // Esc, then the exit code (-1 when it did not end within the time).
-    int quit() {
-        keys("Escape");
-        return exitCode();
-    }
-    // The exit code once the window has ended by itself (-1 when it did not within the time,
-    // 128 + N when signal N ended it).
-    int exitCode() {
-        waitUntil([&] { return !alive(); }, 30);
-        if (reaped_ && WIFSIGNALED(exitStatus_)) return 128 + WTERMSIG(exitStatus_);  // as sh
-        return reaped_ && WIFEXITED(exitStatus_) ? WEXITSTATUS(exitStatus_) : -1;
-    }
-    // What a window manager's close button does: WM_DELETE_WINDOW sent to the window.
-    bool askToClose() {
-        Display* d = XOpenDisplay(display_.c_str());
-        if (!d) return false;
-        XEvent e{};
-        e.xclient.type = ClientMessage;
-        e.xclient.window = std::stoul(id_);
-        e.xclient.message_type = XInternAtom(d, "WM_PROTOCOLS", False);
-        e.xclient.format = 32;
-        e.xclient.data.l[0] = static_cast<long>(XInternAtom(d, "WM_DELETE_WINDOW", False));
-        e.xclient.data.l[1] = CurrentTime;
-        bool sent = XSendEvent(d, e.xclient.window, False, NoEventMask, &e) != 0;
-        XCloseDisplay(d);  // flushes
-        return sent;
-    }
-    std::string out() const { return readText(dir_ + "/stdout.txt"); }
-    std::string err() const { return readText(dir_ + "/stderr.txt"); }
-
-  private:
-    std::string dir_, display_, id_;
-    pid_t xserver_ = -1, window_ = -1;
-    int exitStatus_ = 0;
-    bool reaped_ = false;
-};
-
-int countLines(const std::string& text, const std::string& start) {
-    int n = 0;
-    std::istringstream in(text);
-    std::string line;
-    while (std::getline(in, line)) n += line.rfind(start, 0) == 0;
-    return n;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 // The "done when": one session started with no options; `]` through all eight stages
 // and `p` at each, then the other tree with `g`, `[` back through all eight and `p` at each.
@@ -569,13 +390,14 @@ TEST(LiveWindow, RepairedShaderClearsTheError) {
     EXPECT_NE(w.out().find("every program builds again\n"), std::string::npos) << w.out();
 }
 
-// `i` cycles the HUD: full, one line, hidden, full; `h` shows the help.
+// `i` cycles the HUD: compact (the default, for a projector), full, hidden, compact; `h`
+// shows the help.
 TEST(LiveWindow, HudToggles) {
     std::string dir = tempDir("live-hud");
     LiveWindow w("--state state.json --size 320x240", dir);
     ASSERT_TRUE(w.ready()) << w.err();
-    ASSERT_TRUE(w.waitState([](const auto& s) { return s["hud"] == "full"; }, 30));
-    for (const char* expected : {"compact", "hidden", "full"}) {
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["hud"] == "compact"; }, 30));
+    for (const char* expected : {"full", "hidden", "compact"}) {
         ASSERT_TRUE(w.keys("i"));
         EXPECT_TRUE(w.waitState([&](const auto& s) { return s["hud"] == expected; }, 10))
             << expected;
@@ -690,7 +512,7 @@ TEST(Window, MirrorBringsItsSceneAndFixedRunsLegacy) {
 // Caps Lock (or Shift) on a letter is the same command: `I` and `H` as `i` and `h`.
 TEST(Window, CapitalLettersAreTheSameCommands) {
     auto s = stateAfterKeys("IH");
-    EXPECT_EQ(s["hud"], "compact");
+    EXPECT_EQ(s["hud"], "full");
     EXPECT_EQ(s["help"], true);
 }
 

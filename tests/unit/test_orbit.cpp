@@ -65,3 +65,16 @@ TEST(Orbit, LightTurnsByRadiansPerSecondNotPerFrame) {
     glm::vec3 once = circlingLight(start, 0.5f, 1.0);
     EXPECT_NEAR(glm::length(p - once), 0.0f, 1e-4);
 }
+
+// The wheel: the eye moves along its line to the target, never closer than twice the near plane
+// nor farther than half the far plane.
+TEST(Orbit, ZoomKeepsTheDirectionAndStaysInTheFrustum) {
+    Camera c;
+    c.eye = {0, 3, 4};  // 5 from the target
+    c.at = {0, 0, 0};
+    Camera in = zoomCamera(c, 0.8f);
+    EXPECT_NEAR(glm::length(in.eye - in.at), 4.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(glm::normalize(in.eye), glm::normalize(c.eye)), 1.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(zoomCamera(c, 0.001f).eye), 2 * c.zNear, 1e-5f);
+    EXPECT_NEAR(glm::length(zoomCamera(c, 100.0f).eye), 0.5f * c.zFar, 1e-4f);
+}

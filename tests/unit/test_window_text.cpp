@@ -50,8 +50,8 @@ TEST(HudText, ABlockSaysHowManyLinesDoNotFit) {
 }
 
 TEST(HudText, ScaleFollowsTheSmallerSide) {
-    EXPECT_EQ(hudScale(320, 240), 1.0f);
-    EXPECT_FLOAT_EQ(hudScale(1920, 1080), 3.0f);
+    EXPECT_FLOAT_EQ(hudScale(320, 240), 1.2f);
+    EXPECT_FLOAT_EQ(hudScale(1920, 1080), 5.4f);
     EXPECT_FLOAT_EQ(hudScale(400, 1080), hudScale(1080, 400));  // a tall narrow window too
 }
 
@@ -76,8 +76,9 @@ TEST(WindowText, ShotNameCarriesStageTreeViewAndTime) {
 TEST(WindowText, HelpListsEveryKey) {
     std::string all;
     for (const auto& h : windowHelp()) all += h + "\n";
-    for (const char* key : {"0-7", "[ ]", "g:", "Shift-Tab", "= -", "Shift",
-                            "x:", "c:", "v:", "l:", "drag", "r:", "p:", "i:", "h:", "Esc"})
+    for (const char* key :
+         {"0-8", "[ ]", "g:", "Shift-Tab", "= -", "Shift", "x:", "c:", "v:",    "l:",    "drag",
+          "r:",  "p:",  "i:", "h:",        "Esc", "n:",    "s:", "f:", "wheel", "arrows"})
         EXPECT_NE(all.find(key), std::string::npos) << key;
 }
 

@@ -1,0 +1,172 @@
+// The window's watchdog, live: a student saves a looping, a crashing, a memory-hungry or a
+// mistyped shader while the window runs. The window goes on answering keys, names the file
+// and what happened, and the last good program keeps drawing (the shot `p` saves is the same
+// picture as before the save); the repair is adopted without a key; Esc still closes it.
+#include <gtest/gtest.h>
+
+#include "render_fixture.h"
+
+// Last: it includes Xlib, whose macros (None, Bool, Status...) would clash with gtest's headers.
+#include "live_window.h"  // NOLINT(llvm-include-order)
+
+using namespace sl;
+using namespace sl::test;
+
+namespace {
+
+const std::string kOurs = std::string(SHADOWLAB_SOURCE_DIR) + "/shaders_core/margin/lit.frag";
+
+std::string replaced(std::string text, const std::string& what, const std::string& with) {
+    std::size_t at = text.find(what);
+    EXPECT_NE(at, std::string::npos) << what;
+    if (at != std::string::npos) text.replace(at, what.size(), with);
+    return text;
+}
+
+// Our margin shader with `function` added and its value (times 1e-9) in the colour.
+std::string calledFromMain(const std::string& function, const std::string& call) {
+    std::string text = replaced(readText(kOurs), "void main()", function + "\nvoid main()");
+    return replaced(text, "fragColor = shade(", "fragColor = 1e-9 * " + call + " + shade(");
+}
+
+struct Breakage {
+    const char* name;
+    std::string frag;
+    const char* said;               // a fragment of the error the window must show
+    bool slow = false;              // the trial takes seconds: long enough to press a key meanwhile
+    std::string file = "lit.frag";  // which of margin's files it replaces
+};
+
+// The i-- loop of the issue: llvmpipe stops a loop after 65,535 iterations, so it ends, but a
+// 640x480 frame of it takes about a minute.
+Breakage loop() {
+    return {"loop",
+            replaced(readText(kOurs), "    if (marginKind == 0) return margin;",
+                     "    float m = 0.0;\n    for (int i = 0; i < 10; i--) m += margin;\n"
+                     "    if (marginKind == 0) return m;"),
+            "no result within the time limit of 3 s", true};
+}
+// 50,000 chained statements: Mesa's compiler dies of SIGSEGV (Debian 12's Mesa 22.3).
+Breakage crash() {
+    std::string chain;
+    for (int k = 0; k < 50000; ++k) chain += "x=x*.5+.2;";
+    return {"crash",
+            calledFromMain("float chain(float x)\n{\n" + chain + "\n    return x;\n}\n",
+                           "chain(worldPosition.x)"),
+            "killed by SIG", true};
+}
+// A million floats in a function: the compiler wants gigabytes.
+Breakage memory() {
+    return {"memory",
+            calledFromMain("float big(vec3 p) { float a[1000000]; for (int i = 0; i < 1000000; "
+                           "i++) a[i] = p.x * float(i); return a[int(p.y)]; }",
+                           "big(worldPosition)"),
+            "the memory limit is 1536 MB", true};
+}
+Breakage uniformType() {
+    return {"uniform type",
+            replaced(readText(kOurs), "uniform float margin;", "uniform int margin;"), "margin"};
+}
+// A function declared, called and never defined: the program does not link.
+Breakage link() {
+    return {"link", calledFromMain("float missing(float x);", "missing(worldPosition.x)"),
+            "did not link"};
+}
+
+// A vertex input the meshes do not supply.
+Breakage vertexInput() {
+    const std::string ours = std::string(SHADOWLAB_SOURCE_DIR) + "/shaders_core/margin/lit.vert";
+    std::string text =
+        replaced(readText(ours), "in vec3 normal;", "in vec3 normal;\nin vec3 tangent;");
+    text = replaced(text, "gl_Position = ", "gl_Position = 1e-9 * vec4(tangent, 0.0) + ");
+    Breakage b{"vertex input", text, "vertex input 'tangent'"};
+    b.file = "lit.vert";
+    return b;
+}
+
+// Live: every breakage saved in turn over a good shader, each repaired before the next.
+void breakWhileLive(const std::string& limits, const std::vector<Breakage>& breakages) {
+    std::string dir = tempDir("live-watchdog");
+    fs::create_directories(dir + "/mine/margin");
+    const std::string good = readText(kOurs);
+    auto save = [&](const std::string& text, const std::string& name = "lit.frag") {
+        const std::string file = dir + "/mine/margin/" + name;  // as an editor saves: renamed
+        std::ofstream(file + ".tmp") << text;
+        fs::rename(file + ".tmp", file);
+    };
+    save(good);
+    LiveWindow w("--shaders mine --stage margin --state state.json --size 640x480 " + limits, dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["errors"] == 0 && s["drawn"] > 0; }, 60))
+        << w.state().dump() << w.err();
+    auto shot = [&](int n) {  // `p`: the frame without the HUD, as the window draws it
+        EXPECT_TRUE(w.keys("p"));
+        EXPECT_TRUE(waitUntil([&] { return countLines(w.out(), "saved ") >= n; }, 30)) << w.out();
+        std::istringstream out(w.out());
+        std::string line, last;
+        while (std::getline(out, line))
+            if (line.rfind("saved ", 0) == 0) last = line.substr(6);
+        Image img;
+        EXPECT_EQ(readPng(last, img), "") << last;
+        return img;
+    };
+    int shots = 0;
+    const Image before = shot(++shots);
+    for (const Breakage& b : breakages) {
+        save(b.frag, b.file);
+        // While the worker tries it, the window answers a key within a second (Tab selects the
+        // next parameter: the picture stays the same).
+        if (b.slow) {
+            ASSERT_TRUE(w.waitState([](const auto& s) { return s["trying"] == true; }, 30))
+                << b.name << " " << w.state().dump();
+            const std::string param = w.state()["param"];
+            auto pressed = Clock::now();
+            ASSERT_TRUE(w.keys("Tab"));
+            EXPECT_TRUE(w.waitState([&](const auto& s) { return s["param"] != param; }, 1.0))
+                << b.name << ": no answer to Tab within a second while the trial ran";
+            std::cout << b.name << ": Tab answered in "
+                      << std::chrono::duration<double>(Clock::now() - pressed).count()
+                      << " s during the trial\n";
+            EXPECT_EQ(w.state()["trying"], true) << b.name << ": the trial ended before the key";
+            ASSERT_TRUE(w.keys("shift+Tab"));  // the parameter the shots were taken with
+        }
+        // The verdict: which file, what happened; the last good program still draws.
+        ASSERT_TRUE(w.waitState(
+            [&](const auto& s) {
+                std::string e = s["error"];
+                return s["trying"] == false && s["errors"].template get<int>() > 0 &&
+                       e.find("mine/margin/" + b.file) != std::string::npos &&
+                       e.find(b.said) != std::string::npos;
+            },
+            120))
+            << b.name << " " << w.state().dump() << "\n"
+            << w.err();
+        EXPECT_EQ(w.state()["picture"], "stage") << b.name;
+        const Image after = shot(++shots);
+        ASSERT_EQ(after.rgba.size(), before.rgba.size());
+        EXPECT_TRUE(after.rgba == before.rgba) << b.name << ": the picture changed";
+        if (b.file == "lit.frag")
+            save(good);
+        else
+            fs::remove(dir + "/mine/margin/" + b.file);  // ours again
+        ASSERT_TRUE(w.waitState([](const auto& s) { return s["errors"] == 0; }, 60))
+            << b.name << " repaired: " << w.state().dump();
+    }
+    auto escape = Clock::now();
+    EXPECT_EQ(w.quit(), 0) << w.err();
+    const double closing = std::chrono::duration<double>(Clock::now() - escape).count();
+    EXPECT_LT(closing, 2.0) << "seconds from Esc to the end of the process";
+    std::cout << "Esc closed the window in " << closing << " s\n";
+}
+
+}  // namespace
+
+TEST(LiveWindowWatchdog, LoopUniformTypeLinkAndVertexInputKeepTheLastGoodProgram) {
+    breakWhileLive("", {loop(), uniformType(), link(), vertexInput()});
+}
+
+// A crash and a blow-up take the compiler several seconds to reach: a longer time limit, and a
+// memory limit the giant array passes (the window's own mappings count in the forked worker).
+TEST(LiveWindowWatchdog, CrashAndMemoryBlowUpKeepTheLastGoodProgram) {
+    breakWhileLive("--time-limit 60 --memory-limit 1536", {crash(), memory()});
+}
