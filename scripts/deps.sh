@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages shadowlab needs, only those missing (apt-get; sudo when not root).
 set -euo pipefail
 packages=(cmake g++ make pkg-config python3 freeglut3-dev libx11-dev libosmesa6-dev libegl-dev libglm-dev
-          python3-glad libcli11-dev nlohmann-json3-dev libstb-dev libgtest-dev xvfb xauth xdotool gnuplot-nox
+          python3-glad libarchive-dev libcli11-dev nlohmann-json3-dev libstb-dev libgtest-dev xvfb xauth xdotool gnuplot-nox
           clang libclang-rt-14-dev valgrind)  # the last three: fuzzer and memory checks in CI
 missing=()
 for p in "${packages[@]}"; do

@@ -98,7 +98,7 @@ std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCa
                                        const std::function<void(const CheckResult&)>& progress) {
     std::vector<CheckResult> results;
     for (const CheckCase& c : cases) {
-        CheckResult r = runCheck(rig, c.request, diffPath(c));
+        CheckResult r = runCheck(rig, c.request, diffPath(c), c.pictures);
         r.view = c.view;
         r.lesson =
             c.lesson.empty() && r.expectation.entry ? r.expectation.entry->label() : c.lesson;
@@ -136,7 +136,27 @@ CheckResult checkResultFor(const RenderRequest& request) {
     return r;
 }
 
-CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath) {
+namespace {
+
+// The truth as a picture: the reference's own shading, blocked where the light is blocked.
+Image truthPicture(const ReferenceImage& ref, const ReferenceShades& shades) {
+    Image out = shades.reached;
+    for (int j = 0; j < out.height; ++j)
+        for (int i = 0; i < out.width; ++i)
+            if (ref.at(i, j).blocked) std::copy_n(shades.blocked.at(i, j), 4, out.at(i, j));
+    return out;
+}
+
+std::string besideDiff(const std::string& diffPath, const std::string& kind) {
+    std::string stem = diffPath;
+    if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".png") == 0) stem.resize(stem.size() - 4);
+    return stem + "." + kind + ".png";
+}
+
+}  // namespace
+
+CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
+                     bool pictures) {
     if (request.view != ViewMode::Final)
         throw UsageError("--view " + std::string(viewName(request.view)) +
                          ": check judges the final picture; use --view final (or leave it out)");
@@ -167,6 +187,12 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
                     writePng(diffPath, diffImage(rig.reference(), e.shadowed, e.withShadows,
                                                  e.figures.evaluatedMask, e.figures.band));
                 // A full disk costs the image, not the grade nor the report: a note on the row.
+                if (err.empty() && pictures) {
+                    err = writePng(besideDiff(diffPath, "render"), e.withShadows);
+                    if (err.empty())
+                        err = writePng(besideDiff(diffPath, "truth"),
+                                       truthPicture(rig.reference(), rig.shades()));
+                }
                 if (err.empty())
                     r.diffFile = diffPath;
                 else

@@ -20,6 +20,7 @@
 #include "app/check_run.h"
 #include "app/commands.h"
 #include "app/worker.h"
+#include "course/assignment_check.h"
 #include "io/files.h"
 #include "scene/scene_json.h"
 #include "stages/stage.h"
@@ -31,7 +32,7 @@ namespace {
 struct CheckArgs {
     CommonOptions common;
     Limits limits;
-    std::string stage, report, diff, diffDir, junit, format = "json";
+    std::string stage, report, diff, diffDir, junit, format = "json", assignment;
     bool all = false, glslGiven = false;
 };
 
@@ -154,10 +155,12 @@ std::string firstLine(const std::string& text) {
     return text.substr(0, text.find('\n'));
 }
 
+}  // namespace
+
 // The result of a stage whose worker ran out of time or died: TIMEOUT or CRASH, an error of the
 // submission (exit 2), with the one line that names the stage and the limit. A stage whose job
 // threw is ERROR with what it threw: the other stages are still graded, the report written.
-CheckResult unjudgedResult(const RenderRequest& r, const WorkerOutcome& outcome,
+static CheckResult unjudgedResult(const RenderRequest& r, const WorkerOutcome& outcome,
                            const Limits& limits) {
     CheckResult out = checkResultFor(r);
     if (const StageInfo* info = findStage(r.stage)) out.parameters = ParamSet(info->params);
@@ -178,6 +181,8 @@ CheckResult unjudgedResult(const RenderRequest& r, const WorkerOutcome& outcome,
     return out;
 }
 
+namespace {
+
 // The job of one stage in one tree, run inside a worker: every lesson and view of it (its
 // cases), their results as JSON.
 nlohmann::json checkStageJob(Evaluator& rig, const std::vector<CheckCase>& cases,
@@ -191,6 +196,8 @@ nlohmann::json checkStageJob(Evaluator& rig, const std::vector<CheckCase>& cases
     }
     return {{"results", list}, {"backend", backend}, {"machine", machine}};
 }
+
+}  // namespace
 
 // Every stage and tree of `requests` evaluated in bounded workers: one worker goes through them
 // in order, reusing its contexts from one stage to the next (as one process did before), each
@@ -228,7 +235,21 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
     });
 }
 
+namespace {
+
+// `--assignment`: the submission graded by the assignment's stages, points and visibility.
+int runAssignment(const CheckArgs& a) {
+    if (a.all || !a.stage.empty())
+        throw UsageError("--assignment: the assignment names the stages; leave out --stage and --all");
+    AssignmentCheckArgs args{a.assignment, a.common.shaders, a.report, a.format, a.junit, a.diffDir, {}};
+    args.settings.backend = toBackend(a.common.backend);
+    args.settings.limits = a.limits;
+    args.settings.pictures = !a.diffDir.empty();
+    return runAssignmentCheck(args);
+}
+
 int runCheckCommand(const CheckArgs& a) {
+    if (!a.assignment.empty()) return runAssignment(a);
     if (a.all == !a.stage.empty()) throw UsageError("check: give either --stage ID or --all");
     if (!a.diff.empty() && !a.diffDir.empty())
         throw UsageError(
@@ -369,6 +390,9 @@ Command addCheckCommand(CLI::App& app) {
     cmd->add_option("--format", args->format,
                     "the --report's format: json (ours, default) or gradescope (results.json)");
     cmd->add_option("--junit", args->junit, "also write JUnit XML: one testcase per check");
+    cmd->add_option("--assignment", args->assignment,
+                    "grade --shaders DIR by an assignment file: its stages, points and visibility "
+                    "(docs/assignment.md)");
     addLimitOptions(cmd, args->limits);
     return {cmd, [args, cmd] {
                 args->glslGiven = cmd->count("--glsl") > 0;
