@@ -10,7 +10,8 @@ int main(int argc, char** argv) {
     std::vector<sl::Command> commands = {sl::addStagesCommand(app), sl::addRenderCommand(app),
                                          sl::addWindowCommand(app), sl::addBenchCommand(app),
                                          sl::addSweepCommand(app),  sl::addCheckCommand(app),
-                                         sl::addExampleCommand(app)};
+                                         sl::addExampleCommand(app), sl::addReleaseCommand(app),
+                                         sl::addGradeCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -263,6 +263,17 @@ Assignment parseAssignment(const std::string& text, const std::string& origin) {
         if (!seen.insert(id).second) in.fail(path, "stage " + id + " is listed twice");
     }
     if (a.due().empty()) in.fail("/stages", "no stage is due");
+    // One hand-in folder per student: two due stages may not claim the same file.
+    std::map<std::string, std::string> owners;
+    for (std::size_t k = 0; k < a.stages.size(); ++k) {
+        if (!a.stages[k].due) continue;
+        for (std::size_t f = 0; f < a.stages[k].files.size(); ++f) {
+            auto [it, fresh] = owners.emplace(a.stages[k].files[f], a.stages[k].stage + "/" + a.stages[k].tree);
+            if (!fresh)
+                in.fail("/stages/" + std::to_string(k) + "/files/" + std::to_string(f),
+                        "'" + it->first + "' is handed in for " + it->second + " already (one folder per student)");
+        }
+    }
     if (j.contains("extra_views")) {
         if (!j["extra_views"].is_array() || j["extra_views"].size() > 32)
             in.fail("/extra_views", "must be an array of at most 32 views");
@@ -283,10 +294,17 @@ Assignment parseAssignment(const std::string& text, const std::string& origin) {
     a.publicJson = {{"name", a.name}, {"due_date", a.dueDate}, {"stages", json::array()}};
     for (const AssignmentStage& s : a.stages) {
         if (!s.due) continue;
+        json views = json::object();
+        for (const auto& [name, v] : s.views)
+            if ((v.visibility.empty() ? s.visibility : v.visibility) != "hidden")
+                views[name] = {{"weight", v.weight}, {"visibility", v.visibility.empty() ? s.visibility : v.visibility}};
         a.publicJson["stages"].push_back({{"stage", s.stage},
                                           {"tree", s.tree},
                                           {"files", s.files},
                                           {"points", s.points},
+                                          {"visibility", s.visibility},
+                                          {"lessons", s.lessons},
+                                          {"views", views},
                                           {"todo", s.todo}});
     }
     return a;
