@@ -77,7 +77,7 @@ table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding
 .PASS,.full{background:#d7f5d7}.FAIL,.none{background:#f8d4d4}.part{background:#fbefc5}
 .MISSING{background:#ddd}.ERROR,.TIMEOUT,.CRASH{background:#e7b0b0}
 .pics{display:flex;flex-wrap:wrap;gap:8px}.pics figure{margin:0;width:32%;min-width:200px}
-.pics img{width:100%;height:auto;display:block;border:1px solid #888}
+.pics img{width:100%;height:auto;display:block;border:1px solid #888;box-sizing:border-box}
 .legend span{display:inline-block;padding:0 .4em;margin-right:.4em;color:#fff}
 td.msg{max-width:520px;overflow-wrap:anywhere}
 </style>)";

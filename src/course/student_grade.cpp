@@ -35,6 +35,11 @@ std::vector<std::vector<CheckCase>> checksOf(const std::vector<StagePlan>& plan)
 
 namespace {
 
+std::string withoutPrefix(std::string text, const std::string& prefix) {
+    for (std::size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
+    return text;
+}
+
 double rounded(double v) {
     return std::round(v * 1000.0) / 1000.0;
 }
@@ -118,6 +123,12 @@ json studentRecord(const Assignment& a, const Submission& s, const std::vector<S
         total += earned;
         stages.push_back(st);
     }
+    // Messages name the student's files as handed in, not by the private snapshot's path.
+    if (!s.overlay.empty())
+        for (json& st : stages) {
+            for (json* m : {&st["message"]}) *m = withoutPrefix(m->get<std::string>(), s.overlay + "/");
+            for (json& row : st["rows"]) row["message"] = withoutPrefix(row["message"].get<std::string>(), s.overlay + "/");
+        }
     return {{"tool", "shadowlab grade"},
             {"report_version", 1},
             {"assignment", a.name},
