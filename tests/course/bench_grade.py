@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+"""Benchmark (not a test): a class graded with `grade --jobs 2` against the README's old loop of
+`check` calls, alternating runs, on 100 one-stage submissions (margin; the loop runs
+`check --stage margin`) and 20 all-stage submissions (the loop runs `check --all`, core tree,
+as the README's script does; grade uses bench_all_stages.json, the same rows).
+Submissions: the shipped solution, the release's starter and an acne variant (margin 0), mixed.
+usage: bench_grade.py SHADOWLAB REPO WORKDIR [REPS_100 REPS_20]   prints one JSON line per run"""
+import json, os, shutil, statistics, subprocess, sys, time
+
+exe, repo, work = os.path.abspath(sys.argv[1]), sys.argv[2], sys.argv[3]
+reps100 = int(sys.argv[4]) if len(sys.argv) > 4 else 1
+reps20 = int(sys.argv[5]) if len(sys.argv) > 5 else 2
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+core = os.path.join(repo, "shaders_core")
+all_stages = os.path.join(repo, "tests/course/bench_all_stages.json")
+lab = json.load(open(all_stages))
+
+
+def put(root, rel, text):
+    os.makedirs(os.path.dirname(os.path.join(root, rel)), exist_ok=True)
+    open(os.path.join(root, rel), "w").write(text)
+
+
+margin_only = work + "/margin.json"
+json.dump({"name": "margin only", "stages": [{"stage": "margin", "files": ["margin/lit.frag"], "points": 10}]},
+          open(margin_only, "w"))
+subprocess.run([exe, "release", "--assignment", margin_only, "--out", work + "/rel"], check=True,
+               stdout=subprocess.DEVNULL)
+solution = open(os.path.join(core, "margin/lit.frag")).read()
+starter = open(work + "/rel/shaders/margin/lit.frag").read()
+acne = solution.replace("return margin;", "return 0.0;")
+for k in range(100):
+    put(work + "/class100/s%03d" % k, "margin/lit.frag", [solution, solution, starter, acne][k % 4])
+for k in range(20):
+    for s in lab["stages"]:
+        for f in s["files"]:
+            text = open(os.path.join(core, f)).read()
+            if f == "margin/lit.frag":
+                text = [solution, starter, acne, solution][k % 4]
+            put(work + "/class20/s%02d" % k, f, text)
+
+
+def old_loop(cls, args):
+    out = work + "/old-" + os.path.basename(cls)
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    start = time.time()
+    for d in sorted(os.listdir(cls)):
+        subprocess.run([exe, "check"] + args + ["--shaders", os.path.join(cls, d), "--report",
+                        "%s/%s.json" % (out, d), "--diff-dir", "%s/%s-diff" % (out, d)],
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return time.time() - start
+
+
+def new_grade(cls, assignment):
+    out = work + "/new-" + os.path.basename(cls)
+    shutil.rmtree(out, ignore_errors=True)
+    start = time.time()
+    r = subprocess.run([exe, "grade", cls, "--assignment", assignment, "--out", out, "--jobs", "2"],
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    assert r.returncode == 0, r.returncode
+    return time.time() - start
+
+
+results = {}
+for name, reps, old_args, assignment in (("100 one-stage", reps100, ["--stage", "margin"], margin_only),
+                                         ("20 all-stage", reps20, ["--all"], all_stages)):
+    cls = work + ("/class100" if name.startswith("100") else "/class20")
+    for rep in range(reps):
+        for kind in ("old", "new"):
+            t = old_loop(cls, old_args) if kind == "old" else new_grade(cls, assignment)
+            results.setdefault((name, kind), []).append(t)
+            print(json.dumps({"class": name, "run": kind, "rep": rep, "seconds": round(t, 1)}), flush=True)
+for (name, kind), ts in results.items():
+    print(json.dumps({"class": name, "run": kind, "median": round(statistics.median(ts), 1),
+                      "min": round(min(ts), 1), "max": round(max(ts), 1), "n": len(ts)}))
