@@ -149,7 +149,8 @@ Image truthPicture(const ReferenceImage& ref, const ReferenceShades& shades) {
 
 std::string besideDiff(const std::string& diffPath, const std::string& kind) {
     std::string stem = diffPath;
-    if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".png") == 0) stem.resize(stem.size() - 4);
+    if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".png") == 0)
+        stem.resize(stem.size() - 4);
     return stem + "." + kind + ".png";
 }
 

@@ -161,7 +161,7 @@ std::string firstLine(const std::string& text) {
 // submission (exit 2), with the one line that names the stage and the limit. A stage whose job
 // threw is ERROR with what it threw: the other stages are still graded, the report written.
 static CheckResult unjudgedResult(const RenderRequest& r, const WorkerOutcome& outcome,
-                           const Limits& limits) {
+                                  const Limits& limits) {
     CheckResult out = checkResultFor(r);
     if (const StageInfo* info = findStage(r.stage)) out.parameters = ParamSet(info->params);
     for (const auto& [name, value] : r.sets) out.parameters.set(name, value);
@@ -240,8 +240,10 @@ namespace {
 // `--assignment`: the submission graded by the assignment's stages, points and visibility.
 int runAssignment(const CheckArgs& a) {
     if (a.all || !a.stage.empty())
-        throw UsageError("--assignment: the assignment names the stages; leave out --stage and --all");
-    AssignmentCheckArgs args{a.assignment, a.common.shaders, a.report, a.format, a.junit, a.diffDir, {}};
+        throw UsageError(
+            "--assignment: the assignment names the stages; leave out --stage and --all");
+    AssignmentCheckArgs args{a.assignment, a.common.shaders, a.report, a.format,
+                             a.junit,      a.diffDir,        {}};
     args.settings.backend = toBackend(a.common.backend);
     args.settings.limits = a.limits;
     args.settings.pictures = !a.diffDir.empty();

@@ -18,7 +18,8 @@ namespace {
 // "" when `name` is a relative path of plain parts; else why not.
 std::string pathProblem(const std::string& name) {
     if (name.empty()) return "an entry without a name";
-    if (name[0] == '/' || name.find('\\') != std::string::npos || name.find(':') != std::string::npos)
+    if (name[0] == '/' || name.find('\\') != std::string::npos ||
+        name.find(':') != std::string::npos)
         return "'" + printableName(name) + "' is not a plain relative path";
     std::size_t start = 0;
     while (start <= name.size()) {
@@ -26,7 +27,8 @@ std::string pathProblem(const std::string& name) {
         if (end == std::string::npos) end = name.size();
         std::string part = name.substr(start, end - start);
         if (part == "..") return "'" + printableName(name) + "' leaves the folder ('..')";
-        if (part.empty() && end != name.size()) return "'" + printableName(name) + "' has an empty part";
+        if (part.empty() && end != name.size())
+            return "'" + printableName(name) + "' has an empty part";
         start = end + 1;
     }
     return "";
@@ -82,12 +84,14 @@ std::string unpackZip(const std::string& zip, const std::string& target,
             return "'" + printableName(name) + "' is a link (links are not accepted)";
         mode_t type = archive_entry_filetype(entry);
         if (type == AE_IFDIR) {
-            if (!makeParents(target, name + "/")) return "'" + printableName(name) + "': cannot create it";
+            if (!makeParents(target, name + "/"))
+                return "'" + printableName(name) + "': cannot create it";
             continue;
         }
         if (type != AE_IFREG)
             return "'" + printableName(name) + "' is not a regular file or folder";
-        if (!makeParents(target, name)) return "'" + printableName(name) + "': cannot create its folder";
+        if (!makeParents(target, name))
+            return "'" + printableName(name) + "': cannot create its folder";
         std::string path = target + "/" + name;
         int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
         if (fd < 0) return "'" + printableName(name) + "' is there twice or cannot be written";

@@ -85,7 +85,8 @@ class Reader {
         std::string s = text(v, path);
         const auto& names = visibilityNames();
         if (std::find(names.begin(), names.end(), s) == names.end())
-            fail(path, "'" + s + "' is not one of visible, hidden, after_due_date, after_published");
+            fail(path,
+                 "'" + s + "' is not one of visible, hidden, after_due_date, after_published");
         return s;
     }
 
@@ -113,9 +114,9 @@ std::set<std::string> viewNamesOf(const std::string& stage, const std::string& t
 }
 
 AssignmentStage readStage(const Reader& in, const json& j, const std::string& path) {
-    in.allowKeys(j, path,
-                 {"stage", "tree", "due", "files", "points", "visibility", "lessons", "views",
-                  "todo"});
+    in.allowKeys(
+        j, path,
+        {"stage", "tree", "due", "files", "points", "visibility", "lessons", "views", "todo"});
     AssignmentStage s;
     if (!j.contains("stage")) in.fail(path + "/stage", "missing (a stage id is required)");
     s.stage = in.text(j["stage"], path + "/stage");
@@ -150,7 +151,8 @@ AssignmentStage readStage(const Reader& in, const json& j, const std::string& pa
     }
     if (!j.contains("points")) in.fail(path + "/points", "missing (the stage's points)");
     s.points = in.number(j["points"], path + "/points", 0, 1e6);
-    if (j.contains("visibility")) s.visibility = in.visibility(j["visibility"], path + "/visibility");
+    if (j.contains("visibility"))
+        s.visibility = in.visibility(j["visibility"], path + "/visibility");
     if (j.contains("todo")) s.todo = in.text(j["todo"], path + "/todo");
     std::set<std::string> labels;
     for (const Expectation* e : lessonsOf(expectations(), s.stage, s.tree))
@@ -177,13 +179,14 @@ AssignmentStage readStage(const Reader& in, const json& j, const std::string& pa
             if (!viewNames.count(it.key())) {
                 std::string known;
                 for (const auto& v : viewNames) known += (known.empty() ? "" : ", ") + v;
-                in.fail(p, "no view '" + it.key() + "' in " + s.stage + "'s scenes (views: " +
-                               known + ")");
+                in.fail(p, "no view '" + it.key() + "' in " + s.stage +
+                               "'s scenes (views: " + known + ")");
             }
             WeightedView w;
             if (it->is_object()) {
                 in.allowKeys(*it, p, {"weight", "visibility"});
-                if (it->contains("weight")) w.weight = in.number((*it)["weight"], p + "/weight", 0, 1e6);
+                if (it->contains("weight"))
+                    w.weight = in.number((*it)["weight"], p + "/weight", 0, 1e6);
                 if (it->contains("visibility"))
                     w.visibility = in.visibility((*it)["visibility"], p + "/visibility");
             } else {
@@ -268,10 +271,12 @@ Assignment parseAssignment(const std::string& text, const std::string& origin) {
     for (std::size_t k = 0; k < a.stages.size(); ++k) {
         if (!a.stages[k].due) continue;
         for (std::size_t f = 0; f < a.stages[k].files.size(); ++f) {
-            auto [it, fresh] = owners.emplace(a.stages[k].files[f], a.stages[k].stage + "/" + a.stages[k].tree);
+            auto [it, fresh] =
+                owners.emplace(a.stages[k].files[f], a.stages[k].stage + "/" + a.stages[k].tree);
             if (!fresh)
                 in.fail("/stages/" + std::to_string(k) + "/files/" + std::to_string(f),
-                        "'" + it->first + "' is handed in for " + it->second + " already (one folder per student)");
+                        "'" + it->first + "' is handed in for " + it->second +
+                            " already (one folder per student)");
         }
     }
     if (j.contains("extra_views")) {
@@ -297,7 +302,8 @@ Assignment parseAssignment(const std::string& text, const std::string& origin) {
         json views = json::object();
         for (const auto& [name, v] : s.views)
             if ((v.visibility.empty() ? s.visibility : v.visibility) != "hidden")
-                views[name] = {{"weight", v.weight}, {"visibility", v.visibility.empty() ? s.visibility : v.visibility}};
+                views[name] = {{"weight", v.weight},
+                               {"visibility", v.visibility.empty() ? s.visibility : v.visibility}};
         a.publicJson["stages"].push_back({{"stage", s.stage},
                                           {"tree", s.tree},
                                           {"files", s.files},

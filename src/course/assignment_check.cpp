@@ -35,11 +35,12 @@ void writeOrThrow(const std::string& option, const std::string& path, const std:
 
 int runAssignmentCheck(const AssignmentCheckArgs& args) {
     if (args.shaders.empty())
-        throw UsageError("check --assignment: give the student's work with --shaders DIR (a folder or .zip)");
+        throw UsageError(
+            "check --assignment: give the student's work with --shaders DIR (a folder or .zip)");
     if (args.format != "json" && args.format != "gradescope")
         throw UsageError("--format: '" + args.format + "' is not one of json, gradescope");
-    for (const auto& [option, path] : {std::pair<std::string, std::string>{"--report", args.report},
-                                       {"--junit", args.junit}})
+    for (const auto& [option, path] :
+         {std::pair<std::string, std::string>{"--report", args.report}, {"--junit", args.junit}})
         if (!path.empty()) {
             std::string err = outputPathProblem(path);
             if (!err.empty()) throw UsageError(option + ": " + err);
@@ -68,15 +69,15 @@ int runAssignmentCheck(const AssignmentCheckArgs& args) {
     std::cout << "check by " << printableName(args.assignment) << " (" << a.name << "), shaders "
               << printableName(args.shaders) << "\n";
     nlohmann::json record;
-    bool platformFailure = gradeStudents(a, {s}, settings, [&](std::size_t, const nlohmann::json& r) {
-        record = r;
-    });
+    bool platformFailure =
+        gradeStudents(a, {s}, settings, [&](std::size_t, const nlohmann::json& r) { record = r; });
     for (const auto& st : record["stages"])
         for (const auto& row : st["rows"]) {
             char line[600];
             std::snprintf(line, sizeof line, "%-44s %-8s %6.2f/%-6.2f %-15s %s\n",
                           (st["stage"].get<std::string>() + "/" + st["tree"].get<std::string>() +
-                           "/" + row.value("view", "") + " " + row.value("lesson", "")).c_str(),
+                           "/" + row.value("view", "") + " " + row.value("lesson", ""))
+                              .c_str(),
                           row.value("verdict", "").c_str(), row.value("points", 0.0),
                           row.value("max_points", 0.0), row.value("visibility", "").c_str(),
                           printable(row.value("message", "")).substr(0, 300).c_str());

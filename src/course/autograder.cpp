@@ -55,14 +55,15 @@ struct Writer {
 
     void add(const std::string& name, const std::string& data, int mode) {
         std::unique_ptr<archive_entry, void (*)(archive_entry*)> e(archive_entry_new(),
-                                                                    archive_entry_free);
+                                                                   archive_entry_free);
         archive_entry_set_pathname(e.get(), name.c_str());
         archive_entry_set_filetype(e.get(), AE_IFREG);
         archive_entry_set_perm(e.get(), mode);
         archive_entry_set_size(e.get(), la_int64_t(data.size()));
         if (archive_write_header(a.get(), e.get()) != ARCHIVE_OK ||
             archive_write_data(a.get(), data.data(), data.size()) != la_ssize_t(data.size()))
-            throw std::runtime_error(std::string("autograder.zip: ") + archive_error_string(a.get()));
+            throw std::runtime_error(std::string("autograder.zip: ") +
+                                     archive_error_string(a.get()));
     }
 };
 
@@ -73,8 +74,9 @@ std::string writeAutograderZip(const Assignment& a, const std::string& assignmen
     (void)a;
     std::string source = dataDir();
     if (!fs::exists(source + "/CMakeLists.txt") || !fs::exists(source + "/src"))
-        throw UsageError("release --gradescope: needs shadowlab's source tree (CMakeLists.txt, src/) in " +
-                         printableName(source) + "; run it from a checkout");
+        throw UsageError(
+            "release --gradescope: needs shadowlab's source tree (CMakeLists.txt, src/) in " +
+            printableName(source) + "; run it from a checkout");
     std::string assignmentText;
     std::string err = readRegularFile(assignmentPath, 1u << 20, assignmentText);
     if (!err.empty()) throw UsageError("--assignment: " + err);
@@ -101,7 +103,8 @@ std::string writeAutograderZip(const Assignment& a, const std::string& assignmen
             std::string text;
             err = readRegularFile(f.string(), 16u << 20, text);
             if (!err.empty()) throw UsageError("release --gradescope: " + f.string() + ": " + err);
-            bool executable = (fs::status(f).permissions() & fs::perms::owner_exec) != fs::perms::none;
+            bool executable =
+                (fs::status(f).permissions() & fs::perms::owner_exec) != fs::perms::none;
             w.add("shadowlab/" + fs::relative(f, source).string(), text, executable ? 0755 : 0644);
         }
     }

@@ -1,11 +1,11 @@
 #include "course/class_grade.h"
 
 #include <dirent.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -33,7 +33,8 @@ bool isJunkEntry(const std::string& n) {
 // A student's name as a file name: [A-Za-z0-9._-] only, unique in the class.
 std::string fileNameFor(const std::string& name, std::set<std::string>& taken) {
     std::string s;
-    for (char c : name) s += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' ? c : '_';
+    for (char c : name)
+        s += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' ? c : '_';
     if (s.empty() || s[0] == '.') s = "_" + s;
     std::string unique = s;
     for (int k = 2; !taken.insert(unique).second; ++k) unique = s + "-" + std::to_string(k);
@@ -77,15 +78,17 @@ int runClassGrade(const ClassGradeArgs& args) {
     std::string fingerprint = std::to_string(std::hash<std::string>{}(assignmentText));
     struct stat st;
     if (::stat(args.submissions.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
-        throw UsageError("grade: " + printableName(args.submissions) +
-                         " is not a folder (give the folder holding one folder or .zip per student)");
+        throw UsageError(
+            "grade: " + printableName(args.submissions) +
+            " is not a folder (give the folder holding one folder or .zip per student)");
     std::vector<std::string> entries;
     for (const auto& e : fs::directory_iterator(args.submissions)) {
         std::string n = e.path().filename().string();
         if (!isJunkEntry(n)) entries.push_back(e.path().string());
     }
     std::sort(entries.begin(), entries.end());
-    if (entries.empty()) throw UsageError("grade: " + printableName(args.submissions) + " holds no submission");
+    if (entries.empty())
+        throw UsageError("grade: " + printableName(args.submissions) + " holds no submission");
     for (const char* sub : {"", "/students", "/feedback", "/work", "/logs"}) {
         std::error_code ec;
         fs::create_directories(args.out + sub, ec);
@@ -125,7 +128,8 @@ int runClassGrade(const ClassGradeArgs& args) {
     };
 
     // Jobs: child processes, each grading every jobs-th pending student in one worker series.
-    int jobs = int(std::min<std::size_t>(std::size_t(args.jobs), std::max<std::size_t>(todo.size(), 1)));
+    int jobs =
+        int(std::min<std::size_t>(std::size_t(args.jobs), std::max<std::size_t>(todo.size(), 1)));
     std::vector<pid_t> pids;
     std::cout.flush();
     std::cerr.flush();
@@ -152,7 +156,8 @@ int runClassGrade(const ClassGradeArgs& args) {
                 bool failed = gradeStudents(a, share, settings, [&](std::size_t i, const json& r) {
                     json record = r;
                     record["fingerprint"] = fingerprint;
-                    writeOrThrow(recordPath(index[i]), record.dump(1, ' ', false, json::error_handler_t::replace) + "\n");
+                    writeOrThrow(recordPath(index[i]),
+                                 record.dump(1, ' ', false, json::error_handler_t::replace) + "\n");
                 });
                 code = failed ? 3 : 0;
             } catch (const std::exception& e) {
@@ -176,10 +181,12 @@ int runClassGrade(const ClassGradeArgs& args) {
             json r = finishedRecord(recordPath(k), fingerprint);
             if (r.is_null()) continue;
             reported.insert(k);
-            double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             double left = elapsed / double(reported.size()) * double(todo.size() - reported.size());
             char line[512];
-            std::snprintf(line, sizeof line, "[student %zu of %zu] %-24s %7.2f / %.2f  %-8s time left about %s\n",
+            std::snprintf(line, sizeof line,
+                          "[student %zu of %zu] %-24s %7.2f / %.2f  %-8s time left about %s\n",
                           n - todo.size() + reported.size(), n, printableName(names[k]).c_str(),
                           r["score"].get<double>(), r["max_score"].get<double>(),
                           r["status"].get<std::string>().c_str(),
@@ -207,7 +214,8 @@ int runClassGrade(const ClassGradeArgs& args) {
         json r = finishedRecord(recordPath(k), fingerprint);
         if (r.is_null()) {
             std::cerr << "shadowlab: " << printableName(names[k])
-                      << ": no record (its job failed; see " << args.out << "/logs/): rerun grade\n";
+                      << ": no record (its job failed; see " << args.out
+                      << "/logs/): rerun grade\n";
             exitCode = 3;
             continue;
         }
@@ -217,7 +225,8 @@ int runClassGrade(const ClassGradeArgs& args) {
     }
     writeOrThrow(args.out + "/grades.csv", gradesCsv(records));
     writeOrThrow(args.out + "/class.html", classPage(a.name, records, pages));
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "graded " << records.size() << " of " << n << " in " << duration(seconds) << ": "
               << args.out << "/grades.csv, " << args.out << "/class.html, " << args.out
               << "/feedback/, " << args.out << "/students/\n";

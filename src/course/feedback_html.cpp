@@ -38,12 +38,23 @@ std::string esc(const std::string& raw) {
     std::string s = validUtf8(raw), out;
     for (char c : s) {
         switch (c) {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&#39;"; break;
-            default: out += c;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '&':
+                out += "&amp;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&#39;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -87,7 +98,8 @@ td.msg{max-width:520px;overflow-wrap:anywhere}
 std::string plainWords(const json& row) {
     std::ostringstream out;
     std::string verdict = row.value("verdict", "");
-    if (verdict == "MISSING") return "This stage was not in your hand-in, so it could not be graded.";
+    if (verdict == "MISSING")
+        return "This stage was not in your hand-in, so it could not be graded.";
     if (verdict == "ERROR" || verdict == "TIMEOUT" || verdict == "CRASH")
         return "Your shader could not be run: " + row.value("message", "") +
                ". Fix this first; the stage gets no points until it runs.";
@@ -103,10 +115,12 @@ std::string plainWords(const json& row) {
     if (!std::isnan(fl))
         out << num(fl, 1) << " % of the true shadows are drawn lit"
             << (fl > 5 ? " (shadows missing or leaking)" : "") << "; ";
-    if (!std::isnan(edge)) out << "shadow edges are within " << num(edge, 1) << " px of the truth for 95 % of them. ";
+    if (!std::isnan(edge))
+        out << "shadow edges are within " << num(edge, 1) << " px of the truth for 95 % of them. ";
     double id = fig(row, "mirror_id_pct");
     if (!std::isnan(id)) out << num(id, 1) << " % of the mirror shows the right object. ";
-    out << (verdict == "PASS" ? "That is what this check expects." : "That is not what this check expects.");
+    out << (verdict == "PASS" ? "That is what this check expects."
+                              : "That is not what this check expects.");
     return out.str();
 }
 
@@ -125,12 +139,14 @@ std::string studentPage(const json& record) {
         std::string id = st["stage"].get<std::string>() + "/" + st["tree"].get<std::string>();
         std::string status = st["status"];
         h << "<h2 id=\"" << esc(id) << "\">" << esc(id) << ": " << num(st["points"].get<double>())
-          << " of " << num(st["max_points"].get<double>()) << " points <span class=\"" << esc(status)
-          << "\">" << esc(status) << "</span></h2>\n<p>" << esc(st.value("message", "")) << "</p>\n";
+          << " of " << num(st["max_points"].get<double>()) << " points <span class=\""
+          << esc(status) << "\">" << esc(status) << "</span></h2>\n<p>"
+          << esc(st.value("message", "")) << "</p>\n";
         int hidden = 0;
         double hiddenPoints = 0;
         const json* shown = nullptr;
-        h << "<table><tr><th>view</th><th>setting</th><th>verdict</th><th>points</th><th>in plain words</th></tr>\n";
+        h << "<table><tr><th>view</th><th>setting</th><th>verdict</th><th>points</th><th>in plain "
+             "words</th></tr>\n";
         for (const json& row : st["rows"]) {
             if (row.value("visibility", "visible") == "hidden") {
                 ++hidden;
@@ -138,13 +154,14 @@ std::string studentPage(const json& record) {
                 continue;
             }
             std::string v = row.value("verdict", "");
-            if (!shown || (shown->value("verdict", "") == "PASS" && v != "PASS" && row.contains("diff") &&
-                           row["diff"].is_string()))
+            if (!shown || (shown->value("verdict", "") == "PASS" && v != "PASS" &&
+                           row.contains("diff") && row["diff"].is_string()))
                 shown = &row;
-            h << "<tr><td>" << esc(row.value("view", "")) << "</td><td>" << esc(row.value("lesson", ""))
-              << "</td><td class=\"" << esc(v) << "\">" << esc(v) << "</td><td>"
-              << num(row.value("points", 0.0)) << " / " << num(row.value("max_points", 0.0))
-              << "</td><td class=\"msg\">" << esc(plainWords(row)) << "</td></tr>\n";
+            h << "<tr><td>" << esc(row.value("view", "")) << "</td><td>"
+              << esc(row.value("lesson", "")) << "</td><td class=\"" << esc(v) << "\">" << esc(v)
+              << "</td><td>" << num(row.value("points", 0.0)) << " / "
+              << num(row.value("max_points", 0.0)) << "</td><td class=\"msg\">"
+              << esc(plainWords(row)) << "</td></tr>\n";
         }
         h << "</table>\n";
         if (hidden)
@@ -155,10 +172,17 @@ std::string studentPage(const json& record) {
                         diff = imageUri(*shown, "");
             h << "<p>Pictures of the check <b>" << esc(shown->value("view", "")) << " "
               << esc(shown->value("lesson", "")) << "</b>:</p>\n<div class=\"pics\">";
-            if (!mine.empty()) h << "<figure><img alt=\"your picture\" src=\"" << mine << "\"><figcaption>your picture</figcaption></figure>";
-            if (!truth.empty()) h << "<figure><img alt=\"the truth\" src=\"" << truth << "\"><figcaption>the truth (ray traced)</figcaption></figure>";
-            if (!diff.empty()) h << "<figure><img alt=\"the difference\" src=\"" << diff << "\"><figcaption>the difference</figcaption></figure>";
-            h << "</div>\n<p class=\"legend\"><span style=\"background:#d22\">red</span>drawn in shadow, "
+            if (!mine.empty())
+                h << "<figure><img alt=\"your picture\" src=\"" << mine
+                  << "\"><figcaption>your picture</figcaption></figure>";
+            if (!truth.empty())
+                h << "<figure><img alt=\"the truth\" src=\"" << truth
+                  << "\"><figcaption>the truth (ray traced)</figcaption></figure>";
+            if (!diff.empty())
+                h << "<figure><img alt=\"the difference\" src=\"" << diff
+                  << "\"><figcaption>the difference</figcaption></figure>";
+            h << "</div>\n<p class=\"legend\"><span style=\"background:#d22\">red</span>drawn in "
+                 "shadow, "
                  "truly lit <span style=\"background:#22d\">blue</span>drawn lit, truly in shadow "
                  "<span style=\"background:#888\">grey</span>agrees with the truth</p>\n";
         }
@@ -201,20 +225,27 @@ std::string classPage(const std::string& assignment, const std::vector<json>& re
     std::vector<std::map<std::string, int>> failures(stages.size());
     for (std::size_t k = 0; k < records.size(); ++k) {
         const json& r = records[k];
-        h << "<tr><td><a href=\"" << esc(pages[k]) << "\">" << esc(r.value("student", "")) << "</a></td>";
+        h << "<tr><td><a href=\"" << esc(pages[k]) << "\">" << esc(r.value("student", ""))
+          << "</a></td>";
         std::size_t i = 0;
         for (const json& st : r["stages"]) {
             double p = st["points"].get<double>(), m = st["max_points"].get<double>();
             std::string status = st["status"];
-            std::string cls = status != "graded" ? status : p >= m ? "full" : p <= 0 ? "none" : "part";
-            h << "<td class=\"" << esc(cls) << "\">" << (status == "graded" ? num(p) : esc(status)) << "</td>";
+            std::string cls = status != "graded" ? status
+                              : p >= m           ? "full"
+                              : p <= 0           ? "none"
+                                                 : "part";
+            h << "<td class=\"" << esc(cls) << "\">" << (status == "graded" ? num(p) : esc(status))
+              << "</td>";
             std::string f = failureOf(st);
             if (!f.empty() && i < failures.size()) ++failures[i][f];
             ++i;
         }
-        h << "<td>" << num(r["score"].get<double>()) << " / " << num(r["max_score"].get<double>()) << "</td></tr>\n";
+        h << "<td>" << num(r["score"].get<double>()) << " / " << num(r["max_score"].get<double>())
+          << "</td></tr>\n";
     }
-    h << "</table>\n<h2>Most common failure per stage</h2>\n<table><tr><th>stage</th><th>failure</th><th>students</th></tr>\n";
+    h << "</table>\n<h2>Most common failure per "
+         "stage</h2>\n<table><tr><th>stage</th><th>failure</th><th>students</th></tr>\n";
     for (std::size_t i = 0; i < stages.size(); ++i) {
         std::string best;
         int count = 0;
@@ -223,8 +254,8 @@ std::string classPage(const std::string& assignment, const std::vector<json>& re
                 best = f;
                 count = n;
             }
-        h << "<tr><td>" << esc(stages[i]) << "</td><td class=\"msg\">" << (count ? esc(best) : "none")
-          << "</td><td>" << count << "</td></tr>\n";
+        h << "<tr><td>" << esc(stages[i]) << "</td><td class=\"msg\">"
+          << (count ? esc(best) : "none") << "</td><td>" << count << "</td></tr>\n";
     }
     h << "</table>\n</body></html>\n";
     return h.str();
@@ -233,7 +264,8 @@ std::string classPage(const std::string& assignment, const std::vector<json>& re
 std::string gradesCsv(const std::vector<json>& records) {
     auto cell = [](const std::string& s) {
         std::string v = validUtf8(s);
-        if (!v.empty() && std::string("=+-@").find(v[0]) != std::string::npos) v = "'" + v;  // no formulas
+        if (!v.empty() && std::string("=+-@").find(v[0]) != std::string::npos)
+            v = "'" + v;  // no formulas
         if (v.find_first_of(",\"\n\r") == std::string::npos) return v;
         std::string out = "\"";
         for (char c : v) out += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -243,12 +275,14 @@ std::string gradesCsv(const std::vector<json>& records) {
     out << "student,status";
     if (!records.empty())
         for (const json& st : records.front()["stages"])
-            out << "," << cell(st["stage"].get<std::string>() + "/" + st["tree"].get<std::string>());
+            out << ","
+                << cell(st["stage"].get<std::string>() + "/" + st["tree"].get<std::string>());
     out << ",total,max\n";
     for (const json& r : records) {
         out << cell(r.value("student", "")) << "," << cell(r.value("status", ""));
         for (const json& st : r["stages"]) out << "," << num(st["points"].get<double>(), 3);
-        out << "," << num(r["score"].get<double>(), 3) << "," << num(r["max_score"].get<double>(), 3) << "\n";
+        out << "," << num(r["score"].get<double>(), 3) << ","
+            << num(r["max_score"].get<double>(), 3) << "\n";
     }
     return out.str();
 }

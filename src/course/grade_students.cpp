@@ -6,7 +6,8 @@
 namespace sl {
 
 std::string rowSlug(const CheckCase& c) {
-    std::string slug = c.request.stage + "-" + treeName(c.request.tree) + "-" + c.view + "-" + c.lesson;
+    std::string slug =
+        c.request.stage + "-" + treeName(c.request.tree) + "-" + c.view + "-" + c.lesson;
     for (char& ch : slug)
         if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '-') ch = '_';
     return slug;
@@ -41,8 +42,9 @@ bool gradeStudents(const Assignment& a, const std::vector<Submission>& students,
             done(k, unreadableRecord(a, s));
             return;
         }
-        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                                       pending[k].start).count();
+        double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - pending[k].start)
+                .count();
         done(k, studentRecord(a, s, pending[k].plan, pending[k].results, seconds));
     };
     auto now = std::chrono::steady_clock::now();
@@ -55,8 +57,9 @@ bool gradeStudents(const Assignment& a, const std::vector<Submission>& students,
         // The case belongs to the student whose series is running (cases carry their overlay).
         for (std::size_t k = 0; k < students.size(); ++k)
             if (!students[k].overlay.empty() && c.request.overlay == students[k].overlay)
-                return settings.imageDir ? settings.imageDir(students[k]) + "/" + rowSlug(c) + ".png"
-                                         : "";
+                return settings.imageDir
+                           ? settings.imageDir(students[k]) + "/" + rowSlug(c) + ".png"
+                           : "";
         return "";
     };
     bool platformFailure = false;

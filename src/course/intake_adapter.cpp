@@ -24,7 +24,8 @@ namespace {
 
 bool isJunk(const std::string& name) {
     return name == "__MACOSX" || name == ".DS_Store" || name == "Thumbs.db" || name == ".git" ||
-           name.back() == '~' || (name.size() > 4 && name.compare(name.size() - 4, 4, ".swp") == 0) ||
+           name.back() == '~' ||
+           (name.size() > 4 && name.compare(name.size() - 4, 4, ".swp") == 0) ||
            name.rfind("._", 0) == 0;
 }
 
@@ -152,7 +153,8 @@ Submission intakeSubmission(const std::string& path, const std::string& workDir)
         std::string only = root + "/" + entries[0];
         if (::lstat(only.c_str(), &st) != 0) break;
         if (S_ISDIR(st.st_mode) && !isStageFolder(entries[0])) {
-            s.notes.push_back("the work was inside '" + printableName(entries[0]) + "/': used from there");
+            s.notes.push_back("the work was inside '" + printableName(entries[0]) +
+                              "/': used from there");
             root = only;
         } else if (S_ISREG(st.st_mode) && endsWithZip(entries[0]) && zips < 2) {
             std::string target = workDir + "/unpacked" + std::to_string(++zips);

@@ -32,7 +32,8 @@ std::string studentReadme(const Assignment& a) {
       << "| stage | points | file(s) | what to write |\n|---|---|---|---|\n";
     for (const AssignmentStage* s : a.due()) {
         std::string files;
-        for (const auto& f : s->files) files += (files.empty() ? "" : ", ") + ("`shaders/" + f + "`");
+        for (const auto& f : s->files)
+            files += (files.empty() ? "" : ", ") + ("`shaders/" + f + "`");
         r << "| " << s->stage << " (" << s->tree << ") | " << s->points << " | " << files << " | "
           << (s->todo.empty() ? "see the TODO in the file" : s->todo) << " |\n";
     }
@@ -42,7 +43,8 @@ std::string studentReadme(const Assignment& a) {
       << "   # watch it live; edits reload\n"
       << "shadowlab check --assignment assignment.json --shaders shaders   # your points so far\n"
       << "```\n\n"
-      << "`check` grades your folder the way the instructor will: each stage against the ray-traced\n"
+      << "`check` grades your folder the way the instructor will: each stage against the "
+         "ray-traced\n"
       << "truth, from several cameras, with the points of each check (some checks are graded but\n"
       << "shown only after the due date). `--diff-dir diffs` writes a picture of each check:\n"
       << "red where you draw a shadow that is not there, blue where you miss one.\n\n"
@@ -50,7 +52,8 @@ std::string studentReadme(const Assignment& a) {
       << "The `shaders` folder (or a .zip of it) with your edited files at the same places:\n";
     for (const AssignmentStage* s : a.due())
         for (const auto& f : s->files) r << "- `" << f << "`\n";
-    r << "\nA stage whose file is not in your hand-in is MISSING and gets no points. Files you did\n"
+    r << "\nA stage whose file is not in your hand-in is MISSING and gets no points. Files you "
+         "did\n"
       << "not change may stay in the folder.\n";
     return r.str();
 }
@@ -76,7 +79,9 @@ std::string stripSolutions(const std::string& text, const std::string& origin,
             return AssignmentError(origin + ": line " + std::to_string(number) + ": " + what);
         };
         if (t == "// BEGIN SOLUTION") {
-            if (inRegion) throw where("BEGIN SOLUTION inside the region opened on line " + std::to_string(begin));
+            if (inRegion)
+                throw where("BEGIN SOLUTION inside the region opened on line " +
+                            std::to_string(begin));
             closeRegion();
             inRegion = true;
             begin = number;
@@ -126,15 +131,18 @@ std::vector<std::string> writeRelease(const Assignment& a, const std::string& as
     std::vector<std::string> written;
     for (const AssignmentStage* s : a.due())
         for (const std::string& f : s->files) {
-            std::string source = shaderTreeRoot(s->tree == "legacy" ? GlslTree::Legacy : GlslTree::Core) + "/" + f;
+            std::string source =
+                shaderTreeRoot(s->tree == "legacy" ? GlslTree::Legacy : GlslTree::Core) + "/" + f;
             std::string text;
             std::string err = readRegularFile(source, 1u << 20, text);
             if (!err.empty()) throw UsageError("release: " + source + ": " + err);
             std::vector<std::string> solution;
             std::string stripped = stripSolutions(text, source, &solution);
             if (solution.empty())
-                throw AssignmentError(source + ": no BEGIN SOLUTION region: the release would hand out the "
-                                      "whole solution of stage " + s->stage);
+                throw AssignmentError(source +
+                                      ": no BEGIN SOLUTION region: the release would hand out the "
+                                      "whole solution of stage " +
+                                      s->stage);
             writeText(outDir + "/shaders/" + f, stripped);
             written.push_back("shaders/" + f);
         }

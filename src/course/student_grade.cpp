@@ -36,7 +36,8 @@ std::vector<std::vector<CheckCase>> checksOf(const std::vector<StagePlan>& plan)
 namespace {
 
 std::string withoutPrefix(std::string text, const std::string& prefix) {
-    for (std::size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
+    for (std::size_t at; (at = text.find(prefix)) != std::string::npos;)
+        text.erase(at, prefix.size());
     return text;
 }
 
@@ -53,7 +54,10 @@ json rowJson(const RowPlan& plan, const CheckResult* result, const std::string& 
         CheckResult r = checkResultFor(plan.check.request);
         r.view = plan.check.view;
         r.lesson = plan.check.lesson;
-        row = {{"stage", r.stage}, {"tree", r.tree}, {"view", r.view}, {"lesson", r.lesson},
+        row = {{"stage", r.stage},
+               {"tree", r.tree},
+               {"view", r.view},
+               {"lesson", r.lesson},
                {"name", checkTestName(r)}};
     }
     row["view"] = plan.check.view;
@@ -76,15 +80,19 @@ json studentRecord(const Assignment& a, const Submission& s, const std::vector<S
     std::size_t k = 0;
     bool anyGraded = false;
     for (const StagePlan& p : plan) {
-        json st = {{"stage", p.stage->stage}, {"tree", p.stage->tree}, {"files", p.stage->files},
-                   {"max_points", rounded(p.stage->points)}, {"visibility", p.stage->visibility}};
+        json st = {{"stage", p.stage->stage},
+                   {"tree", p.stage->tree},
+                   {"files", p.stage->files},
+                   {"max_points", rounded(p.stage->points)},
+                   {"visibility", p.stage->visibility}};
         json rows = json::array();
         double earned = 0;
         if (!p.missingFiles.empty()) {
             std::string msg = "not handed in: expected ";
             for (std::size_t f = 0; f < p.missingFiles.size(); ++f)
                 msg += (f ? ", " : "") + p.missingFiles[f];
-            for (const RowPlan& r : p.rows) rows.push_back(rowJson(r, nullptr, "MISSING", msg, false));
+            for (const RowPlan& r : p.rows)
+                rows.push_back(rowJson(r, nullptr, "MISSING", msg, false));
             st["status"] = "MISSING";
             st["message"] = msg;
             st["missing_files"] = p.missingFiles;
@@ -110,7 +118,8 @@ json studentRecord(const Assignment& a, const Submission& s, const std::vector<S
                 for (const CheckResult& r : got)
                     if (r.error && !bad) bad = &r;
                 std::string verdict = bad ? bad->verdict() : "ERROR";
-                std::string msg = bad ? bad->judgement.message : "the stage's results are incomplete";
+                std::string msg =
+                    bad ? bad->judgement.message : "the stage's results are incomplete";
                 for (std::size_t i = 0; i < p.rows.size(); ++i)
                     rows.push_back(rowJson(p.rows[i], i < got.size() ? &got[i] : nullptr, verdict,
                                            msg, false));
@@ -126,8 +135,10 @@ json studentRecord(const Assignment& a, const Submission& s, const std::vector<S
     // Messages name the student's files as handed in, not by the private snapshot's path.
     if (!s.overlay.empty())
         for (json& st : stages) {
-            for (json* m : {&st["message"]}) *m = withoutPrefix(m->get<std::string>(), s.overlay + "/");
-            for (json& row : st["rows"]) row["message"] = withoutPrefix(row["message"].get<std::string>(), s.overlay + "/");
+            for (json* m : {&st["message"]})
+                *m = withoutPrefix(m->get<std::string>(), s.overlay + "/");
+            for (json& row : st["rows"])
+                row["message"] = withoutPrefix(row["message"].get<std::string>(), s.overlay + "/");
         }
     return {{"tool", "shadowlab grade"},
             {"report_version", 1},
@@ -149,15 +160,28 @@ json unreadableRecord(const Assignment& a, const Submission& s) {
         json rows = json::array();
         for (const RowPlan& r : planStage(a, *st, ""))
             rows.push_back(rowJson(r, nullptr, "ERROR", s.error, false));
-        stages.push_back({{"stage", st->stage}, {"tree", st->tree}, {"files", st->files},
-                          {"max_points", rounded(st->points)}, {"visibility", st->visibility},
-                          {"status", "ERROR"}, {"message", s.error}, {"points", 0.0},
+        stages.push_back({{"stage", st->stage},
+                          {"tree", st->tree},
+                          {"files", st->files},
+                          {"max_points", rounded(st->points)},
+                          {"visibility", st->visibility},
+                          {"status", "ERROR"},
+                          {"message", s.error},
+                          {"points", 0.0},
                           {"rows", rows}});
     }
-    return {{"tool", "shadowlab grade"}, {"report_version", 1}, {"assignment", a.name},
-            {"student", s.name}, {"status", "ERROR"}, {"error", s.error}, {"notes", s.notes},
-            {"files", json::array()}, {"score", 0.0}, {"max_score", rounded(a.maxPoints())},
-            {"seconds", 0.0}, {"stages", stages}};
+    return {{"tool", "shadowlab grade"},
+            {"report_version", 1},
+            {"assignment", a.name},
+            {"student", s.name},
+            {"status", "ERROR"},
+            {"error", s.error},
+            {"notes", s.notes},
+            {"files", json::array()},
+            {"score", 0.0},
+            {"max_score", rounded(a.maxPoints())},
+            {"seconds", 0.0},
+            {"stages", stages}};
 }
 
 namespace {
@@ -173,8 +197,9 @@ std::string rowOutput(const json& row) {
             if (f.contains(k) && f[k].is_number()) out << k << " " << f[k].get<double>() << "\n";
     }
     if (row.contains("diff") && row["diff"].is_string())
-        out << "diff image: " << row["diff"].get<std::string>().substr(
-                                     row["diff"].get<std::string>().find_last_of('/') + 1)
+        out << "diff image: "
+            << row["diff"].get<std::string>().substr(
+                   row["diff"].get<std::string>().find_last_of('/') + 1)
             << " (red: false shadow, blue: false lit, grey: agreement)\n";
     return out.str();
 }
@@ -188,9 +213,10 @@ json gradescopeResults(const json& record) {
         ++number;
         int sub = 0;
         for (const json& row : st["rows"]) {
-            std::string name = st["stage"].get<std::string>() + "/" + st["tree"].get<std::string>() +
-                               " " + row.value("view", "") +
-                               (row.value("lesson", "").empty() ? "" : " [" + row.value("lesson", "") + "]");
+            std::string name =
+                st["stage"].get<std::string>() + "/" + st["tree"].get<std::string>() + " " +
+                row.value("view", "") +
+                (row.value("lesson", "").empty() ? "" : " [" + row.value("lesson", "") + "]");
             double pts = row.value("points", 0.0), maxPts = row.value("max_points", 0.0);
             tests.push_back({{"name", name},
                              {"number", std::to_string(number) + "." + std::to_string(++sub)},
@@ -230,11 +256,15 @@ std::string recordJunit(const json& record) {
             ++tests;
             std::string verdict = row.value("verdict", "");
             cases << "    <testcase classname=\""
-                  << xmlEscaped(st["stage"].get<std::string>() + "/" + st["tree"].get<std::string>())
-                  << "\" name=\"" << xmlEscaped(row.value("view", "") + " " + row.value("lesson", ""))
+                  << xmlEscaped(st["stage"].get<std::string>() + "/" +
+                                st["tree"].get<std::string>())
+                  << "\" name=\""
+                  << xmlEscaped(row.value("view", "") + " " + row.value("lesson", ""))
                   << "\">\n      <properties>\n        <property name=\"points\" value=\""
-                  << row.value("points", 0.0) << "\"/>\n        <property name=\"max_points\" value=\""
-                  << row.value("max_points", 0.0) << "\"/>\n        <property name=\"visibility\" value=\""
+                  << row.value("points", 0.0)
+                  << "\"/>\n        <property name=\"max_points\" value=\""
+                  << row.value("max_points", 0.0)
+                  << "\"/>\n        <property name=\"visibility\" value=\""
                   << xmlEscaped(row.value("visibility", "")) << "\"/>\n      </properties>\n";
             std::string msg = xmlEscaped(row.value("message", ""));
             if (verdict == "FAIL" || verdict == "MISSING") {
@@ -242,14 +272,16 @@ std::string recordJunit(const json& record) {
                 cases << "      <failure type=\"" << verdict << "\" message=\"" << msg << "\"/>\n";
             } else if (verdict != "PASS" && verdict != "SKIP") {
                 ++errors;
-                cases << "      <error type=\"" << xmlEscaped(verdict) << "\" message=\"" << msg << "\"/>\n";
+                cases << "      <error type=\"" << xmlEscaped(verdict) << "\" message=\"" << msg
+                      << "\"/>\n";
             }
             cases << "    </testcase>\n";
         }
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n  <testsuite name=\""
         << xmlEscaped(record.value("assignment", "") + ": " + record.value("student", ""))
         << "\" tests=\"" << tests << "\" failures=\"" << failures << "\" errors=\"" << errors
-        << "\">\n" << cases.str() << "  </testsuite>\n</testsuites>\n";
+        << "\">\n"
+        << cases.str() << "  </testsuite>\n</testsuites>\n";
     return out.str();
 }
 
@@ -257,10 +289,11 @@ std::string recordSummary(const json& record) {
     std::ostringstream out;
     char line[512];
     for (const json& st : record["stages"]) {
-        std::snprintf(line, sizeof line, "%-16s %-8s %7.2f / %-7.2f %s\n",
-                      (st["stage"].get<std::string>() + "/" + st["tree"].get<std::string>()).c_str(),
-                      st["status"].get<std::string>().c_str(), st["points"].get<double>(),
-                      st["max_points"].get<double>(), st.value("message", "").c_str());
+        std::snprintf(
+            line, sizeof line, "%-16s %-8s %7.2f / %-7.2f %s\n",
+            (st["stage"].get<std::string>() + "/" + st["tree"].get<std::string>()).c_str(),
+            st["status"].get<std::string>().c_str(), st["points"].get<double>(),
+            st["max_points"].get<double>(), st.value("message", "").c_str());
         out << line;
     }
     std::snprintf(line, sizeof line, "total: %.2f of %.2f points\n", record["score"].get<double>(),

@@ -59,10 +59,13 @@ TEST(Base64, KnownValues) {
 }
 
 TEST(GradesCsv, QuotesAndNoFormulas) {
-    nlohmann::json r = {{"student", "=cmd|x,y"}, {"status", "graded"}, {"score", 1.5},
+    nlohmann::json r = {{"student", "=cmd|x,y"},
+                        {"status", "graded"},
+                        {"score", 1.5},
                         {"max_score", 2.0},
                         {"stages", {{{"stage", "rgb"}, {"tree", "core"}, {"points", 1.5}}}}};
-    EXPECT_EQ(gradesCsv({r}), "student,status,rgb/core,total,max\n\"'=cmd|x,y\",graded,1.500,1.500,2.000\n");
+    EXPECT_EQ(gradesCsv({r}),
+              "student,status,rgb/core,total,max\n\"'=cmd|x,y\",graded,1.500,1.500,2.000\n");
 }
 
 }  // namespace
