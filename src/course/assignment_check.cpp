@@ -56,7 +56,7 @@ int runAssignmentCheck(const AssignmentCheckArgs& args) {
             std::filesystem::remove_all(dir, ec);
         }
     } cleanup{work};
-    Submission s = intakeSubmission(args.shaders, work + "/s");
+    StudentWork s = intakeSubmission(args.shaders, work + "/s");
     for (const auto& n : s.notes) std::cerr << "shadowlab: note: " << printable(n) << "\n";
     if (!s.error.empty()) std::cerr << "shadowlab: " << printable(s.error) << "\n";
     GradeSettings settings = args.settings;
@@ -64,7 +64,7 @@ int runAssignmentCheck(const AssignmentCheckArgs& args) {
         std::error_code ec;
         std::filesystem::create_directories(args.diffDir, ec);
         if (ec) throw UsageError("--diff-dir: cannot create " + printableName(args.diffDir));
-        settings.imageDir = [dir = args.diffDir](const Submission&) { return dir; };
+        settings.imageDir = [dir = args.diffDir](const StudentWork&) { return dir; };
     }
     std::cout << "check by " << printableName(args.assignment) << " (" << a.name << "), shaders "
               << printableName(args.shaders) << "\n";

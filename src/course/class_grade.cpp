@@ -111,7 +111,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     std::cout << "\n" << std::flush;
 
     // Intake in the parent (no GL here): every pending submission's snapshot.
-    std::vector<Submission> subs(n);
+    std::vector<StudentWork> subs(n);
     for (std::size_t k : todo) {
         subs[k] = intakeSubmission(entries[k], args.out + "/work/" + files[k]);
         subs[k].name = names[k];
@@ -122,7 +122,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     settings.pictures = true;
     std::map<std::string, std::string> imageDirs;
     for (std::size_t k : todo) imageDirs[subs[k].name] = args.out + "/work/" + files[k] + "/images";
-    settings.imageDir = [imageDirs](const Submission& s) {
+    settings.imageDir = [imageDirs](const StudentWork& s) {
         auto it = imageDirs.find(s.name);
         return it == imageDirs.end() ? std::string() : it->second;
     };
@@ -147,7 +147,7 @@ int runClassGrade(const ClassGradeArgs& args) {
             }
             int code = 0;
             try {
-                std::vector<Submission> share;
+                std::vector<StudentWork> share;
                 std::vector<std::size_t> index;
                 for (std::size_t i = std::size_t(j); i < todo.size(); i += std::size_t(jobs)) {
                     share.push_back(subs[todo[i]]);

@@ -13,7 +13,7 @@ std::string rowSlug(const CheckCase& c) {
     return slug;
 }
 
-bool gradeStudents(const Assignment& a, const std::vector<Submission>& students,
+bool gradeStudents(const Assignment& a, const std::vector<StudentWork>& students,
                    const GradeSettings& settings,
                    const std::function<void(std::size_t, const nlohmann::json&)>& done) {
     struct Pending {
@@ -37,7 +37,7 @@ bool gradeStudents(const Assignment& a, const std::vector<Submission>& students,
         }
     }
     auto finish = [&](std::size_t k) {
-        const Submission& s = students[k];
+        const StudentWork& s = students[k];
         if (!s.error.empty()) {
             done(k, unreadableRecord(a, s));
             return;

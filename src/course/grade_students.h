@@ -19,12 +19,12 @@ struct GradeSettings {
     Limits limits;
     bool pictures = false;  // write render, truth and diff images per row
     // The folder of a student's images ("" = no images).
-    std::function<std::string(const Submission&)> imageDir;
+    std::function<std::string(const StudentWork&)> imageDir;
 };
 
 // Grades `students` in order; `done(k, record)` as each one's last stage comes back (a student
 // with nothing to render at once). Returns true when a GL or platform failure happened (exit 3).
-bool gradeStudents(const Assignment& a, const std::vector<Submission>& students,
+bool gradeStudents(const Assignment& a, const std::vector<StudentWork>& students,
                    const GradeSettings& settings,
                    const std::function<void(std::size_t, const nlohmann::json&)>& done);
 

@@ -16,7 +16,7 @@ namespace sl {
 
 namespace fs = std::filesystem;
 
-bool Submission::has(const std::string& rel) const {
+bool StudentWork::has(const std::string& rel) const {
     return std::find(files.begin(), files.end(), rel) != files.end();
 }
 
@@ -118,8 +118,8 @@ std::string submissionName(const std::string& path) {
     return base;
 }
 
-Submission intakeSubmission(const std::string& path, const std::string& workDir) {
-    Submission s;
+StudentWork intakeSubmission(const std::string& path, const std::string& workDir) {
+    StudentWork s;
     s.name = submissionName(path);
     std::error_code ec;
     fs::remove_all(workDir, ec);

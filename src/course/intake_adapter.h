@@ -1,7 +1,11 @@
-// The one door from the course code to a submission's intake. Issue 19's intake (src/grade/
-// intake.h: wrapper folders, junk, near misses, snapshot, MISSING) was not published when this
-// was written; this adapter does the part the course needs in the same spirit, and is the only
-// place to switch to grade/intake.h at merge.
+// The one door from the course code to a submission's intake. Issue 19's intake (grade/intake.h
+// on branch h19a: takeSubmission, stageFiles, PrivateDir) was not published when this was
+// written; this adapter does what the course needs in the same spirit and is the only place to
+// switch at merge: unpack a zip here (course/archive.h), then call takeSubmission(folder,
+// workDir + "/snapshot", shippedFiles of both trees, the due stages) and fill a StudentWork
+// from its Submission (root -> overlay, files, notes); its IntakeError for a hand-in that
+// replaces no shipped file should become a StudentWork with no files (every due stage MISSING),
+// not an error. (StudentWork, not Submission: that name is intake.h's.)
 #pragma once
 
 #include <string>
@@ -9,7 +13,7 @@
 
 namespace sl {
 
-struct Submission {
+struct StudentWork {
     std::string name;                // the student: folder name or zip stem
     std::string overlay;             // the private snapshot to grade ("" when refused)
     std::vector<std::string> files;  // relative paths of the student's regular files in it
@@ -22,7 +26,7 @@ struct Submission {
 // a zip is unpacked safely (course/archive.h); a lone wrapper folder is descended, a lone zip
 // inside is unpacked; junk (__MACOSX/, .DS_Store, editor backups) skipped; only regular files
 // are copied (links skipped with a note), within the same bounds as a zip.
-Submission intakeSubmission(const std::string& path, const std::string& workDir);
+StudentWork intakeSubmission(const std::string& path, const std::string& workDir);
 
 // The student's name for an entry of a class folder: its base name, without ".zip".
 std::string submissionName(const std::string& path);

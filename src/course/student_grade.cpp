@@ -10,7 +10,7 @@ namespace sl {
 
 using nlohmann::json;
 
-std::vector<StagePlan> planStudent(const Assignment& a, const Submission& s) {
+std::vector<StagePlan> planStudent(const Assignment& a, const StudentWork& s) {
     std::vector<StagePlan> out;
     for (const AssignmentStage* st : a.due()) {
         StagePlan p;
@@ -73,7 +73,7 @@ json rowJson(const RowPlan& plan, const CheckResult* result, const std::string& 
 
 }  // namespace
 
-json studentRecord(const Assignment& a, const Submission& s, const std::vector<StagePlan>& plan,
+json studentRecord(const Assignment& a, const StudentWork& s, const std::vector<StagePlan>& plan,
                    const std::vector<std::vector<CheckResult>>& results, double seconds) {
     json stages = json::array();
     double total = 0;
@@ -154,7 +154,7 @@ json studentRecord(const Assignment& a, const Submission& s, const std::vector<S
             {"stages", stages}};
 }
 
-json unreadableRecord(const Assignment& a, const Submission& s) {
+json unreadableRecord(const Assignment& a, const StudentWork& s) {
     json stages = json::array();
     for (const AssignmentStage* st : a.due()) {
         json rows = json::array();

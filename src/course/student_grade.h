@@ -22,18 +22,18 @@ struct StagePlan {
     std::vector<RowPlan> rows;
     std::vector<std::string> missingFiles;  // non-empty: MISSING
 };
-std::vector<StagePlan> planStudent(const Assignment& a, const Submission& s);
+std::vector<StagePlan> planStudent(const Assignment& a, const StudentWork& s);
 
 // The checks of the stages handed in, one list per stage, for checkInWorkers.
 std::vector<std::vector<CheckCase>> checksOf(const std::vector<StagePlan>& plan);
 
 // The student's record, once every handed-in stage's results came back (`results[k]` for the
 // k-th handed-in stage of `plan`, in order).
-nlohmann::json studentRecord(const Assignment& a, const Submission& s,
+nlohmann::json studentRecord(const Assignment& a, const StudentWork& s,
                              const std::vector<StagePlan>& plan,
                              const std::vector<std::vector<CheckResult>>& results, double seconds);
 // The record of a submission that could not be read (a refused zip): every due stage ERROR.
-nlohmann::json unreadableRecord(const Assignment& a, const Submission& s);
+nlohmann::json unreadableRecord(const Assignment& a, const StudentWork& s);
 
 // Gradescope's results.json for a record: one test per row with its points and visibility,
 // the message, the figures and the diff image's name; MISSING stages one 0-point test each row.

@@ -7,7 +7,7 @@ Submissions: the shipped solution, the release's starter and an acne variant (ma
 usage: bench_grade.py SHADOWLAB REPO WORKDIR [REPS_100 REPS_20 [N_ONE N_ALL]]   one JSON line per run
 (N_ONE, N_ALL: the class sizes, 100 and 20 by default). Both sides run with --time-limit 300 so a
 loaded machine does not turn slow stages into TIMEOUTs."""
-import json, os, shutil, statistics, subprocess, sys, time
+import json, os, resource, shutil, statistics, subprocess, sys, time
 
 exe, repo, work = os.path.abspath(sys.argv[1]), sys.argv[2], sys.argv[3]
 reps100 = int(sys.argv[4]) if len(sys.argv) > 4 else 1
@@ -73,9 +73,13 @@ for name, reps, old_args, assignment, cls in (
         ("%d all-stage" % n_all, reps20, ["--all"], all_stages, work + "/class20")):
     for rep in range(reps):
         for kind in ("old", "new"):
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
             t = old_loop(cls, old_args) if kind == "old" else new_grade(cls, assignment)
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
             results.setdefault((name, kind), []).append(t)
-            print(json.dumps({"class": name, "run": kind, "rep": rep, "seconds": round(t, 1)}), flush=True)
+            print(json.dumps({"class": name, "run": kind, "rep": rep, "seconds": round(t, 1),
+                              "cpu_seconds": round(cpu, 1), "load": os.getloadavg()[0]}), flush=True)
 for (name, kind), ts in results.items():
     print(json.dumps({"class": name, "run": kind, "median": round(statistics.median(ts), 1),
                       "min": round(min(ts), 1), "max": round(max(ts), 1), "n": len(ts)}))
