@@ -22,7 +22,7 @@ expected = json.loads(subprocess.run(
 out = work + "/out"
 
 # A run killed once its first student with work to render is written...
-p = subprocess.Popen([exe, "grade", work + "/class", "--assignment", lab, "--out", out, "--jobs", "1"],
+p = subprocess.Popen([exe, "grade", work + "/class", "--assignment", lab, "--out", out, "--jobs", "1", "--time-limit", "300"],
                      stdout=subprocess.PIPE, text=True)
 deadline = time.time() + 300
 while time.time() < deadline:
@@ -36,7 +36,7 @@ first = sorted(os.listdir(out + "/students"))
 print("killed after", first)
 assert first and len(first) < 6, first
 # ...resumes: the students written are skipped.
-r = subprocess.run([exe, "grade", work + "/class", "--assignment", lab, "--out", out, "--jobs", "2"],
+r = subprocess.run([exe, "grade", work + "/class", "--assignment", lab, "--out", out, "--jobs", "2", "--time-limit", "300"],
                    capture_output=True, text=True, timeout=900)
 print(r.stdout, r.stderr)
 assert r.returncode == 0, r.returncode

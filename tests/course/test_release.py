@@ -41,7 +41,7 @@ print("no solution line of %d regions in the release" % regions)
 # 2. The starter fails every due stage; the solution passes every one.
 def grade(shaders, report):
     r = subprocess.run([exe, "check", "--assignment", assignment, "--shaders", shaders,
-                        "--report", report], capture_output=True, text=True, timeout=900)
+                        "--report", report, "--time-limit", "300"], capture_output=True, text=True, timeout=900)
     print(r.stdout[-1500:], r.stderr[-1500:])
     return r.returncode, json.load(open(report))
 
