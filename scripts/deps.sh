@@ -25,29 +25,29 @@ ID="" VERSION_ID="" VERSION_CODENAME="" PRETTY_NAME=""
 common=(cmake g++ make pkg-config python3 python3-glad libx11-dev libegl-dev libglm-dev
         libcli11-dev nlohmann-json3-dev libstb-dev libgtest-dev xvfb xauth xdotool gnuplot-nox
         libegl-mesa0 libglx-mesa0 libgl1-mesa-dri)
-# The course helper's archive library, when it lands, joins every list here (e.g. libzip-dev).
-course=()
+# The course cycle: libarchive unpacks students' zips (safely: src/course/archive.h).
+course=(libarchive-dev)
 case "$ID:${VERSION_ID:-}" in
   debian:12)
     system="Debian 12"
     run=(freeglut3-dev libosmesa6-dev)
-    test=(clang libclang-rt-14-dev valgrind debootstrap) ;;  # debootstrap: CI's chroots
+    test=(clang libclang-rt-14-dev valgrind debootstrap chromium) ;;  # CI's chroots; the pages' browser
   debian:13)
     system="Debian 13"
     run=(libglut-dev libosmesa6-dev)  # Mesa 25.0: the last with OSMesa
-    test=(clang libclang-rt-dev valgrind debootstrap) ;;
+    test=(clang libclang-rt-dev valgrind debootstrap chromium) ;;
   debian:)  # testing and sid carry no VERSION_ID; Mesa 25.1 on has no OSMesa (EGL headless)
     system="Debian testing ($VERSION_CODENAME)"
     run=(libglut-dev)
-    test=(clang libclang-rt-dev valgrind debootstrap) ;;
+    test=(clang libclang-rt-dev valgrind debootstrap chromium) ;;
   ubuntu:22.04)
     system="Ubuntu 22.04"
     run=(freeglut3-dev libosmesa6-dev)  # glad 0.1 and no glut.pc: CMakeLists.txt handles both
-    test=(clang libfuzzer-14-dev valgrind) ;;
+    test=(clang libfuzzer-14-dev valgrind) ;;  # chromium is a snap here: course_grade is skipped
   ubuntu:24.04)
     system="Ubuntu 24.04"
     run=(libglut-dev)  # libosmesa6-dev only while the archive still has it (added below)
-    test=(clang libclang-rt-18-dev valgrind) ;;
+    test=(clang libclang-rt-18-dev valgrind) ;;  # (chromium: a snap, as on 22.04)
   *)
     echo "deps: ${PRETTY_NAME:-this system} is not one deps.sh knows (Debian 12, 13, testing;" \
          "Ubuntu 22.04, 24.04). Install by hand: CMake >= 3.20, a C++17 compiler, pkg-config," \

@@ -16,7 +16,11 @@ void main()
     vec3 shadowCoord = ndc * 0.5 + 0.5;
     shadowCoord.z = min(shadowCoord.z, 1.0);  // beyond the far plane: as far as can be stored
     float visibility = 1.0;
+    // BEGIN SOLUTION
     if (lightSpace.w > 0.0)
         visibility = shadowCoord.z <= texture(shadowMap, shadowCoord.xy).r + margin ? 1.0 : 0.0;
+    // END SOLUTION
+    // STUB: // TODO: the shadow test against the depth texture: visibility 0.0 where shadowCoord.z lies
+    // STUB: // behind the stored depth (shadowMap's .r at shadowCoord.xy) plus `margin` (lightSpace.w > 0.0).
     fragColor = shade(worldPosition, worldNormal, visibility, shadowCoord.z);
 }

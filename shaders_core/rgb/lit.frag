@@ -23,7 +23,12 @@ void main()
     vec3 shadowCoord = ndc * 0.5 + 0.5;        // [-1,1] -> [0,1]: s, t and the depth u
     shadowCoord.z = min(shadowCoord.z, 1.0);   // beyond the light's far plane: as far as can be stored
     float visibility = 1.0;
+    // BEGIN SOLUTION
     if (lightSpace.w > 0.0)  // behind the light: lit
         visibility = shadowCoord.z <= storedDepth(shadowCoord.xy) + margin ? 1.0 : 0.0;
+    // END SOLUTION
+    // STUB: // TODO: the shadow test. shadowCoord holds the fragment's position in the light's [0,1] cube;
+    // STUB: // look up the depth stored at shadowCoord.xy (storedDepth) and set visibility to 0.0 where
+    // STUB: // shadowCoord.z lies behind it by more than `margin` (only where lightSpace.w > 0.0).
     fragColor = shade(worldPosition, worldNormal, visibility, shadowCoord.z);
 }

@@ -19,6 +19,12 @@ void main()
     // the default) does not, and a receiver beyond the light's far plane would fail the compare
     // against the cleared map. Clamp it here so both formats agree: beyond the far plane only a
     // caster in the map can shadow.
+    // BEGIN SOLUTION
     float visibility = shadowCoord.w > 0.0 ? shadow2D(shadowMap, vec3(p.xy, min(p.z, 1.0))).r : 1.0;
+    // END SOLUTION
+    // STUB: // TODO: look the fragment up in the sampler2DShadow at (p.xy, p.z clamped to 1.0): with
+    // STUB: // compare mode on, the texture returns the comparison (1.0 lit, 0.0 shadowed, PCF between).
+    // STUB: // Only in front of the light (shadowCoord.w > 0.0); elsewhere 1.0.
+    // STUB: float visibility = 1.0;
     gl_FragColor = shade(worldPosition, worldNormal, visibility, p.z);
 }

@@ -16,10 +16,15 @@ uniform float slopeMax;
 
 float marginFor(vec3 N, vec3 L)
 {
+    // BEGIN SOLUTION
     if (marginKind == 0) return margin;
     float cosTheta = clamp(dot(N, L), 0.001, 1.0);
     float tanTheta = sqrt(1.0 - cosTheta * cosTheta) / cosTheta;  // tan(acos(N.L))
     return clamp(slopeK * tanTheta, slopeMin, slopeMax);
+    // END SOLUTION
+    // STUB: // TODO: `margin` when marginKind == 0; else slopeK * tan(acos(N.L)) clamped to
+    // STUB: // [slopeMin, slopeMax] (grazing light needs a larger margin).
+    // STUB: return 0.0;
 }
 
 void main()
@@ -30,7 +35,11 @@ void main()
     vec3 shadowCoord = ndc * 0.5 + 0.5;
     shadowCoord.z = min(shadowCoord.z, 1.0);  // beyond the far plane: as far as can be stored
     float visibility = 1.0;
+    // BEGIN SOLUTION
     if (lightSpace.w > 0.0)
         visibility = shadowCoord.z <= texture2D(shadowMap, shadowCoord.xy).r + marginFor(N, L) ? 1.0 : 0.0;
+    // END SOLUTION
+    // STUB: // TODO: the shadow test with marginFor(N, L) as the margin: visibility 0.0 where
+    // STUB: // shadowCoord.z lies behind the stored depth plus the margin (lightSpace.w > 0.0).
     gl_FragColor = shade(worldPosition, worldNormal, visibility, shadowCoord.z);
 }

@@ -137,8 +137,8 @@ std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCa
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const CheckCase& c = cases[k];
         auto found = ours.find(k);
-        CheckResult r =
-            runCheck(rig, c.request, diffPath(c), found == ours.end() ? nullptr : &found->second);
+        CheckResult r = runCheck(rig, c.request, diffPath(c),
+                                 found == ours.end() ? nullptr : &found->second, c.pictures);
         r.view = c.view;
         r.lesson =
             c.lesson.empty() && r.expectation.entry ? r.expectation.entry->label() : c.lesson;
@@ -202,10 +202,26 @@ Judgement judgeDisplaced(const Expectation& entry, const CheckResult& theirs,
     return j;
 }
 
+// The truth as a picture: the reference's own shading, blocked where the light is blocked.
+Image truthPicture(const ReferenceImage& ref, const ReferenceShades& shades) {
+    Image out = shades.reached;
+    for (int j = 0; j < out.height; ++j)
+        for (int i = 0; i < out.width; ++i)
+            if (ref.at(i, j).blocked) std::copy_n(shades.blocked.at(i, j), 4, out.at(i, j));
+    return out;
+}
+
+std::string besideDiff(const std::string& diffPath, const std::string& kind) {
+    std::string stem = diffPath;
+    if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".png") == 0)
+        stem.resize(stem.size() - 4);
+    return stem + "." + kind + ".png";
+}
+
 }  // namespace
 
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
-                     const std::map<std::string, double>* shipped) {
+                     const std::map<std::string, double>* shipped, bool pictures) {
     if (request.view != ViewMode::Final)
         throw UsageError("--view " + std::string(viewName(request.view)) +
                          ": check judges the final picture; use --view final (or leave it out)");
@@ -237,6 +253,12 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
                     writePng(diffPath, diffImage(rig.reference(), e.shadowed, e.withShadows,
                                                  e.figures.evaluatedMask, e.figures.band));
                 // A full disk costs the image, not the grade nor the report: a note on the row.
+                if (err.empty() && pictures) {
+                    err = writePng(besideDiff(diffPath, "render"), e.withShadows);
+                    if (err.empty())
+                        err = writePng(besideDiff(diffPath, "truth"),
+                                       truthPicture(rig.reference(), rig.shades()));
+                }
                 if (err.empty())
                     r.diffFile = diffPath;
                 else

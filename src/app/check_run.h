@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "app/worker.h"
 #include "eval/evaluator.h"
 #include "stages/expectations.h"
 
@@ -56,13 +57,16 @@ CheckResult checkResultFor(const RenderRequest& request);
 // Other failures propagate (bad input: UsageError; GL: std::runtime_error).
 // A displaced case (RenderRequest::displaceSeed) is judged against the wider of the lesson's
 // bounds and `shipped`, our shipped shaders' figures in the same view (the case's own when null).
+// With `pictures`, a shadow stage's render and the truth's shading are written beside the diff
+// image too (DIFF.render.png, DIFF.truth.png: a feedback page shows the three side by side).
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
-                     const std::map<std::string, double>* shipped = nullptr);
+                     const std::map<std::string, double>* shipped = nullptr, bool pictures = false);
 
 // One thing a (stage, tree) check judges: a lesson entry's settings seen from one view.
 struct CheckCase {
     RenderRequest request;
     std::string view, lesson;
+    bool pictures = false;  // write the render and the truth beside the diff image
 };
 
 // What `check` runs for one stage and tree (`base`): every lesson entry of expectations.json
@@ -83,6 +87,15 @@ std::uint64_t drawSeed();
 std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCase>& cases,
                                        const std::function<std::string(const CheckCase&)>& diffPath,
                                        const std::function<void(const CheckResult&)>& progress);
+
+// Every (stage, tree) of `plan` evaluated in bounded workers, one worker going through them in
+// order and reusing its evaluator (contexts, references) until a stage kills it: a stage that
+// runs out of time or dies is one TIMEOUT or CRASH result, a fresh worker takes the next.
+// `each(k, results)` gets plan[k]'s results as they come; a GL failure sets platformFailure.
+void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
+                    const std::function<std::string(const CheckCase&)>& diffPath, Backend backend,
+                    const Limits& limits, bool& platformFailure,
+                    const std::function<void(std::size_t, std::vector<CheckResult>)>& each);
 
 // The fixed-width table a check prints: a header, then one line per result.
 std::string checkTableHeader();

@@ -24,6 +24,7 @@
 #include "app/worker.h"
 #include "grade/bounds.h"
 #include "grade/intake.h"
+#include "course/assignment_check.h"
 #include "io/files.h"
 #include "scene/scene_json.h"
 #include "stages/stage.h"
@@ -35,7 +36,7 @@ namespace {
 struct CheckArgs {
     CommonOptions common;
     Limits limits;
-    std::string stage, report, diff, diffDir, junit, format = "json";
+    std::string stage, report, diff, diffDir, junit, format = "json", assignment;
     bool all = false, glslGiven = false, shadersGiven = false;
     std::optional<std::uint64_t> seed;  // --seed: the displaced view's; else drawn at start
 };
@@ -307,6 +308,8 @@ std::string shippedShadersFailToo(std::vector<CheckCase> cases, Backend backend,
            "), not the submission's; raise --time-limit or --memory-limit, or use a smaller scene";
 }
 
+}  // namespace
+
 // Every stage and tree of `requests` evaluated in bounded workers: one worker goes through them
 // in order, reusing its contexts from one stage to the next (as one process did before), each
 // stage under its own time limit. A stage whose worker runs out of time or dies is one TIMEOUT
@@ -352,7 +355,24 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
     });
 }
 
+namespace {
+
+// `--assignment`: the submission graded by the assignment's stages, points and visibility.
+int runAssignment(const CheckArgs& a) {
+    if (a.all || !a.stage.empty())
+        throw UsageError(
+            "--assignment: the assignment names the stages; leave out --stage and --all");
+    AssignmentCheckArgs args{a.assignment, a.common.shaders, a.report, a.format,
+                             a.junit,      a.diffDir,        {}};
+    args.settings.backend = toBackend(a.common.backend);
+    args.settings.limits = a.limits;
+    args.settings.pictures = !a.diffDir.empty();
+    args.settings.seed = a.seed ? *a.seed : drawSeed();
+    return runAssignmentCheck(args);
+}
+
 int runCheckCommand(const CheckArgs& a) {
+    if (!a.assignment.empty()) return runAssignment(a);
     if (a.all == !a.stage.empty()) throw UsageError("check: give either --stage ID or --all");
     if (!a.diff.empty() && !a.diffDir.empty())
         throw UsageError(
@@ -567,6 +587,9 @@ Command addCheckCommand(CLI::App& app) {
     cmd->add_option("--junit", args->junit, "also write JUnit XML: one testcase per check");
     cmd->add_option("--seed", args->seed,
                     "the displaced views' seed (as the report's \"seed\"); default: drawn now");
+    cmd->add_option("--assignment", args->assignment,
+                    "grade --shaders DIR by an assignment file: its stages, points and visibility "
+                    "(docs/assignment.md)");
     addLimitOptions(cmd, args->limits);
     return {cmd, [args, cmd] {
                 args->glslGiven = cmd->count("--glsl") > 0;

@@ -21,6 +21,8 @@ Command addBenchCommand(CLI::App& app);
 Command addSweepCommand(CLI::App& app);
 Command addCheckCommand(CLI::App& app);
 Command addExampleCommand(CLI::App& app);
+Command addReleaseCommand(CLI::App& app);
+Command addGradeCommand(CLI::App& app);
 
 // Runs `body`, turning the project's exceptions into the contract's exit codes and one-line
 // messages on stderr.

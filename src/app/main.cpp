@@ -9,10 +9,10 @@ int main(int argc, char** argv) {
     sl::applyBoxThreads();  // before any GL context: llvmpipe sizes its threads once
     CLI::App app{"shadowlab: shadow maps and a planar mirror, stage by stage"};
     app.require_subcommand(1);
-    std::vector<sl::Command> commands = {sl::addStagesCommand(app), sl::addRenderCommand(app),
-                                         sl::addWindowCommand(app), sl::addBenchCommand(app),
-                                         sl::addSweepCommand(app),  sl::addCheckCommand(app),
-                                         sl::addExampleCommand(app)};
+    std::vector<sl::Command> commands = {
+        sl::addStagesCommand(app),  sl::addRenderCommand(app),  sl::addWindowCommand(app),
+        sl::addBenchCommand(app),   sl::addSweepCommand(app),   sl::addCheckCommand(app),
+        sl::addExampleCommand(app), sl::addReleaseCommand(app), sl::addGradeCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

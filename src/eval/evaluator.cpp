@@ -31,6 +31,7 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
         renderer_ = makeRenderer(r);
         sceneLight_ = renderer_->scene().light.position;
         key_ = key.str();
+        sceneKey_ = r.scene + "/" + std::to_string(r.width) + "x" + std::to_string(r.height);
     }
     renderer_->selectStage(r.stage);
     renderer_->params() = ParamSet(renderer_->stage().params);
@@ -46,32 +47,50 @@ void Evaluator::reset() {
     context_.reset();
     key_.clear();
     referenceKey_.clear();
-    shadowVisibleKey_.clear();
+    truth_.reset();
 }
 
 const ReferenceImage& Evaluator::reference() {
     Renderer& r = *renderer_;
     std::ostringstream key;
     auto put = [&](const glm::vec3& v) { key << "/" << v.x << "," << v.y << "," << v.z; };
-    key << key_ << "/" << r.camera.fovyDegrees;
+    key << sceneKey_ << "/" << r.camera.fovyDegrees;
     for (const glm::vec3& v : {r.lightPosition, r.camera.eye, r.camera.at}) put(v);
-    if (key.str() != referenceKey_) {
-        reference_ = traceReference(r.scene(), r.camera, r.lightPosition, context_->width(),
-                                    context_->height());
+    if (!truth_ || key.str() != referenceKey_) {
         referenceKey_ = key.str();
+        auto found = truths_.find(referenceKey_);
+        if (found != truths_.end()) {
+            truth_ = found->second;
+        } else {
+            truth_ = std::make_shared<Truth>();
+            truth_->reference = traceReference(r.scene(), r.camera, r.lightPosition,
+                                               context_->width(), context_->height());
+            ++traced_;
+            if (truthOrder_.size() >= kMaxTruths) {
+                truths_.erase(truthOrder_.front());
+                truthOrder_.erase(truthOrder_.begin());
+            }
+            truths_[referenceKey_] = truth_;
+            truthOrder_.push_back(referenceKey_);
+        }
     }
-    return reference_;
+    return truth_->reference;
+}
+
+const ReferenceShades& Evaluator::shades() {
+    reference();
+    if (!truth_->shaded) {
+        Renderer& r = *renderer_;
+        truth_->shades = referenceShades(r.scene(), r.camera, truth_->reference, r.lightPosition);
+        truth_->visible = shadowVisiblePixels(truth_->shades);
+        truth_->shaded = true;
+    }
+    return truth_->shades;
 }
 
 const std::vector<std::uint8_t>& Evaluator::shadowVisible() {
-    reference();
-    if (shadowVisibleKey_ != referenceKey_) {
-        Renderer& r = *renderer_;
-        shades_ = referenceShades(r.scene(), r.camera, reference_, r.lightPosition);
-        shadowVisible_ = shadowVisiblePixels(shades_);
-        shadowVisibleKey_ = referenceKey_;
-    }
-    return shadowVisible_;
+    shades();
+    return truth_->visible;
 }
 
 Accuracy shadowAccuracy(const ShadowFigures& f) {
@@ -130,8 +149,8 @@ ShadowEvidence Evaluator::shadowEvidence() {
     e.shadowed = classifyShadowed(e.withShadows, e.allLit);
     for (std::size_t k = 0; k < e.shadowed.size(); ++k)
         e.shadowed[k] = e.shadowed[k] || inputs.darkWithoutCaster[k];
-    inputs.shadowLevelOff = shadowLevelOff(e.withShadows, e.allLit, shades_);
-    inputs.lightLost = lightLost(e.withShadows, e.allLit, shades_);
+    inputs.shadowLevelOff = shadowLevelOff(e.withShadows, e.allLit, shades());
+    inputs.lightLost = lightLost(e.withShadows, e.allLit, shades());
     e.figures = shadowFigures(ref, e.shadowed, inputs);
     return e;
 }

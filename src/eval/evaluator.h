@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -71,6 +72,10 @@ class Evaluator {
     const ReferenceImage& reference();
     // Where a shadow could be seen at all for the current reference (shadowVisiblePixels).
     const std::vector<std::uint8_t>& shadowVisible();
+    // The reference's own shading, lit and blocked (referenceShades), for the current view.
+    const ReferenceShades& shades();
+    // How many references this evaluator traced (a class should trace each view once).
+    int tracedCount() const { return traced_; }
     // The shadow stages' half of accuracy(): the render with its map and with the map forced to
     // "everything lit", our own unshadowed lighting (phong) and an id render for coverage. A
     // pixel is shadowed where the render is clearly darker than the all-lit one, or the all-lit
@@ -93,11 +98,22 @@ class Evaluator {
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<Renderer> shipped_[3];  // by Shipped
     glm::vec3 sceneLight_{0};
+    // The references of the views seen so far, kept across overlays and shader errors (a
+    // reference depends on the scene, size, camera and light only): grading a class in one
+    // evaluator traces each view once. Bounded (kMaxTruths, oldest dropped first).
+    struct Truth {
+        ReferenceImage reference;
+        bool shaded = false;
+        ReferenceShades shades;  // the reference's shading lit and blocked
+        std::vector<std::uint8_t> visible;
+    };
+    static constexpr std::size_t kMaxTruths = 8;
+    std::string sceneKey_;  // scene and size of the current renderer
+    std::map<std::string, std::shared_ptr<Truth>> truths_;
+    std::vector<std::string> truthOrder_;
     std::string referenceKey_;
-    ReferenceImage reference_;
-    std::string shadowVisibleKey_;
-    ReferenceShades shades_;  // the reference's shading lit and blocked, for shadowVisible_ too
-    std::vector<std::uint8_t> shadowVisible_;
+    std::shared_ptr<Truth> truth_;  // the current view's
+    int traced_ = 0;
 };
 
 }  // namespace sl

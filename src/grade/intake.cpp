@@ -37,16 +37,6 @@ bool endsWith(const std::string& s, const std::string& tail) {
     return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-// Editor and archive leftovers: never a shader, never mentioned.
-bool isJunk(const std::string& name) {
-    if (name.empty() || name[0] == '.') return true;  // .DS_Store, .lit.frag.swp, .git, ._x
-    if (name == "__MACOSX" || name == "Thumbs.db" || name == "desktop.ini") return true;
-    if (name.back() == '~') return true;  // emacs, gedit backups
-    if (name.size() > 1 && name[0] == '#' && name.back() == '#') return true;  // emacs autosave
-    for (const char* ext : {".swp", ".swo", ".bak", ".orig"})
-        if (endsWith(lower(name), ext)) return true;
-    return false;
-}
 
 struct Fd {
     int fd = -1;
@@ -77,7 +67,7 @@ std::vector<std::string> listFolder(int fd, int& entries, const std::string& sho
             throw IntakeError(shown + ": more than " + std::to_string(kMaxEntries) +
                               " files and folders; a submission is a few shader files");
         }
-        if (!isJunk(name)) names.push_back(name);
+        if (!isJunkName(name)) names.push_back(name);
     }
     ::closedir(dir);
     std::sort(names.begin(), names.end());
@@ -243,6 +233,17 @@ std::string privateTemp() {
 
 }  // namespace
 
+// Editor and archive leftovers: never a shader, never mentioned.
+bool isJunkName(const std::string& name) {
+    if (name.empty() || name[0] == '.') return true;  // .DS_Store, .lit.frag.swp, .git, ._x
+    if (name == "__MACOSX" || name == "Thumbs.db" || name == "desktop.ini") return true;
+    if (name.back() == '~') return true;  // emacs, gedit backups
+    if (name.size() > 1 && name[0] == '#' && name.back() == '#') return true;  // emacs autosave
+    for (const char* ext : {".swp", ".swo", ".bak", ".orig"})
+        if (endsWith(lower(name), ext)) return true;
+    return false;
+}
+
 std::set<std::string> shippedFiles(const std::string& treeRoot) {
     std::set<std::string> out;
     std::error_code ec;
@@ -328,7 +329,7 @@ Submission takeSubmission(const std::string& folder, const std::string& privateD
                            "<stage>/, e.g. " +
                            example + ")";
         if (!misses.empty()) line += "; " + misses.front();
-        throw IntakeError(line);
+        throw NothingHandedIn(line);
     }
     return s;
 }

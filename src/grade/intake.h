@@ -22,6 +22,13 @@ class IntakeError : public std::runtime_error {
     explicit IntakeError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// The submission was read, but no file in it replaces a shipped one (empty, a README, only near
+// misses): for `check` exit 2; for an assignment every due stage is MISSING.
+class NothingHandedIn : public IntakeError {
+  public:
+    using IntakeError::IntakeError;
+};
+
 struct Submission {
     std::string source;              // the folder as given
     std::string folder;              // the folder read: source, or the wrapper descended into
@@ -29,6 +36,10 @@ struct Submission {
     std::vector<std::string> files;  // every file copied, relative to root, sorted
     std::vector<std::string> notes;  // one line each: wrapper, near misses, links skipped
 };
+
+// Editor and archive leftovers (`__MACOSX`, `.DS_Store` and other hidden names, `*~`, `#x#`,
+// `.swp`, `.bak`...): never a shader, never mentioned.
+bool isJunkName(const std::string& name);
 
 // The relative paths of every shipped file under `treeRoot` (e.g. "margin/lit.frag").
 std::set<std::string> shippedFiles(const std::string& treeRoot);

@@ -1,0 +1,24 @@
+// A student's .zip unpacked safely (libarchive): regular files and folders only (a link, device
+// or FIFO refuses the archive), no path outside the target (absolute, "..", empty parts), at
+// most kMaxEntries entries, kMaxFileBytes per file and kMaxTotalBytes in all, counted on the
+// bytes actually inflated so a zip bomb stops at the bound whatever its headers claim.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace sl {
+
+struct UnpackLimits {
+    std::size_t maxEntries = 1000;
+    std::size_t maxFileBytes = 1u << 20;    // a shader is read up to 1 MB anyway
+    std::size_t maxTotalBytes = 16u << 20;  // the whole submission
+    std::size_t maxArchiveBytes = 16u << 20;
+};
+
+// Unpacks `zip` into the folder `target` (created; must not exist). Returns "" or why the
+// archive was refused (one line, naming the entry); on refusal `target` may hold a part.
+std::string unpackZip(const std::string& zip, const std::string& target,
+                      const UnpackLimits& limits = {});
+
+}  // namespace sl

@@ -1,0 +1,236 @@
+#include "course/class_grade.h"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <set>
+#include <thread>
+
+#include "course/feedback_html.h"
+#include "io/files.h"
+
+namespace sl {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+bool isJunkEntry(const std::string& n) {
+    return n.empty() || n[0] == '.' || n == "__MACOSX" || n.back() == '~';
+}
+
+// A student's name as a file name: [A-Za-z0-9._-] only, unique in the class.
+std::string fileNameFor(const std::string& name, std::set<std::string>& taken) {
+    std::string s;
+    for (char c : name)
+        s += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' ? c : '_';
+    if (s.empty() || s[0] == '.') s = "_" + s;
+    std::string unique = s;
+    for (int k = 2; !taken.insert(unique).second; ++k) unique = s + "-" + std::to_string(k);
+    return unique;
+}
+
+void writeOrThrow(const std::string& path, const std::string& text) {
+    std::string err = writeFileAtomically(path, text.data(), text.size());
+    if (!err.empty()) throw UsageError("grade: " + err);
+}
+
+// The record of a student already graded against this assignment, or null.
+json finishedRecord(const std::string& path, const std::string& fingerprint) {
+    std::string text;
+    if (!readRegularFile(path, 64u << 20, text).empty()) return nullptr;
+    try {
+        json j = json::parse(text);
+        if (j.value("fingerprint", "") == fingerprint) return j;
+    } catch (const json::exception&) {
+    }
+    return nullptr;
+}
+
+std::string duration(double s) {
+    char t[32];
+    if (s >= 90)
+        std::snprintf(t, sizeof t, "%d min %02d s", int(s) / 60, int(s) % 60);
+    else
+        std::snprintf(t, sizeof t, "%.0f s", s);
+    return t;
+}
+
+}  // namespace
+
+int runClassGrade(const ClassGradeArgs& args) {
+    if (args.jobs < 1 || args.jobs > 64) throw UsageError("--jobs: give 1 to 64");
+    Assignment a = loadAssignment(args.assignment);
+    std::string assignmentText;
+    readRegularFile(args.assignment, 1u << 20, assignmentText);
+    // A record is reused on a rerun only when graded by the same assignment text.
+    std::string fingerprint = std::to_string(std::hash<std::string>{}(assignmentText));
+    struct stat st;
+    if (::stat(args.submissions.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+        throw UsageError(
+            "grade: " + printableName(args.submissions) +
+            " is not a folder (give the folder holding one folder or .zip per student)");
+    std::vector<std::string> entries;
+    for (const auto& e : fs::directory_iterator(args.submissions)) {
+        std::string n = e.path().filename().string();
+        if (!isJunkEntry(n)) entries.push_back(e.path().string());
+    }
+    std::sort(entries.begin(), entries.end());
+    if (entries.empty())
+        throw UsageError("grade: " + printableName(args.submissions) + " holds no submission");
+    for (const char* sub : {"", "/students", "/feedback", "/work", "/logs"}) {
+        std::error_code ec;
+        fs::create_directories(args.out + sub, ec);
+        if (ec) throw UsageError("--out: cannot create " + printableName(args.out + sub));
+    }
+    std::set<std::string> taken;
+    std::vector<std::string> names, files;
+    for (const auto& e : entries) {
+        names.push_back(submissionName(e));
+        files.push_back(fileNameFor(names.back(), taken));
+    }
+    auto recordPath = [&](std::size_t k) { return args.out + "/students/" + files[k] + ".json"; };
+    std::vector<std::size_t> todo;
+    for (std::size_t k = 0; k < entries.size(); ++k)
+        if (finishedRecord(recordPath(k), fingerprint).is_null()) todo.push_back(k);
+    const std::size_t n = entries.size();
+    std::cout << "grade " << n << " submissions by " << printableName(args.assignment) << " ("
+              << a.name << ")";
+    if (todo.size() < n) std::cout << ": " << n - todo.size() << " already graded, resuming";
+    std::cout << "\n" << std::flush;
+
+    // Intake in the parent (no GL here): every pending submission's snapshot.
+    std::vector<StudentWork> subs(n);
+    for (std::size_t k : todo) {
+        subs[k] = intakeSubmission(entries[k], args.out + "/work/" + files[k]);
+        subs[k].name = names[k];
+        std::error_code ec;
+        fs::create_directories(args.out + "/work/" + files[k] + "/images", ec);
+    }
+    GradeSettings settings = args.settings;
+    settings.pictures = true;
+    std::map<std::string, std::string> imageDirs;
+    for (std::size_t k : todo) imageDirs[subs[k].name] = args.out + "/work/" + files[k] + "/images";
+    settings.imageDir = [imageDirs](const StudentWork& s) {
+        auto it = imageDirs.find(s.name);
+        return it == imageDirs.end() ? std::string() : it->second;
+    };
+
+    // Jobs: child processes, each grading every jobs-th pending student in one worker series.
+    int jobs =
+        int(std::min<std::size_t>(std::size_t(args.jobs), std::max<std::size_t>(todo.size(), 1)));
+    std::vector<pid_t> pids;
+    std::cout.flush();
+    std::cerr.flush();
+    for (int j = 0; j < jobs && !todo.empty(); ++j) {
+        pid_t pid = ::fork();
+        if (pid < 0) throw std::runtime_error("grade: cannot start a job process");
+        if (pid == 0) {
+            ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed grade leaves no job behind
+            std::string log = args.out + "/logs/job-" + std::to_string(j) + ".log";
+            int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+            if (fd >= 0) {
+                ::dup2(fd, 1);
+                ::dup2(fd, 2);
+                ::close(fd);
+            }
+            int code = 0;
+            try {
+                std::vector<StudentWork> share;
+                std::vector<std::size_t> index;
+                for (std::size_t i = std::size_t(j); i < todo.size(); i += std::size_t(jobs)) {
+                    share.push_back(subs[todo[i]]);
+                    index.push_back(todo[i]);
+                }
+                bool failed = gradeStudents(a, share, settings, [&](std::size_t i, const json& r) {
+                    json record = r;
+                    record["fingerprint"] = fingerprint;
+                    writeOrThrow(recordPath(index[i]),
+                                 record.dump(1, ' ', false, json::error_handler_t::replace) + "\n");
+                });
+                code = failed ? 3 : 0;
+            } catch (const std::exception& e) {
+                std::cerr << "shadowlab: grade job " << j << ": " << e.what() << "\n";
+                code = 3;
+            }
+            std::cout.flush();
+            std::cerr.flush();
+            ::_exit(code);
+        }
+        pids.push_back(pid);
+    }
+    // Progress: a line each time a student is done, with the time left at the pace so far.
+    auto start = std::chrono::steady_clock::now();
+    std::set<std::size_t> reported;
+    int exitCode = 0;
+    std::size_t running = pids.size();
+    auto poll = [&]() {
+        for (std::size_t k : todo) {
+            if (reported.count(k)) continue;
+            json r = finishedRecord(recordPath(k), fingerprint);
+            if (r.is_null()) continue;
+            reported.insert(k);
+            double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            double left = elapsed / double(reported.size()) * double(todo.size() - reported.size());
+            char line[512];
+            std::snprintf(line, sizeof line,
+                          "[student %zu of %zu] %-24s %7.2f / %.2f  %-8s time left about %s\n",
+                          n - todo.size() + reported.size(), n, printableName(names[k]).c_str(),
+                          r["score"].get<double>(), r["max_score"].get<double>(),
+                          r["status"].get<std::string>().c_str(),
+                          reported.size() == todo.size() ? "0 s" : duration(left).c_str());
+            std::cout << line << std::flush;
+        }
+    };
+    while (running > 0) {
+        int status = 0;
+        pid_t done = ::waitpid(-1, &status, WNOHANG);
+        if (done > 0 && std::find(pids.begin(), pids.end(), done) != pids.end()) {
+            --running;
+            if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) exitCode = 3;
+        } else if (done <= 0) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        }
+        poll();
+    }
+    poll();
+
+    // The class's outputs from every record (those of earlier runs too).
+    std::vector<json> records;
+    std::vector<std::string> pages;
+    for (std::size_t k = 0; k < n; ++k) {
+        json r = finishedRecord(recordPath(k), fingerprint);
+        if (r.is_null()) {
+            std::cerr << "shadowlab: " << printableName(names[k])
+                      << ": no record (its job failed; see " << args.out
+                      << "/logs/): rerun grade\n";
+            exitCode = 3;
+            continue;
+        }
+        records.push_back(r);
+        pages.push_back("feedback/" + files[k] + ".html");
+        writeOrThrow(args.out + "/" + pages.back(), studentPage(r));
+    }
+    writeOrThrow(args.out + "/grades.csv", gradesCsv(records));
+    writeOrThrow(args.out + "/class.html", classPage(a.name, records, pages));
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << "graded " << records.size() << " of " << n << " in " << duration(seconds) << ": "
+              << args.out << "/grades.csv, " << args.out << "/class.html, " << args.out
+              << "/feedback/, " << args.out << "/students/\n";
+    return exitCode;
+}
+
+}  // namespace sl

@@ -1,0 +1,28 @@
+// A class's submission as the course grades it: a folder or a .zip (unpacked safely,
+// course/archive.h), then issue 19's intake (grade/intake.h: wrapper folders descended, junk
+// left out, near misses named, a private snapshot of the regular files). A hand-in that replaces
+// no shipped file is not an error here: every due stage of it is MISSING with 0 points.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sl {
+
+struct StudentWork {
+    std::string name;                // the student: folder name or zip stem
+    std::string overlay;             // the private snapshot to grade ("" when refused)
+    std::vector<std::string> files;  // relative paths of the student's regular files in it
+    std::vector<std::string> notes;  // wrapper folders descended, near misses, links skipped, ...
+    std::string error;               // why the submission could not be read at all ("" = ok)
+    bool has(const std::string& rel) const;
+};
+
+// Reads the folder or .zip at `path` into a snapshot under `workDir` (created; emptied first).
+// A zip, or a folder whose only entry (below lone wrapper folders) is a zip, is unpacked first.
+StudentWork intakeSubmission(const std::string& path, const std::string& workDir);
+
+// The student's name for an entry of a class folder: its base name, without ".zip".
+std::string submissionName(const std::string& path);
+
+}  // namespace sl

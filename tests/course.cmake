@@ -1,0 +1,27 @@
+# The course cycle (issue 20, docs/assignment.md) through the real binary: assignment errors,
+# hostile zips, the release in both trees (no solution in it, starter fails, solution passes, the
+# window runs on it), a class graded and its pages loaded in headless Chromium, and Gradescope's
+# run_autograder in a simulated /autograder tree.
+set(SL_COURSE_DIR ${CMAKE_BINARY_DIR}/course-ci)
+set(SL_COURSE_PY ${CMAKE_CURRENT_SOURCE_DIR}/course)
+file(MAKE_DIRECTORY ${SL_COURSE_DIR})
+add_test(NAME course_assignment_errors
+         COMMAND python3 ${SL_COURSE_PY}/test_assignment_errors.py $<TARGET_FILE:shadowlab> ${SL_COURSE_DIR}/errors)
+add_test(NAME course_zip_safety
+         COMMAND python3 ${SL_COURSE_PY}/test_zip_safety.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/zips)
+foreach(tree core legacy)
+  add_test(NAME course_release_${tree}
+           COMMAND python3 ${SL_COURSE_PY}/test_release.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/release-${tree} ${tree})
+endforeach()
+find_program(SL_CHROMIUM chromium)
+if(SL_CHROMIUM)
+  add_test(NAME course_grade
+           COMMAND python3 ${SL_COURSE_PY}/test_grade.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/grade)
+  set_tests_properties(course_grade PROPERTIES LABELS course TIMEOUT 1200)
+else()
+  message(WARNING "chromium not found: course_grade (the feedback pages in a browser) is not run")
+endif()
+add_test(NAME course_autograder
+         COMMAND python3 ${SL_COURSE_PY}/test_autograder.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/autograder)
+set_tests_properties(course_assignment_errors course_zip_safety PROPERTIES LABELS course TIMEOUT 300)
+set_tests_properties(course_release_core course_release_legacy course_autograder PROPERTIES LABELS course TIMEOUT 1200)

@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""ctest course_autograder: `release --gradescope` writes autograder.zip with setup.sh and
+run_autograder at its root; run_autograder is run in a simulated /autograder tree (its root in
+AUTOGRADER_ROOT, the program built here in SHADOWLAB: setup.sh's build is the platform issue's
+to test on Ubuntu 22.04) for a nested zip, a missing stage, a broken shader and correct work;
+each results.json has Gradescope's documented fields (score, max_score, output, visibility,
+stdout_visibility, tests with name, score, max_score, status, visibility, output) and the points
+make_class.py derived from the assignment.  usage: test_autograder.py SHADOWLAB REPO WORKDIR"""
+import json, os, shutil, stat, subprocess, sys, zipfile
+
+exe, repo, work = sys.argv[1:4]
+exe = os.path.abspath(exe)
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+lab = os.path.join(repo, "assignments/lab4.json")
+subprocess.run([exe, "release", "--assignment", lab, "--out", work + "/release", "--gradescope"],
+               check=True, stdout=subprocess.DEVNULL)
+z = zipfile.ZipFile(work + "/release/autograder.zip")
+names = z.namelist()
+for required in ("setup.sh", "run_autograder", "assignment.json", "shadowlab/CMakeLists.txt",
+                 "shadowlab/scripts/deps.sh", "shadowlab/src/course/assignment.cpp"):
+    assert required in names, required
+for script in ("setup.sh", "run_autograder"):
+    mode = z.getinfo(script).external_attr >> 16
+    assert mode & stat.S_IXUSR, script + " is not executable"
+    assert z.read(script).startswith(b"#!/usr/bin/env bash"), script
+assert b"scripts/deps.sh" in z.read("setup.sh")
+expected = json.loads(subprocess.run(
+    [sys.executable, os.path.join(os.path.dirname(__file__), "make_class.py"), repo,
+     work + "/release/shaders", work + "/class"], check=True, capture_output=True, text=True).stdout)
+
+TOP = {"score": (int, float), "max_score": (int, float), "output": str, "visibility": str,
+       "stdout_visibility": str, "tests": list}
+TEST = {"name": str, "score": (int, float), "max_score": (int, float), "status": str,
+        "visibility": str, "output": str}
+VIS = {"visible", "hidden", "after_due_date", "after_published"}
+for student in ("alice", "bob", "carol", "dave"):  # correct, missing stages, broken, nested zip
+    root = work + "/ag-" + student
+    os.makedirs(root + "/source")
+    z.extractall(root + "/source")
+    os.chmod(root + "/source/run_autograder", 0o755)
+    entry = work + "/class/" + student + (".zip" if os.path.exists(work + "/class/" + student + ".zip") else "")
+    # Gradescope unpacks an uploaded zip's content into submission/; a zip inside stays a zip.
+    if entry.endswith(".zip"):
+        zipfile.ZipFile(entry).extractall(root + "/submission")
+    else:
+        shutil.copytree(entry, root + "/submission")
+    env = dict(os.environ, AUTOGRADER_ROOT=root, SHADOWLAB=exe)
+    r = subprocess.run([root + "/source/run_autograder"], env=env, capture_output=True, text=True,
+                       timeout=900, cwd=root)
+    assert r.returncode == 0, (student, r.returncode, r.stderr[-1000:])
+    res = json.load(open(root + "/results/results.json"))
+    for k, t in TOP.items():
+        assert isinstance(res[k], t), (student, k)
+    assert res["visibility"] in VIS and res["stdout_visibility"] in VIS
+    total = 0
+    for test in res["tests"]:
+        for k, t in TEST.items():
+            assert isinstance(test[k], t), (student, k, test)
+        assert test["status"] in ("passed", "failed") and test["visibility"] in VIS
+        assert 0 <= test["score"] <= test["max_score"] + 1e-9
+        total += test["score"]
+    assert abs(total - res["score"]) < 0.05, (student, total, res["score"])
+    want = sum(expected["points"][student].values())
+    assert abs(res["score"] - want) < 0.05, (student, res["score"], want)
+    assert abs(res["max_score"] - 100) < 0.01
+    assert any(t["visibility"] == "hidden" for t in res["tests"]), "the instructor's view is not hidden"
+    assert any(t["visibility"] == "after_due_date" for t in res["tests"])
+    print(student, res["score"], "of", res["max_score"], len(res["tests"]), "tests")
+# A grader that cannot run still leaves a results.json (0 points, says why).
+root = work + "/ag-broken"
+os.makedirs(root + "/source")
+z.extractall(root + "/source")
+os.makedirs(root + "/submission")
+env = dict(os.environ, AUTOGRADER_ROOT=root, SHADOWLAB="/nonexistent/shadowlab")
+r = subprocess.run(["bash", root + "/source/run_autograder"], env=env, capture_output=True, text=True)
+res = json.load(open(root + "/results/results.json"))
+assert res["score"] == 0 and "could not grade" in res["output"], res
+print("course_autograder: ok")

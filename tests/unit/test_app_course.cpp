@@ -1,0 +1,72 @@
+// The course code's plain functions: solution markers, JSON value lines, base64, CSV cells.
+#include <gtest/gtest.h>
+
+#include "course/assignment.h"
+#include "course/feedback_html.h"
+#include "course/json_lines.h"
+#include "course/release.h"
+
+namespace sl {
+namespace {
+
+TEST(SolutionMarkers, RegionReplacedByItsStub) {
+    std::vector<std::string> solution;
+    std::string out = stripSolutions(
+        "a\n  // BEGIN SOLUTION\n  secret();\n  // END SOLUTION\n  // STUB: stub();\nb\n", "f",
+        &solution);
+    EXPECT_EQ(out, "a\n  stub();\nb\n");
+    ASSERT_EQ(solution.size(), 1u);
+    EXPECT_EQ(solution[0], "  secret();");
+}
+
+TEST(SolutionMarkers, RegionWithoutStubGetsTodo) {
+    EXPECT_EQ(stripSolutions("x\n    // BEGIN SOLUTION\n    s;\n    // END SOLUTION\ny", "f"),
+              "x\n    // TODO: write this part\ny");
+}
+
+TEST(SolutionMarkers, MisplacedMarkersNameTheLine) {
+    try {
+        stripSolutions("a\n// BEGIN SOLUTION\nb\n", "f.frag");
+        FAIL();
+    } catch (const AssignmentError& e) {
+        EXPECT_STREQ(e.what(), "f.frag: line 2: BEGIN SOLUTION is never closed");
+    }
+    EXPECT_THROW(stripSolutions("// END SOLUTION\n", "f"), AssignmentError);
+    EXPECT_THROW(stripSolutions("// BEGIN SOLUTION\n// BEGIN SOLUTION\n", "f"), AssignmentError);
+    EXPECT_THROW(stripSolutions("a\n// STUB: b\n", "f"), AssignmentError);
+}
+
+TEST(SolutionMarkers, ShippedFilesWithoutMarkersUnchanged) {
+    std::string text = "void main()\n{\n    gl_FragColor = vec4(1.0);\n}\n";
+    EXPECT_EQ(stripSolutions(text, "f"), text);
+}
+
+TEST(JsonLines, PathsToLines) {
+    auto lines = jsonValueLines("{\n \"a\": [1,\n  {\"b/c\": 2}],\n \"d\": \"x\"\n}");
+    EXPECT_EQ(lines.at(""), 1);
+    EXPECT_EQ(lines.at("/a"), 2);
+    EXPECT_EQ(lines.at("/a/0"), 2);
+    EXPECT_EQ(lines.at("/a/1/b~1c"), 3);
+    EXPECT_EQ(lines.at("/d"), 4);
+}
+
+TEST(Base64, KnownValues) {
+    EXPECT_EQ(base64(""), "");
+    EXPECT_EQ(base64("f"), "Zg==");
+    EXPECT_EQ(base64("fo"), "Zm8=");
+    EXPECT_EQ(base64("foo"), "Zm9v");
+    EXPECT_EQ(base64("foobar"), "Zm9vYmFy");
+}
+
+TEST(GradesCsv, QuotesAndNoFormulas) {
+    nlohmann::json r = {{"student", "=cmd|x,y"},
+                        {"status", "graded"},
+                        {"score", 1.5},
+                        {"max_score", 2.0},
+                        {"stages", {{{"stage", "rgb"}, {"tree", "core"}, {"points", 1.5}}}}};
+    EXPECT_EQ(gradesCsv({r}),
+              "student,status,rgb/core,total,max\n\"'=cmd|x,y\",graded,1.500,1.500,2.000\n");
+}
+
+}  // namespace
+}  // namespace sl
