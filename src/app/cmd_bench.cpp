@@ -8,10 +8,10 @@
 #include <map>
 #include <sstream>
 
-#include "app/bench_equal.h"
-#include "app/bench_output.h"
-#include "app/bench_report.h"
 #include "app/commands.h"
+#include "bench/bench_equal.h"
+#include "bench/bench_output.h"
+#include "bench/bench_report.h"
 #include "metrics/callgrind.h"
 
 namespace sl {

@@ -17,14 +17,14 @@
 #include <memory>
 #include <set>
 
-#include "app/bench_output.h"
-#include "app/check_formats.h"
-#include "app/check_run.h"
 #include "app/commands.h"
-#include "app/worker.h"
-#include "grade/bounds.h"
-#include "grade/intake.h"
+#include "bench/bench_output.h"
 #include "course/assignment_check.h"
+#include "grade/bounds.h"
+#include "grade/check_formats.h"
+#include "grade/check_run.h"
+#include "grade/intake.h"
+#include "grade/worker.h"
 #include "io/files.h"
 #include "scene/scene_json.h"
 #include "stages/stage.h"

@@ -7,11 +7,11 @@
 #include <iostream>
 #include <sstream>
 
-#include "app/bench_output.h"
-#include "app/check_run.h"
 #include "app/commands.h"
 #include "app/mirror_figure.h"
-#include "app/worker.h"
+#include "bench/bench_output.h"
+#include "grade/check_run.h"
+#include "grade/worker.h"
 #include "metrics/mirror_figure.h"
 #include "scene/scene_json.h"
 

@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "app/check_run.h"
 #include "course/class_grade.h"
+#include "grade/check_run.h"
 
 namespace sl {
 

@@ -4,11 +4,11 @@
 #include <filesystem>
 #include <iostream>
 
-#include "app/bench_output.h"
-#include "app/bench_run.h"
 #include "app/commands.h"
 #include "app/mirror_figure.h"
-#include "app/worker.h"
+#include "bench/bench_output.h"
+#include "bench/bench_run.h"
+#include "grade/worker.h"
 #include "metrics/mirror_figure.h"
 #include "render/mirror_pass.h"
 #include "scene/scene_json.h"

@@ -7,9 +7,9 @@
 #include <glm/gtc/constants.hpp>
 #include <iostream>
 
-#include "app/bench_output.h"
-#include "app/bench_run.h"
 #include "app/commands.h"
+#include "bench/bench_output.h"
+#include "bench/bench_run.h"
 #include "metrics/image.h"
 #include "metrics/pareto.h"
 

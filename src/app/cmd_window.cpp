@@ -8,9 +8,9 @@
 #include <fstream>
 
 #include "app/commands.h"
-#include "app/worker.h"
 #include "gl/debug.h"
 #include "gl/gl.h"
+#include "grade/worker.h"
 #include "platform/glut_window.h"
 #include "platform/headless.h"
 #include "render/hud.h"

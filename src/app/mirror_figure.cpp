@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "app/bench_output.h"
+#include "bench/bench_output.h"
 #include "metrics/mirror_figure.h"
 
 namespace sl {

@@ -3,7 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/worker.h"
+#include "grade/worker.h"
 #include "platform/headless.h"
 #include "render/request.h"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/check_run.h"
+#include "grade/check_run.h"
 #include "render/request.h"
 
 namespace sl {

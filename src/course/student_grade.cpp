@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "app/check_formats.h"
+#include "grade/check_formats.h"
 
 namespace sl {
 

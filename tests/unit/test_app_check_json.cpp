@@ -2,8 +2,8 @@
 // formats name and describe it.
 #include <gtest/gtest.h>
 
-#include "app/check_formats.h"
-#include "app/check_run.h"
+#include "grade/check_formats.h"
+#include "grade/check_run.h"
 #include "stages/stage.h"
 
 namespace sl {

@@ -7,8 +7,8 @@
 #include <chrono>
 #include <vector>
 
-#include "app/worker.h"
 #include "gl/shader_library.h"
+#include "grade/worker.h"
 #include "render/request.h"
 #include "scene/scene_json.h"
 

@@ -10,8 +10,8 @@
 #include <optional>
 #include <string>
 
-#include "app/worker.h"
 #include "eval/evaluator.h"
+#include "grade/worker.h"
 #include "stages/expectations.h"
 
 namespace sl {

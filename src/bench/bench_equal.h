@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/bench_report.h"
+#include "bench/bench_report.h"
 #include "metrics/equal_accuracy.h"
 
 namespace sl {

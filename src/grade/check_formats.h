@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "app/check_run.h"
+#include "grade/check_run.h"
 
 namespace sl {
 

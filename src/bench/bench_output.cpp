@@ -1,4 +1,4 @@
-#include "app/bench_output.h"
+#include "bench/bench_output.h"
 
 #include <cmath>
 #include <cstdio>
@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "gl/gl.h"
-#include "io/box.h"
 #include "io/files.h"
 #include "metrics/image.h"
 #include "render/request.h"
@@ -62,16 +61,6 @@ std::string gnuplotBlocks(const std::vector<Series>& series) {
         }
     }
     return out.str();
-}
-
-std::string machineLine() {
-    auto text = [](GLenum name) {
-        const GLubyte* s = glGetString(name);
-        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
-    };
-    int cores = boxCores();  // the CPUs this process may use (affinity, cgroup quota)
-    return std::to_string(cores) + (cores == 1 ? " core, " : " cores, ") + text(GL_RENDERER) +
-           ", GL " + text(GL_VERSION);
 }
 
 std::string runGnuplot(const std::string& dir, const std::string& scriptPath,

@@ -1,4 +1,4 @@
-#include "app/check_formats.h"
+#include "grade/check_formats.h"
 
 #include <cmath>
 #include <cstdio>

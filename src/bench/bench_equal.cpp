@@ -1,4 +1,4 @@
-#include "app/bench_equal.h"
+#include "bench/bench_equal.h"
 
 #include <map>
 

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "gl/machine.h"  // machineLine(), beside every figure
+
 namespace sl {
 
 // A table with named columns; every cell is text (numbers formatted by `num`). Written as CSV.
@@ -31,10 +33,6 @@ struct Series {
 // lines (so `index i` picks one and `columnheader(1)` titles it). Empty series are skipped. With
 // error bars the lines have four columns: x y lo hi.
 std::string gnuplotBlocks(const std::vector<Series>& series);
-
-// "2 cores, llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa 22.3.6" from the current
-// GL context and the CPU count.
-std::string machineLine();
 
 // Runs gnuplot on `script` (written beside the charts as `scriptPath`) in `dir`. Returns "" or a
 // one-line reason (gnuplot missing or failing); charts are an extra, the tables stand alone.

@@ -1,4 +1,4 @@
-#include "app/worker.h"
+#include "grade/worker.h"
 
 #include <fcntl.h>
 #include <malloc.h>

@@ -1,11 +1,11 @@
-#include "app/bench_report.h"
+#include "bench/bench_report.h"
 
 #include <algorithm>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "app/bench_output.h"
+#include "bench/bench_output.h"
 #include "metrics/image.h"
 #include "metrics/pareto.h"
 

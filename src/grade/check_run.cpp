@@ -1,4 +1,4 @@
-#include "app/check_run.h"
+#include "grade/check_run.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,10 +8,9 @@
 #include <random>
 #include <sstream>
 
-#include "app/bench_output.h"
-#include "app/check_formats.h"
-#include "app/options.h"
+#include "gl/machine.h"
 #include "grade/bounds.h"
+#include "grade/check_formats.h"
 #include "io/files.h"
 #include "metrics/shadow_metrics.h"
 #include "stages/stage.h"
