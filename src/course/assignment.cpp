@@ -7,6 +7,7 @@
 
 #include "course/json_lines.h"
 #include "io/files.h"
+#include "io/json_fields.h"
 #include "scene/scene_json.h"
 #include "stages/expectations.h"
 #include "stages/stage.h"
@@ -48,12 +49,8 @@ class Reader {
 
     void allowKeys(const json& obj, const std::string& path, std::set<std::string> keys) const {
         if (!obj.is_object()) fail(path, "must be an object");
-        for (auto it = obj.begin(); it != obj.end(); ++it)
-            if (!keys.count(it.key())) {
-                std::string allowed;
-                for (const auto& k : keys) allowed += (allowed.empty() ? "" : ", ") + k;
-                fail(path + "/" + it.key(), "unknown field (allowed: " + allowed + ")");
-            }
+        std::string unknown = unknownKey(obj, keys);
+        if (!unknown.empty()) fail(path + "/" + unknown, unknownFieldMessage(keys));
     }
 
     std::string text(const json& v, const std::string& path) const {

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "io/files.h"
+#include "io/json_fields.h"
 
 namespace sl {
 
@@ -79,12 +80,8 @@ class Reader {
 
     void allowKeys(const json& obj, const std::string& path, std::set<std::string> keys) const {
         if (!obj.is_object()) fail(path, "must be an object");
-        for (auto it = obj.begin(); it != obj.end(); ++it)
-            if (!keys.count(it.key())) {
-                std::string allowed;
-                for (const auto& k : keys) allowed += (allowed.empty() ? "" : ", ") + k;
-                fail(path + "/" + it.key(), "unknown field (allowed: " + allowed + ")");
-            }
+        std::string unknown = unknownKey(obj, keys);
+        if (!unknown.empty()) fail(path + "/" + unknown, unknownFieldMessage(keys));
     }
 
     const json* field(const json& obj, const std::string& key) const {

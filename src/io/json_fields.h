@@ -1,0 +1,17 @@
+// Validating untrusted JSON objects (scene and assignment files): both name a field they do not
+// know, and what is allowed, the same way.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+namespace sl {
+
+// The first key of `obj` (an object) that is not in `allowed`, or "" when every key is known.
+std::string unknownKey(const nlohmann::json& obj, const std::set<std::string>& allowed);
+
+// "unknown field (allowed: a, b, c)": the message for such a key.
+std::string unknownFieldMessage(const std::set<std::string>& allowed);
+
+}  // namespace sl
