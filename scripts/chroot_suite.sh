@@ -23,7 +23,15 @@ if [ -z "${SHADOWLAB_CHROOT_NS:-}" ]; then
   SHADOWLAB_CHROOT_NS=1 exec unshare --mount --propagation private bash "$0" "$@"
 fi
 repo=$(cd "$(dirname "$0")/.." && pwd)
-mirror=${SHADOWLAB_DEBIAN_MIRROR:-http://deb.debian.org/debian}
+# The Debian archive this machine's apt already uses (its main archive, not -security): the
+# chroot reaches what the host reaches.
+host_mirror() {
+  cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list /etc/apt/sources.list.d/*.sources \
+    2>/dev/null | grep -v '^[[:space:]]*#' | grep -oE '(https?|file)://[^ ]*/debian/?( |$)' |
+    head -1 | tr -d ' '
+}
+mirror=${SHADOWLAB_DEBIAN_MIRROR:-$(host_mirror)}
+[ -n "$mirror" ] || { echo "chroot_suite: no Debian archive in /etc/apt/sources*; set SHADOWLAB_DEBIAN_MIRROR" >&2; exit 3; }
 cache=${SHADOWLAB_CHROOT_CACHE:-/var/cache/shadowlab-chroot}
 # The harness's compiler cache (not the README's steps): reruns build in a minute, not ten.
 # SHADOWLAB_CHROOT_CCACHE=0 builds as a fresh machine would.
