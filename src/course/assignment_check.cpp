@@ -16,9 +16,10 @@ int recordExitCode(const nlohmann::json& record) {
     if (record["status"] == "ERROR") return 2;
     for (const auto& st : record["stages"]) {
         std::string s = st["status"];
-        if (s != "graded" && s != "MISSING") return 2;
+        // A due stage MISSING is bad input, as in `check` (GUIDE section 3): exit 2.
+        if (s != "graded") return 2;
         for (const auto& row : st["rows"])
-            if (row["verdict"] == "FAIL" || row["verdict"] == "MISSING") code = 1;
+            if (row["verdict"] == "FAIL") code = 1;
     }
     return code;
 }
