@@ -29,11 +29,22 @@ std::string calledFromMain(const std::string& function, const std::string& call)
     return replaced(text, "fragColor = shade(", "fragColor = 1e-9 * " + call + " + shade(");
 }
 
+// Whether `text` holds one of the '|'-separated fragments of `alternatives`.
+bool saysOneOf(const std::string& text, const std::string& alternatives) {
+    std::size_t start = 0;
+    for (;;) {
+        std::size_t bar = alternatives.find('|', start);
+        if (text.find(alternatives.substr(start, bar - start)) != std::string::npos) return true;
+        if (bar == std::string::npos) return false;
+        start = bar + 1;
+    }
+}
+
 struct Breakage {
     const char* name;
     std::string frag;
-    const char* said;               // a fragment of the error the window must show
-    bool slow = false;              // the trial takes seconds: long enough to press a key meanwhile
+    const char* said;   // a fragment of the error the window must show ('|' between alternatives)
+    bool slow = false;  // the trial takes seconds: long enough to press a key meanwhile
     std::string file = "lit.frag";  // which of margin's files it replaces
 };
 
@@ -61,9 +72,10 @@ Breakage memory() {
             calledFromMain("float big(vec3 p) { float a[1000000]; for (int i = 0; i < 1000000; "
                            "i++) a[i] = p.x * float(i); return a[int(p.y)]; }",
                            "big(worldPosition)"),
-            // Killed by a signal or an allocation refused: the driver decides which; either way
-            // the panel names the limit.
-            "1536 MB (--memory-limit)", true};
+            // The driver decides how the blow-up ends: an allocation refused or a signal under
+            // the memory limit (Mesa 22), or a compile that runs past the time limit (Mesa 25,
+            // Debian 13). Either way the panel names the limit that ended it.
+            "1536 MB (--memory-limit)|60 s (--time-limit)", true};
 }
 Breakage uniformType() {
     return {"uniform type",
@@ -137,8 +149,7 @@ void breakWhileLive(const std::string& limits, const std::vector<Breakage>& brea
             [&](const auto& s) {
                 std::string e = s["error"];
                 return s["trying"] == false && s["errors"].template get<int>() > 0 &&
-                       e.find("mine/margin/" + b.file) != std::string::npos &&
-                       e.find(b.said) != std::string::npos;
+                       e.find("mine/margin/" + b.file) != std::string::npos && saysOneOf(e, b.said);
             },
             120))
             << b.name << " " << w.state().dump() << "\n"
