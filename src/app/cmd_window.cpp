@@ -4,8 +4,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <condition_variable>
+#include <exception>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <mutex>
+#include <thread>
 
 #include "app/commands.h"
 #include "gl/debug.h"
@@ -26,8 +31,8 @@ namespace {
 // for the next, as `check` does).
 // At the window's size: a loop's cost grows with the pixels, and a program that draws a small
 // picture in time may still take a minute to fill the window.
-nlohmann::json drawInWorker(Backend backend, GlslTree tree, const std::string& overlay,
-                            const TrialStage& s, int width, int height) {
+nlohmann::json drawOnThisThread(Backend backend, GlslTree tree, const std::string& overlay,
+                                const TrialStage& s, int width, int height) {
     static std::unique_ptr<HeadlessContext> context;  // in the worker only
     if (!context) {
         // Quiet: the window prints its own notes when it builds the programs it adopts, and the
@@ -56,6 +61,58 @@ nlohmann::json drawInWorker(Backend backend, GlslTree tree, const std::string& o
     hud.draw(renderer->shaders(), {HudBlock{{{s.stage, glm::vec4(1)}}}}, width, height, 1);
     glFinish();
     return {{"stage", s.stage}};
+}
+
+// The worker is forked from the window, whose thread has the window's GLX context current in
+// libglvnd's dispatch: on that thread EGL refuses to make its own context current
+// (EGL_BAD_ACCESS, seen where there is no OSMesa and EGL is the headless path). A thread of the
+// worker's own starts with no context current; every trial draw runs there, one after another.
+class WorkerGlThread {
+  public:
+    WorkerGlThread() : thread_([this] { loop(); }) { thread_.detach(); }
+    void run(const std::function<void()>& task) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        task_ = task;
+        done_ = false;
+        wake_.notify_all();
+        wake_.wait(lock, [&] { return done_; });
+    }
+
+  private:
+    void loop() {
+        for (;;) {
+            std::unique_lock<std::mutex> lock(mutex_);
+            wake_.wait(lock, [&] { return bool(task_); });
+            std::function<void()> task = std::move(task_);
+            task_ = nullptr;
+            lock.unlock();
+            task();
+            lock.lock();
+            done_ = true;
+            wake_.notify_all();
+        }
+    }
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    std::function<void()> task_;
+    bool done_ = false;
+    std::thread thread_;
+};
+
+nlohmann::json drawInWorker(Backend backend, GlslTree tree, const std::string& overlay,
+                            const TrialStage& s, int width, int height) {
+    static WorkerGlThread gl;  // made in the worker, on its first trial
+    nlohmann::json result;
+    std::exception_ptr failure;
+    gl.run([&] {
+        try {
+            result = drawOnThisThread(backend, tree, overlay, s, width, height);
+        } catch (...) {
+            failure = std::current_exception();
+        }
+    });
+    if (failure) std::rethrow_exception(failure);
+    return result;
 }
 
 // The stages one after the other in a series of bounded workers: one that fails (a shader error,
