@@ -26,9 +26,10 @@ repo=$(cd "$(dirname "$0")/.." && pwd)
 # The Debian archive this machine's apt already uses (its main archive, not -security): the
 # chroot reaches what the host reaches.
 host_mirror() {
-  cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list /etc/apt/sources.list.d/*.sources \
-    2>/dev/null | grep -v '^[[:space:]]*#' | grep -oE '(https?|file)://[^ ]*/debian/?( |$)' |
-    head -1 | tr -d ' '
+  local f
+  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list /etc/apt/sources.list.d/*.sources; do
+    [ -r "$f" ] && grep -v '^[[:space:]]*#' "$f"
+  done | grep -oE '(https?|file)://[^ ]*/debian/?( |$)' | head -1 | tr -d ' ' || true
 }
 mirror=${SHADOWLAB_DEBIAN_MIRROR:-$(host_mirror)}
 [ -n "$mirror" ] || { echo "chroot_suite: no Debian archive in /etc/apt/sources*; set SHADOWLAB_DEBIAN_MIRROR" >&2; exit 3; }
