@@ -158,12 +158,9 @@ AssignmentStage readStage(const Reader& in, const json& j, const std::string& pa
         if (!j["lessons"].is_object()) in.fail(path + "/lessons", "must be an object");
         for (auto it = j["lessons"].begin(); it != j["lessons"].end(); ++it) {
             std::string p = path + "/lessons/" + it.key();
-            if (!labels.count(it.key())) {
-                std::string known;
-                for (const auto& l : labels) known += (known.empty() ? "" : ", ") + l;
+            if (!labels.count(it.key()))
                 in.fail(p, "no lesson '" + it.key() + "' for " + s.stage + "/" + s.tree +
-                               " (lessons: " + known + ")");
-            }
+                               " (lessons: " + commaList(labels) + ")");
             s.lessons[it.key()] = in.number(*it, p, 0, 1e6);
         }
     }
@@ -173,12 +170,9 @@ AssignmentStage readStage(const Reader& in, const json& j, const std::string& pa
         if (!j["views"].is_object()) in.fail(path + "/views", "must be an object");
         for (auto it = j["views"].begin(); it != j["views"].end(); ++it) {
             std::string p = path + "/views/" + it.key();
-            if (!viewNames.count(it.key())) {
-                std::string known;
-                for (const auto& v : viewNames) known += (known.empty() ? "" : ", ") + v;
+            if (!viewNames.count(it.key()))
                 in.fail(p, "no view '" + it.key() + "' in " + s.stage +
-                               "'s scenes (views: " + known + ")");
-            }
+                               "'s scenes (views: " + commaList(viewNames) + ")");
             WeightedView w;
             if (it->is_object()) {
                 in.allowKeys(*it, p, {"weight", "visibility"});

@@ -11,6 +11,9 @@ namespace sl {
 // The first key of `obj` (an object) that is not in `allowed`, or "" when every key is known.
 std::string unknownKey(const nlohmann::json& obj, const std::set<std::string>& allowed);
 
+// "a, b, c": the names a validator allows, for its messages.
+std::string commaList(const std::set<std::string>& names);
+
 // "unknown field (allowed: a, b, c)": the message for such a key.
 std::string unknownFieldMessage(const std::set<std::string>& allowed);
 
