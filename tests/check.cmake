@@ -140,3 +140,10 @@ set_tests_properties(check_peers PROPERTIES LABELS check TIMEOUT 300)
 add_test(NAME check_no_shader_cache
          COMMAND sh -c "H=$(mktemp -d) && env -u MESA_SHADER_CACHE_DISABLE XDG_CACHE_HOME=$H/on $<TARGET_FILE:test_phong> --gtest_filter='Phong.*' >/dev/null && test -n \"$(find $H/on -type f)\" && env -u MESA_SHADER_CACHE_DISABLE XDG_CACHE_HOME=$H/off ${SL_EXE} check --stage margin --size 160x120 --shaders ${CMAKE_CURRENT_SOURCE_DIR}/students/layout_zip_wrapper/submission >/dev/null 2>&1 && env -u MESA_SHADER_CACHE_DISABLE XDG_CACHE_HOME=$H/off ${SL_EXE} render --stage margin --size 160x120 --out $H/x.png >/dev/null && test -z \"$(find $H/off -type f 2>/dev/null)\"; r=$?; rm -rf $H; exit $r")
 set_tests_properties(check_no_shader_cache PROPERTIES LABELS check TIMEOUT 300)
+
+# The lit strip along the floor's left edge (issue 22): a map-row shadow edge slipping within its
+# texel at a grazing receiver, forgiven by the one-texel band. Asserted as such: it is there at 512,
+# shrinks at 2048, changes sides with the light's height, and the hardware stage's filter removes it.
+add_test(NAME check_floor_edge_strip
+         COMMAND python3 ${SL_CHECK_PY}/floor_edge_strip.py ${SL_EXE} ${SL_CHECK_DIR}/floor-strip)
+set_tests_properties(check_floor_edge_strip PROPERTIES LABELS check TIMEOUT 300)
