@@ -22,6 +22,8 @@ namespace {
 
 constexpr float kLightRadiansPerSecond = 0.6f;
 constexpr auto kFlashTime = std::chrono::seconds(4);
+constexpr const char* kTryingLine =
+    "trying your shaders in a bounded worker first: a loop or a crash cannot freeze this window";
 
 // One complete line per event on the terminal, there at once (stdout is a pipe in tests).
 void say(std::ostream& out, const std::string& line) {
@@ -49,11 +51,13 @@ WindowSession::WindowSession(const WindowArgs& args)
     request_.tree = tree_;
     startScene_ = effectiveScene(request_);
     trial_ = args.trial;
-    // A student's folder is tried before anything of it is compiled here (the window is not
-    // drawing yet, so waiting for the verdict costs nothing but time).
+    // A student's folder is tried before anything of it is compiled here. Live, the window
+    // answers keys meanwhile and shows that it is trying (a looping stage takes the whole time
+    // limit, and every stage may loop); a scripted run (--frames) waits for the verdict first.
     if (trial_ && !request_.overlay.empty()) {
         startTrial(false);
-        while (trial_->running()) {
+        firstTrial_ = true;
+        while (args_.frames > 0 && trial_->running()) {
             finishTrial();
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
         }
@@ -411,6 +415,8 @@ bool WindowSession::finishTrial() {
 }
 
 void WindowSession::adopt(const std::vector<TrialVerdict>& verdicts) {
+    const bool first = firstTrial_;
+    firstTrial_ = false;
     const bool hadErrors = !shownErrors().empty() || !renderError_.empty();
     const std::string tree = treeName(tree_);
     std::set<std::string> passed, said;
@@ -446,7 +452,7 @@ void WindowSession::adopt(const std::vector<TrialVerdict>& verdicts) {
     printedRenderError_.clear();
     for (const auto& e : errors)
         say(std::cerr, "shadowlab: shader error (keeping the last good program): " + oneLine(e));
-    if (shownErrors().empty() && slot_) {  // (at the start, before any frame: nothing to say)
+    if (shownErrors().empty() && slot_ && !first) {  // (at the start: nothing to say)
         say(std::cout, hadErrors ? "shadowlab: shaders reloaded; every program builds again"
                                  : "shadowlab: shaders reloaded");
         flash("shaders reloaded: every stage drew in the trial worker", false);
@@ -589,6 +595,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
             line += " | " + name + " = " + r.params().text(name) + ignoredMark(name);
         }
         top.lines.push_back({line, yellow});
+        if (waitingForFirstTrial()) top.lines.push_back({kTryingLine, green});
         const std::string lesson = lessonLine();
         if (!lesson.empty()) top.lines.push_back({lesson, white});
         if (!errors.empty())
@@ -615,6 +622,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
     else
         status << static_cast<int>(drawMs_ * 10) / 10.0 << " ms to draw";
     top.lines.push_back({status.str(), white});
+    if (waitingForFirstTrial()) top.lines.push_back({kTryingLine, green});
     if (scene_ != startScene_)
         top.lines.push_back({"scene " + scene_ + ": the " + s.id +
                                  " stage brings its own (back to " + startScene_ +
@@ -682,6 +690,13 @@ void WindowSession::drawStage(GLuint target, int width, int height) {
     Renderer& r = *slot_->renderer;
     const std::string key = refusedKey(r.stage().id);
     auto refused = refused_.find(key);
+    if (waitingForFirstTrial()) {  // nothing of the student's folder built here yet
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+        glViewport(0, 0, width, height);
+        glClearColor(0.1f, 0.1f, 0.12f, 1);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        return;
+    }
     try {
         // Refused by the trial and never drawn here: building it from disk could hang or crash.
         if (refused != refused_.end() && !drewOnce_.count(key)) throw ShaderError(refused->second);
@@ -803,7 +818,8 @@ std::string WindowSession::stateJson() const {
                  : errors.empty()      ? ""
                                        : oneLine(errors[0]);
     j["trying"] = trial_ && trial_->running();
-    j["picture"] = renderError_.empty() ? "stage" : "none";  // "none": no good program drew it
+    // "none": no good program drew it; "trying": the student's folder is still in the worker
+    j["picture"] = waitingForFirstTrial() ? "trying" : renderError_.empty() ? "stage" : "none";
     j["drawn"] = drawnFrames_;
     j["message"] = flash_;
     j["animating"] = animateLight_;

@@ -55,6 +55,10 @@ class WindowSession {
     std::vector<TrialStage> trialStages();
     std::string refusedKey(const std::string& stage) const;
     std::vector<std::string> shownErrors() const;
+    // The picture is the student's folder's, still in its first trial: a placeholder is drawn.
+    bool waitingForFirstTrial() const {
+        return firstTrial_ && slot_ && !slot_->renderer->shaders().overlay().empty();
+    }
     void saveShot();
     void flash(const std::string& text, bool error);
     std::vector<HudBlock> hudBlocks() const;
@@ -115,7 +119,8 @@ class WindowSession {
     std::shared_ptr<ProgramTrial> trial_;
     bool trialForce_ = false;
     std::uint64_t trialFingerprint_ = 0;
-    std::string trialFile_;                       // the file changed last when the trial began
+    std::string trialFile_;    // the file changed last when the trial began
+    bool firstTrial_ = false;  // the student's folder is in its first trial: none of it drawn yet
     std::map<std::string, std::string> refused_;  // "tree/stage": why its new programs were refused
     std::set<std::string> drewOnce_;              // "tree/stage" drawn by a good program here
     std::string renderError_, printedRenderError_;

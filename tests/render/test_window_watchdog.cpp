@@ -183,3 +183,37 @@ TEST(LiveWindowWatchdog, LoopUniformTypeLinkAndVertexInputKeepTheLastGoodProgram
 TEST(LiveWindowWatchdog, CrashAndMemoryBlowUpKeepTheLastGoodProgram) {
     breakWhileLive("--time-limit 60 --memory-limit 1536", {crash(), memory()});
 }
+
+// A folder that already loops when the window starts: the window shows itself at once, says it
+// is trying the folder, answers keys meanwhile (every stage of a looping shared file could take
+// the whole limit in turn), then names the file; Esc closes it.
+TEST(LiveWindowWatchdog, LoopingFolderAtStartLeavesTheWindowAnswering) {
+    std::string dir = tempDir("live-watchdog-start");
+    fs::create_directories(dir + "/mine/margin");
+    std::ofstream(dir + "/mine/margin/lit.frag") << loop().frag;
+    auto started = Clock::now();
+    LiveWindow w("--shaders mine --stage margin --state state.json --size 640x480", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["picture"] == "trying"; }, 30))
+        << w.state().dump() << w.err();
+    std::cout << "window up and trying after "
+              << std::chrono::duration<double>(Clock::now() - started).count() << " s\n";
+    EXPECT_EQ(w.state()["trying"], true);
+    const std::string param = w.state()["param"];
+    ASSERT_TRUE(w.keys("Tab"));
+    EXPECT_TRUE(w.waitState([&](const auto& s) { return s["param"] != param; }, 1.0))
+        << "no answer to Tab within a second while the folder was tried";
+    EXPECT_EQ(w.state()["trying"], true) << "the trial ended before the key";
+    ASSERT_TRUE(w.waitState(
+        [](const auto& s) {
+            std::string e = s["error"];
+            return s["trying"] == false && e.find("mine/margin/lit.frag") != std::string::npos &&
+                   e.find("time limit") != std::string::npos;
+        },
+        60))
+        << w.state().dump() << w.err();
+    EXPECT_EQ(w.state()["picture"], "none");  // never drawn here: no good program of the folder
+    auto escape = Clock::now();
+    EXPECT_EQ(w.quit(), 0) << w.err();
+    EXPECT_LT(std::chrono::duration<double>(Clock::now() - escape).count(), 2.0);
+}
