@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "io/box.h"
+#include "reference/object_bvh.h"
 
 namespace sl {
 
@@ -117,22 +118,38 @@ bool intersectObject(const Object& object, const Ray& ray, float tMin, float tMa
     return false;
 }
 
-ReferencePixel tracePixel(const Scene& scene, const Ray& ray, const glm::vec3& light) {
+// The scene with its two hierarchies: every object (what a ray sees) and the shadow casters
+// (what blocks the light). Built once per reference image.
+struct SceneIndex {
+    explicit SceneIndex(const Scene& s)
+        : scene(s),
+          all(s.objects, [](const Object&) { return true; }),
+          casters(s.objects, [](const Object& o) { return o.castsShadow; }) {}
+    const Scene& scene;
+    ObjectBvh all, casters;
+};
+
+bool nearestHit(const SceneIndex& index, const Ray& ray, float tMax, bool includeMirror,
+                RayHit& hit);
+bool blockedOnTheWay(const SceneIndex& index, const glm::vec3& position, const glm::vec3& normal,
+                     const glm::vec3& lightPosition);
+
+ReferencePixel tracePixel(const SceneIndex& index, const Ray& ray, const glm::vec3& light) {
     ReferencePixel pixel;
     RayHit hit;
-    if (!intersectScene(scene, ray, kInfinity, true, hit)) return pixel;
+    if (!nearestHit(index, ray, kInfinity, true, hit)) return pixel;
 
     pixel.position = ray.origin + hit.t * ray.direction;
     pixel.normal = hit.normal;
-    pixel.objectId = hit.mirror ? mirrorId(scene) : objectId(std::size_t(hit.objectIndex));
+    pixel.objectId = hit.mirror ? mirrorId(index.scene) : objectId(std::size_t(hit.objectIndex));
     pixel.facesLight = glm::dot(pixel.normal, light - pixel.position) > 0.0f;
-    pixel.blocked = shadowRayBlocked(scene, pixel.position, pixel.normal, light);
+    pixel.blocked = blockedOnTheWay(index, pixel.position, pixel.normal, light);
     if (!hit.mirror || !hit.mirrorFront) return pixel;
 
     // One bounce off the mirror. The mirror is left out: a plane cannot see itself.
     Ray bounce{pixel.position, glm::reflect(ray.direction, pixel.normal)};
     RayHit seen;
-    if (!intersectScene(scene, bounce, kInfinity, false, seen)) {
+    if (!nearestHit(index, bounce, kInfinity, false, seen)) {
         pixel.bounceObjectId = 0;
         return pixel;
     }
@@ -140,7 +157,7 @@ ReferencePixel tracePixel(const Scene& scene, const Ray& ray, const glm::vec3& l
     pixel.bouncePosition = bounce.origin + seen.t * bounce.direction;
     pixel.bounceNormal = seen.normal;
     pixel.bounceFacesLight = glm::dot(seen.normal, light - pixel.bouncePosition) > 0.0f;
-    pixel.bounceBlocked = shadowRayBlocked(scene, pixel.bouncePosition, seen.normal, light);
+    pixel.bounceBlocked = blockedOnTheWay(index, pixel.bouncePosition, seen.normal, light);
     return pixel;
 }
 
@@ -175,19 +192,27 @@ const glm::vec3 kMirrorBackColor(0.3f);
 
 }  // namespace
 
-bool intersectScene(const Scene& scene, const Ray& ray, float tMax, bool includeMirror,
-                    RayHit& hit) {
+namespace {
+
+bool nearestHit(const SceneIndex& index, const Ray& ray, float tMax, bool includeMirror,
+                RayHit& hit) {
     bool found = false;
     float nearest = tMax;
-    for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+    // The nearest hit; at an equal distance the object listed first, as a plain loop would pick.
+    index.all.forEachCandidate(ray, kRayEpsilon, tMax, [&](int k, float& bound) {
         float t;
         glm::vec3 n;
-        if (intersectObject(scene.objects[k], ray, kRayEpsilon, nearest, t, n)) {
+        const float upTo = found ? std::nextafter(nearest, kInfinity) : nearest;
+        if (intersectObject(index.scene.objects[std::size_t(k)], ray, kRayEpsilon, upTo, t, n) &&
+            (t < nearest || k < hit.objectIndex)) {
             found = true;
             nearest = t;
-            hit = RayHit{t, int(k), false, false, n};
+            bound = t;
+            hit = RayHit{t, k, false, false, n};
         }
-    }
+        return false;
+    });
+    const Scene& scene = index.scene;
     if (includeMirror && scene.mirror) {
         const Mirror& m = *scene.mirror;
         glm::vec3 n = glm::normalize(m.normal);
@@ -203,20 +228,34 @@ bool intersectScene(const Scene& scene, const Ray& ray, float tMax, bool include
     return found;
 }
 
-bool shadowRayBlocked(const Scene& scene, const glm::vec3& position, const glm::vec3& normal,
-                      const glm::vec3& lightPosition) {
+bool blockedOnTheWay(const SceneIndex& index, const glm::vec3& position, const glm::vec3& normal,
+                     const glm::vec3& lightPosition) {
     glm::vec3 origin = position + normal * kShadowOffset;
     glm::vec3 toLight = lightPosition - origin;
     float distance = glm::length(toLight);
     if (distance <= kRayEpsilon) return false;
     Ray ray{origin, toLight / distance};
-    for (const Object& object : scene.objects) {
-        if (!object.castsShadow) continue;
+    bool blocked = false;
+    index.casters.forEachCandidate(ray, kRayEpsilon, distance, [&](int k, float&) {
         float t;
         glm::vec3 n;
-        if (intersectObject(object, ray, kRayEpsilon, distance, t, n)) return true;
-    }
-    return false;
+        blocked =
+            intersectObject(index.scene.objects[std::size_t(k)], ray, kRayEpsilon, distance, t, n);
+        return blocked;  // any caster will do: stop at the first
+    });
+    return blocked;
+}
+
+}  // namespace
+
+bool intersectScene(const Scene& scene, const Ray& ray, float tMax, bool includeMirror,
+                    RayHit& hit) {
+    return nearestHit(SceneIndex(scene), ray, tMax, includeMirror, hit);
+}
+
+bool shadowRayBlocked(const Scene& scene, const glm::vec3& position, const glm::vec3& normal,
+                      const glm::vec3& lightPosition) {
+    return blockedOnTheWay(SceneIndex(scene), position, normal, lightPosition);
 }
 
 namespace {
@@ -226,7 +265,7 @@ namespace {
 // hit point, in the direction of that ray's hit: at a sphere's limb, or a floor seen near
 // grazing, the tangent plane runs off almost parallel to the ray and the full continuation
 // would land far beyond the edge, in some other shadow.
-bool shadowChangesBeyond(const Scene& scene, const Camera& camera, const glm::vec3& light,
+bool shadowChangesBeyond(const SceneIndex& index, const Camera& camera, const glm::vec3& light,
                          const ReferencePixel& p, int i, int j, int width, int height) {
     Ray ray = pixelRay(camera, i, j, width, height);
     float facing = glm::dot(ray.direction, p.normal);
@@ -239,13 +278,11 @@ bool shadowChangesBeyond(const Scene& scene, const Camera& camera, const glm::ve
     const float reach = glm::length(beyond - p.position), most = 4.0f * pixelWidth;
     if (reach > most) beyond = p.position + (beyond - p.position) * (most / reach);
     if (glm::dot(p.normal, light - beyond) <= 0.0f) return false;  // continued past the terminator
-    return shadowRayBlocked(scene, beyond, p.normal, light) != p.blocked;
+    return blockedOnTheWay(index, beyond, p.normal, light) != p.blocked;
 }
 
-}  // namespace
-
-void markSilhouetteShadowEdges(const Scene& scene, const Camera& camera,
-                               const glm::vec3& lightPosition, ReferenceImage& image) {
+void markSilhouettes(const SceneIndex& index, const Camera& camera, const glm::vec3& lightPosition,
+                     ReferenceImage& image) {
     const int w = image.width, h = image.height;
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
@@ -257,12 +294,19 @@ void markSilhouetteShadowEdges(const Scene& scene, const Camera& camera,
                 if (ni < 0 || nj < 0 || ni >= w || nj >= h) continue;
                 const ReferencePixel& n = image.pixels[std::size_t(nj) * w + ni];
                 if (n.objectId == p.objectId && n.facesLight) continue;  // not a silhouette
-                if (shadowChangesBeyond(scene, camera, lightPosition, p, ni, nj, w, h)) {
+                if (shadowChangesBeyond(index, camera, lightPosition, p, ni, nj, w, h)) {
                     p.shadowEdgeAtSilhouette = true;
                     break;
                 }
             }
         }
+}
+
+}  // namespace
+
+void markSilhouetteShadowEdges(const Scene& scene, const Camera& camera,
+                               const glm::vec3& lightPosition, ReferenceImage& image) {
+    markSilhouettes(SceneIndex(scene), camera, lightPosition, image);
 }
 
 ReferenceImage traceReference(const Scene& scene, const Camera& camera,
@@ -277,19 +321,20 @@ ReferenceImage traceReference(const Scene& scene, const Camera& camera,
     if (threads <= 0) threads = boxCores();  // the CPUs this process may use
     threads = std::min(threads, height);
 
+    const SceneIndex index(scene);
     // Every pixel is computed on its own, so which thread does a row cannot change the result.
     // Rows are dealt out round-robin so each thread gets a share of the busy and the empty rows.
     auto traceRows = [&](int first) {
         for (int j = first; j < height; j += threads)
             for (int i = 0; i < width; ++i)
                 image.pixels[std::size_t(j) * width + i] =
-                    tracePixel(scene, pixelRay(camera, i, j, width, height), lightPosition);
+                    tracePixel(index, pixelRay(camera, i, j, width, height), lightPosition);
     };
     std::vector<std::thread> workers;
     for (int k = 1; k < threads; ++k) workers.emplace_back(traceRows, k);
     traceRows(0);
     for (std::thread& w : workers) w.join();
-    markSilhouetteShadowEdges(scene, camera, lightPosition, image);
+    markSilhouettes(index, camera, lightPosition, image);
     return image;
 }
 

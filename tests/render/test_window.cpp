@@ -263,8 +263,8 @@ TEST(LiveWindow, ShaderSavedEveryWayComesAndGoes) {
     std::ofstream(file) << good;
     LiveWindow w("--shaders mine --stage margin --state state.json --size 320x240", dir);
     ASSERT_TRUE(w.ready()) << w.err();
-    ASSERT_TRUE(
-        w.waitState([](const auto& s) { return s["stage"] == "margin" && s["errors"] == 0; }, 30));
+    ASSERT_TRUE(w.waitState(
+        [](const auto& s) { return s["stage"] == "margin" && s["picture"] == "stage"; }, 30));
     auto atomicSave = [&](const std::string& text) {
         std::string tmp = dir + "/mine/margin/.lit.frag.swp";
         std::ofstream(tmp) << text;
@@ -367,8 +367,8 @@ TEST(LiveWindow, RepairedShaderClearsTheError) {
     std::ofstream(file) << good;
     LiveWindow w("--shaders mine --state state.json --size 320x240", dir);
     ASSERT_TRUE(w.ready()) << w.err();
-    ASSERT_TRUE(
-        w.waitState([](const auto& s) { return s["stage"] == "phong" && s["errors"] == 0; }, 30));
+    ASSERT_TRUE(w.waitState(
+        [](const auto& s) { return s["stage"] == "phong" && s["picture"] == "stage"; }, 30));
     std::ofstream(file) << "#version 330 core\nvoid main() { this is not GLSL }\n";
     ASSERT_TRUE(w.waitState([](const auto& s) { return s["errors"].template get<int>() > 0; }, 15))
         << w.err();

@@ -279,7 +279,7 @@ TEST(LiveWindowProjector, ParameterTheShaderDoesNotReadIsMarked) {
     std::ofstream(dir + "/mine/margin/lit.frag") << text;
     LiveWindow w("--shaders mine --stage margin --state state.json --size 640x480", dir);
     ASSERT_TRUE(w.ready()) << w.err();
-    ASSERT_TRUE(w.waitState([](const auto& s) { return s["drawn"] > 0; }, 30));
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["picture"] == "stage"; }, 30));
     ASSERT_TRUE(w.keys("Tab"));  // a redraw after the first frame's notes
     EXPECT_TRUE(w.waitState(
         [](const auto& s) {

@@ -111,7 +111,9 @@ void breakWhileLive(const std::string& limits, const std::vector<Breakage>& brea
     save(good);
     LiveWindow w("--shaders mine --stage margin --state state.json --size 640x480 " + limits, dir);
     ASSERT_TRUE(w.ready()) << w.err();
-    ASSERT_TRUE(w.waitState([](const auto& s) { return s["errors"] == 0 && s["drawn"] > 0; }, 60))
+    // (the folder is tried first: "trying" until then, with a placeholder for the picture)
+    ASSERT_TRUE(
+        w.waitState([](const auto& s) { return s["errors"] == 0 && s["picture"] == "stage"; }, 60))
         << w.state().dump() << w.err();
     auto shot = [&](int n) {  // `p`: the frame without the HUD, as the window draws it
         EXPECT_TRUE(w.keys("p"));
