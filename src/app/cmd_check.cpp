@@ -26,6 +26,7 @@
 #include "grade/intake.h"
 #include "grade/worker.h"
 #include "io/files.h"
+#include "io/json_fields.h"
 #include "scene/scene_json.h"
 #include "stages/stage.h"
 
@@ -221,12 +222,6 @@ CheckResult unrenderedResult(const RenderRequest& r) {
     return out;
 }
 
-std::string joined(const std::vector<std::string>& items) {
-    std::string out;
-    for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
-    return out;
-}
-
 // The row of a stage none of whose own files came from the submission: MISSING, with the files
 // it expected. `expected` empty: a stage with no shaders (fixed function), not to be handed in.
 CheckResult missingResult(const RenderRequest& r, const std::vector<std::string>& expected,
@@ -241,7 +236,7 @@ CheckResult missingResult(const RenderRequest& r, const std::vector<std::string>
     out.missing = true;
     out.judgement = {Verdict::Fail,
                      capped("no file of stage " + r.stage + " came from " + printableName(folder) +
-                                ": expected one or more of " + joined(expected),
+                                ": expected one or more of " + commaList(expected),
                             kMaxRowMessage)};
     return out;
 }
@@ -408,22 +403,17 @@ int runCheckCommand(const CheckArgs& a) {
     // copy (src/grade/intake.h); a stage none of whose own files came from it is MISSING.
     std::unique_ptr<PrivateDir> snapshot;
     Submission submission;
-    std::map<GlslTree, std::set<std::string>> shippedByTree;
+    const ShippedTrees& shipped = shippedTrees();
     std::vector<RenderRequest> missingRequests;
     if (!base.overlay.empty()) {
-        std::set<std::string> shipped;
-        for (GlslTree t : {GlslTree::Core, GlslTree::Legacy}) {
-            shippedByTree[t] = shippedFiles(shaderTreeRoot(t));
-            shipped.insert(shippedByTree[t].begin(), shippedByTree[t].end());
-        }
-        if (!a.all && expectedFiles(base.stage, shippedByTree[base.tree]).empty())
+        if (!a.all && expectedFiles(base.stage, shipped.of(base.tree)).empty())
             throw UsageError("--stage " + base.stage +
                              ": this stage has no shaders for --shaders to replace");
         std::vector<std::string> stages;
         for (const auto& r : requests) stages.push_back(r.stage);
         snapshot = std::make_unique<PrivateDir>("shadowlab-submission");
         try {
-            submission = takeSubmission(base.overlay, snapshot->path(), shipped, stages);
+            submission = takeSubmission(base.overlay, snapshot->path(), shipped.both, stages);
         } catch (const IntakeError& e) {
             throw UsageError(e.what());
         }
@@ -432,7 +422,7 @@ int runCheckCommand(const CheckArgs& a) {
         std::vector<RenderRequest> graded;
         for (RenderRequest r : requests) {
             r.overlay = snapshot->path();
-            if (stageFiles(submission, r.stage, shippedByTree[r.tree]).empty())
+            if (stageFiles(submission, r.stage, shipped.of(r.tree)).empty())
                 missingRequests.push_back(r);
             else
                 graded.push_back(r);
@@ -496,7 +486,7 @@ int runCheckCommand(const CheckArgs& a) {
     };
     for (const RenderRequest& r : missingRequests) {
         results.push_back(
-            missingResult(r, expectedFiles(r.stage, shippedByTree[r.tree]), submission.folder));
+            missingResult(r, expectedFiles(r.stage, shipped.of(r.tree)), submission.folder));
         results.back().overlay = base.overlay;
         printRow(results.back());
     }
@@ -520,8 +510,8 @@ int runCheckCommand(const CheckArgs& a) {
                                if (result.studentFiles.empty())
                                    result.studentFiles = stageFiles(
                                        submission, result.stage,
-                                       shippedByTree[result.tree == "legacy" ? GlslTree::Legacy
-                                                                             : GlslTree::Core]);
+                                       shipped.of(result.tree == "legacy" ? GlslTree::Legacy
+                                                                          : GlslTree::Core));
                            }
                            printRow(result);
                            // A note (an unset uniform) holds for every row of the stage:

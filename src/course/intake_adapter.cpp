@@ -104,17 +104,12 @@ StudentWork intakeSubmission(const std::string& path, const std::string& workDir
         s.notes.push_back("unpacked '" + printableName(fs::path(zip).filename().string()) + "'");
         root = workDir + "/unpacked-inner";
     }
-    std::set<std::string> shipped;
-    for (GlslTree t : {GlslTree::Core, GlslTree::Legacy}) {
-        std::set<std::string> tree = shippedFiles(shaderTreeRoot(t));
-        shipped.insert(tree.begin(), tree.end());
-    }
     std::string snapshot = workDir + "/snapshot";
     fs::create_directories(snapshot, ec);
     fs::permissions(snapshot, fs::perms::owner_all, ec);
     s.overlay = snapshot;
     try {
-        Submission sub = takeSubmission(root, snapshot, shipped);
+        Submission sub = takeSubmission(root, snapshot, shippedTrees().both);
         s.files = sub.files;
         s.notes.insert(s.notes.end(), sub.notes.begin(), sub.notes.end());
     } catch (const NothingHandedIn& e) {

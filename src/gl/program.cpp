@@ -11,6 +11,22 @@ namespace sl {
 
 namespace {
 
+// Calls f(name, type) for every active uniform of `program` (an array by its "name[0]").
+template <class F>
+void forEachActiveUniform(GLuint program, F f) {
+    GLint count = 0, longest = 0;
+    glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
+    glGetProgramiv(program, GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
+    std::vector<char> buffer(std::size_t(std::max(longest, 1)) + 1, '\0');
+    for (GLint i = 0; i < count; ++i) {
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveUniform(program, GLuint(i), GLsizei(buffer.size()), nullptr, &size, &type,
+                           buffer.data());
+        f(std::string(buffer.data()), type);
+    }
+}
+
 const char* glslTypeName(GLenum type) {
     switch (type) {
         case GL_FLOAT:
@@ -117,39 +133,21 @@ GLint Program::location(const char* uniform) {
 std::vector<std::string> Program::uniformsNeverSet() {
     std::vector<std::string> out;
     if (!reportMissing_ || !handle_) return out;
-    GLint count = 0, longest = 0;
-    glGetProgramiv(handle_.id(), GL_ACTIVE_UNIFORMS, &count);
-    glGetProgramiv(handle_.id(), GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
-    std::vector<char> buffer(std::size_t(std::max(longest, 1)) + 1, '\0');
-    for (GLint i = 0; i < count; ++i) {
-        GLint size = 0;
-        GLenum type = 0;
-        glGetActiveUniform(handle_.id(), GLuint(i), GLsizei(buffer.size()), nullptr, &size, &type,
-                           buffer.data());
-        std::string name = buffer.data();
+    forEachActiveUniform(handle_.id(), [&](std::string name, GLenum) {
         if (name.size() > 3 && name.compare(name.size() - 3, 3, "[0]") == 0)
             name.resize(name.size() - 3);
-        if (name.rfind("gl_", 0) == 0 || locations_.count(name) || reportOnly_.count(name))
-            continue;
-        out.push_back(name);
-    }
+        if (name.rfind("gl_", 0) != 0 && !locations_.count(name) && !reportOnly_.count(name))
+            out.push_back(name);
+    });
     return out;
 }
 
 GLenum Program::declaredType(GLint location) {
     if (types_.empty()) {  // every active uniform once: name -> location -> type
-        GLint count = 0, longest = 0;
-        glGetProgramiv(handle_.id(), GL_ACTIVE_UNIFORMS, &count);
-        glGetProgramiv(handle_.id(), GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
-        std::vector<char> name(std::size_t(std::max(longest, 1)) + 1, '\0');
-        for (GLint i = 0; i < count; ++i) {
-            GLint size = 0;
-            GLenum type = 0;
-            glGetActiveUniform(handle_.id(), GLuint(i), GLsizei(name.size()), nullptr, &size, &type,
-                               name.data());
-            GLint loc = glGetUniformLocation(handle_.id(), name.data());
+        forEachActiveUniform(handle_.id(), [&](const std::string& name, GLenum type) {
+            GLint loc = glGetUniformLocation(handle_.id(), name.c_str());
             if (loc >= 0) types_[loc] = type;
-        }
+        });
         types_[-1] = 0;  // marks the table as filled
     }
     auto it = types_.find(location);

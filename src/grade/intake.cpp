@@ -13,6 +13,7 @@
 #include <map>
 
 #include "io/files.h"
+#include "render/request.h"
 
 namespace sl {
 
@@ -36,7 +37,6 @@ std::string lower(std::string s) {
 bool endsWith(const std::string& s, const std::string& tail) {
     return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
-
 
 struct Fd {
     int fd = -1;
@@ -252,6 +252,18 @@ std::set<std::string> shippedFiles(const std::string& treeRoot) {
         if (it->is_regular_file(ec))
             out.insert(fs::relative(it->path(), treeRoot, ec).generic_string());
     return out;
+}
+
+const ShippedTrees& shippedTrees() {
+    static const ShippedTrees trees = [] {
+        ShippedTrees t;
+        t.core = shippedFiles(shaderTreeRoot(GlslTree::Core));
+        t.legacy = shippedFiles(shaderTreeRoot(GlslTree::Legacy));
+        t.both = t.core;
+        t.both.insert(t.legacy.begin(), t.legacy.end());
+        return t;
+    }();
+    return trees;
 }
 
 Submission takeSubmission(const std::string& folder, const std::string& privateDir,

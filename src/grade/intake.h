@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "gl/shader_library.h"
+
 namespace sl {
 
 // The submission itself is unusable (not a folder, nothing in it replaces a shipped file, too
@@ -43,6 +45,16 @@ bool isJunkName(const std::string& name);
 
 // The relative paths of every shipped file under `treeRoot` (e.g. "margin/lit.frag").
 std::set<std::string> shippedFiles(const std::string& treeRoot);
+
+// The shipped shader trees' files: each tree's, and both together (what a submission may
+// replace). Read once per process (a class's students share them; they do not change meanwhile).
+struct ShippedTrees {
+    std::set<std::string> core, legacy, both;
+    const std::set<std::string>& of(GlslTree tree) const {
+        return tree == GlslTree::Core ? core : legacy;
+    }
+};
+const ShippedTrees& shippedTrees();
 
 // Resolves `folder` and copies its files into `privateDir` (an existing, empty folder of ours).
 // `shipped`: the shipped files of every tree (a near miss is judged against them); `stages`: the

@@ -8,12 +8,6 @@ std::string unknownKey(const nlohmann::json& obj, const std::set<std::string>& a
     return "";
 }
 
-std::string commaList(const std::set<std::string>& names) {
-    std::string list;
-    for (const auto& k : names) list += (list.empty() ? "" : ", ") + k;
-    return list;
-}
-
 std::string unknownFieldMessage(const std::set<std::string>& allowed) {
     return "unknown field (allowed: " + commaList(allowed) + ")";
 }

@@ -11,8 +11,13 @@ namespace sl {
 // The first key of `obj` (an object) that is not in `allowed`, or "" when every key is known.
 std::string unknownKey(const nlohmann::json& obj, const std::set<std::string>& allowed);
 
-// "a, b, c": the names a validator allows, for its messages.
-std::string commaList(const std::set<std::string>& names);
+// "a, b, c": the names a validator allows (or any list of names, in its order), for messages.
+template <class Names>
+std::string commaList(const Names& names) {
+    std::string list;
+    for (const std::string& k : names) list += (list.empty() ? "" : ", ") + k;
+    return list;
+}
 
 // "unknown field (allowed: a, b, c)": the message for such a key.
 std::string unknownFieldMessage(const std::set<std::string>& allowed);

@@ -573,6 +573,16 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         errors.insert(errors.begin(), renderError_);
     const std::string view = viewLabel(s, r.view);
     const std::string legend = viewLegend(s, r.view);
+    auto addLegendAndFlash = [&] {  // at the bottom, in both modes
+        if (!legend.empty()) {
+            HudBlock b;
+            b.bottom = true;
+            b.lines = {{legend, white}};
+            b.maxLines = 2;
+            blocks.push_back(b);
+        }
+        if (!flash_.empty()) blocks.push_back(flashBlock());
+    };
 
     if (split_) {
         const auto halves = splitHalves();
@@ -602,14 +612,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
             top.lines.push_back({"shader error (i: all of it): " + oneLine(errors[0]), errorText});
         top.maxLines = 5;
         blocks.push_back(top);
-        if (!legend.empty()) {
-            HudBlock b;
-            b.bottom = true;
-            b.lines = {{legend, white}};
-            b.maxLines = 2;
-            blocks.push_back(b);
-        }
-        if (!flash_.empty()) blocks.push_back(flashBlock());
+        addLegendAndFlash();
         return blocks;
     }
 
@@ -654,14 +657,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         std::max(3, showHelp_ ? rows - 3 : rows * 11 / 20);  // help asked for: room for it
     blocks.push_back(top);
 
-    if (!legend.empty()) {
-        HudBlock b;
-        b.bottom = true;
-        b.lines = {{legend, white}};
-        b.maxLines = 2;
-        blocks.push_back(b);
-    }
-    if (!flash_.empty()) blocks.push_back(flashBlock());
+    addLegendAndFlash();
     if (!errors.empty()) {
         HudBlock b;
         b.bottom = true;
