@@ -24,6 +24,8 @@ constexpr float kLightRadiansPerSecond = 0.6f;
 constexpr auto kFlashTime = std::chrono::seconds(4);
 constexpr const char* kTryingLine =
     "trying your shaders in a bounded worker first: a loop or a crash cannot freeze this window";
+constexpr const char* kTryingValuesLine =
+    "trying these values with your shaders in the worker first: the last ones that drew show";
 
 // One complete line per event on the terminal, there at once (stdout is a pipe in tests).
 void say(std::ostream& out, const std::string& line) {
@@ -254,6 +256,7 @@ bool WindowSession::tick(Clock::time_point now) {
         redraw = true;
     }
     if (trial_ && trial_->running() && finishTrial()) redraw = true;
+    if (trial_ && !trial_->running() && startParamTrialIfNeeded()) redraw = true;  // says so
     if (!flash_.empty() && now >= flashUntil_) {
         flash_.clear();
         redraw = true;
@@ -387,6 +390,13 @@ std::vector<TrialStage> WindowSession::trialStages() {
         } else if (!slot_ && s.id == request_.stage) {
             t.sets = request_.sets;
         }
+        if (slot_) {  // normalised as the window compares them: the values off their defaults
+            ParamSet tried(s.params);
+            for (const auto& [name, value] : t.sets) tried.set(name, value);
+            fileTrialSets_[s.id] = nonDefault(tried);
+        } else {
+            fileTrialSets_[s.id] = {};
+        }
         stages.push_back(std::move(t));
     }
     return stages;
@@ -397,6 +407,7 @@ void WindowSession::startTrial(bool force) {
         reload(force);
         return;
     }
+    paramTrial_ = false;  // a value trial still running is abandoned: files come first
     trialForce_ = force || !refused_.empty() || !reloadErrors_.empty() || !renderError_.empty();
     trialFingerprint_ = watch_.current();
     trialFile_ = watch_.newestFile();
@@ -405,12 +416,112 @@ void WindowSession::startTrial(bool force) {
                   width_ > 0 ? width_ : request_.width, height_ > 0 ? height_ : request_.height);
 }
 
+WindowSession::Sets WindowSession::nonDefault(const ParamSet& params) {
+    Sets sets;
+    for (const ParamSpec& p : params.specs())
+        if (params.text(p.name) != p.defaultText()) sets.emplace_back(p.name, params.text(p.name));
+    return sets;
+}
+
+bool WindowSession::drawsStudentPrograms() const {
+    return trial_ && slot_ && !slot_->renderer->shaders().overlay().empty();
+}
+
+bool WindowSession::pending(const Sets& sets) const {
+    if (!drawsStudentPrograms()) return false;
+    auto good = goodSets_.find(refusedKey(slot_->renderer->stage().id));
+    return good != goodSets_.end() && !good->second.count(sets);
+}
+
+bool WindowSession::paramsPending() const {
+    return drawsStudentPrograms() && pending(nonDefault(slot_->renderer->params()));
+}
+
+std::vector<WindowSession::Sets> WindowSession::setsInUse() const {
+    Renderer& r = *slot_->renderer;
+    std::vector<Sets> sets{nonDefault(r.params())};
+    if (split_)
+        for (const Half& h : splitHalves()) {
+            ParamSet half = r.params();
+            for (const ParamSpec& p : half.specs()) half.set(p.name, p.defaultText());
+            for (const auto& [name, value] : h.sets) half.set(name, value);
+            sets.push_back(nonDefault(half));
+        }
+    return sets;
+}
+
+bool WindowSession::valuesPending() const {
+    if (!drawsStudentPrograms()) return false;
+    for (const Sets& sets : setsInUse())
+        if (pending(sets)) return true;
+    return false;
+}
+
+// The values on screen (and the split halves'), when the student's programs have not drawn
+// with them in the worker, are tried there first; until then the last good ones draw.
+bool WindowSession::startParamTrialIfNeeded() {
+    if (firstTrial_ || !valuesPending()) return false;
+    Renderer& r = *slot_->renderer;
+    const std::string key = refusedKey(r.stage().id);
+    std::vector<TrialStage> stages;
+    paramTrialTried_.clear();
+    for (const Sets& sets : setsInUse()) {
+        if (!pending(sets) || badSets_[key].count(sets) ||
+            std::find(paramTrialTried_.begin(), paramTrialTried_.end(), sets) !=
+                paramTrialTried_.end())
+            continue;  // good, refused before (its values were put back), or already listed
+        TrialStage t;
+        t.stage = r.stage().id;
+        t.scene = scene_;
+        t.sets = sets;
+        stages.push_back(t);
+        paramTrialTried_.push_back(sets);
+    }
+    if (stages.empty()) return false;
+    paramTrial_ = true;
+    paramTrialKey_ = key;
+    trialFingerprint_ = watch_.current();
+    trial_->start(tree_, tree_ == request_.tree ? request_.overlay : "", stages,
+                  width_ > 0 ? width_ : request_.width, height_ > 0 ? height_ : request_.height);
+    return true;
+}
+
+void WindowSession::adoptParams(const std::vector<TrialVerdict>& verdicts) {
+    for (std::size_t k = 0; k < paramTrialTried_.size(); ++k) {
+        const Sets& tried = paramTrialTried_[k];
+        if (k < verdicts.size() && verdicts[k].ok) {
+            goodSets_[paramTrialKey_].insert(tried);
+            continue;
+        }
+        const std::string why = k < verdicts.size() ? verdicts[k].what : "no verdict";
+        badSets_[paramTrialKey_][tried] = why;
+        std::string values;
+        for (const auto& [name, value] : tried)
+            values += (values.empty() ? "" : ", ") + name + " = " + value;
+        const std::string line = "these values did not draw in the trial worker (" +
+                                 (values.empty() ? std::string("the defaults") : values) +
+                                 "): " + oneLine(why) + "; the last values that drew show";
+        say(std::cerr, "shadowlab: " + line);
+        flash(line, true);
+        // On screen, back to what drew (if the stage is still the one tried and shows these).
+        Renderer& r = *slot_->renderer;
+        if (refusedKey(r.stage().id) != paramTrialKey_ || nonDefault(r.params()) != tried) continue;
+        for (const ParamSpec& p : r.params().specs()) r.params().set(p.name, p.defaultText());
+        for (const auto& [name, value] : lastGoodSets_[paramTrialKey_]) r.params().set(name, value);
+    }
+}
+
 bool WindowSession::finishTrial() {
     std::vector<TrialVerdict> verdicts;
     if (!trial_->poll(verdicts)) return false;
+    const bool values = paramTrial_;
+    paramTrial_ = false;
     // Saved again meanwhile: these files were not the ones tried; the next trial decides.
     if (watch_.pending() || watch_.current() != trialFingerprint_) return false;
-    adopt(verdicts);
+    if (values)
+        adoptParams(verdicts);
+    else
+        adopt(verdicts);
     return true;
 }
 
@@ -426,6 +537,10 @@ void WindowSession::adopt(const std::vector<TrialVerdict>& verdicts) {
         if (v.ok) {
             passed.insert(v.stage);
             refused_.erase(key);
+            const Sets& tried = fileTrialSets_[v.stage];  // new programs: what drew is all we know
+            goodSets_[key] = {tried};
+            badSets_[key].clear();
+            lastGoodSets_[key] = tried;
             continue;
         }
         all = false;
@@ -606,6 +721,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         }
         top.lines.push_back({line, yellow});
         if (waitingForFirstTrial()) top.lines.push_back({kTryingLine, green});
+        if (valuesPending()) top.lines.push_back({kTryingValuesLine, green});
         const std::string lesson = lessonLine();
         if (!lesson.empty()) top.lines.push_back({lesson, white});
         if (!errors.empty())
@@ -626,6 +742,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         status << static_cast<int>(drawMs_ * 10) / 10.0 << " ms to draw";
     top.lines.push_back({status.str(), white});
     if (waitingForFirstTrial()) top.lines.push_back({kTryingLine, green});
+    if (valuesPending()) top.lines.push_back({kTryingValuesLine, green});
     if (scene_ != startScene_)
         top.lines.push_back({"scene " + scene_ + ": the " + s.id +
                                  " stage brings its own (back to " + startScene_ +
@@ -696,7 +813,16 @@ void WindowSession::drawStage(GLuint target, int width, int height) {
     try {
         // Refused by the trial and never drawn here: building it from disk could hang or crash.
         if (refused != refused_.end() && !drewOnce_.count(key)) throw ShaderError(refused->second);
-        r.render(target, width, height);
+        if (paramsPending()) {  // values not yet drawn in the worker: the last good ones draw
+            const ParamSet onScreen = r.params();
+            for (const ParamSpec& p : r.params().specs()) r.params().set(p.name, p.defaultText());
+            for (const auto& [name, value] : lastGoodSets_[key]) r.params().set(name, value);
+            r.render(target, width, height);
+            r.params() = onScreen;
+        } else {
+            if (drawsStudentPrograms()) lastGoodSets_[key] = nonDefault(r.params());
+            r.render(target, width, height);
+        }
         drewOnce_.insert(key);
         renderError_.clear();
     } catch (const ShaderError& e) {  // no good program yet for this stage: show why
@@ -814,6 +940,7 @@ std::string WindowSession::stateJson() const {
                  : errors.empty()      ? ""
                                        : oneLine(errors[0]);
     j["trying"] = trial_ && trial_->running();
+    j["tryingValues"] = valuesPending();  // drawn with the last good values meanwhile
     // "none": no good program drew it; "trying": the student's folder is still in the worker
     j["picture"] = waitingForFirstTrial() ? "trying" : renderError_.empty() ? "stage" : "none";
     j["drawn"] = drawnFrames_;

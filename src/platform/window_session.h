@@ -53,6 +53,17 @@ class WindowSession {
     bool finishTrial();
     void adopt(const std::vector<TrialVerdict>& verdicts);
     std::vector<TrialStage> trialStages();
+    // Parameter values are tried too: a loop whose length a uniform sets would otherwise reach
+    // the window's context with the first new value. Sets: a stage's non-default values.
+    using Sets = std::vector<std::pair<std::string, std::string>>;
+    static Sets nonDefault(const ParamSet& params);
+    bool drawsStudentPrograms() const;
+    bool startParamTrialIfNeeded();  // true when it started one
+    void adoptParams(const std::vector<TrialVerdict>& verdicts);
+    bool pending(const Sets& sets) const;  // the student's programs have not drawn with these
+    bool paramsPending() const;            // ... with the values on screen
+    std::vector<Sets> setsInUse() const;   // the values on screen, and the split halves'
+    bool valuesPending() const;            // any of those not drawn in the worker yet
     std::string refusedKey(const std::string& stage) const;
     std::vector<std::string> shownErrors() const;
     // The picture is the student's folder's, still in its first trial: a placeholder is drawn.
@@ -121,6 +132,15 @@ class WindowSession {
     std::uint64_t trialFingerprint_ = 0;
     std::string trialFile_;    // the file changed last when the trial began
     bool firstTrial_ = false;  // the student's folder is in its first trial: none of it drawn yet
+    std::map<std::string, Sets> fileTrialSets_;  // stage -> the values the file trial drew with
+    bool paramTrial_ = false;                    // the running trial tries values, not files
+    std::vector<Sets> paramTrialTried_;          // its values, in the order tried
+    std::string paramTrialKey_;                  // "tree/stage"
+    // Per "tree/stage" of the student's programs now adopted: values that drew in the worker,
+    // values that did not (and why), and the last good ones on screen (drawn while others wait).
+    std::map<std::string, std::set<Sets>> goodSets_;
+    std::map<std::string, std::map<Sets, std::string>> badSets_;
+    std::map<std::string, Sets> lastGoodSets_;
     std::map<std::string, std::string> refused_;  // "tree/stage": why its new programs were refused
     std::set<std::string> drewOnce_;              // "tree/stage" drawn by a good program here
     std::string renderError_, printedRenderError_;

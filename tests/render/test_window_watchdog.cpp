@@ -219,3 +219,62 @@ TEST(LiveWindowWatchdog, LoopingFolderAtStartLeavesTheWindowAnswering) {
     EXPECT_EQ(w.quit(), 0) << w.err();
     EXPECT_LT(std::chrono::duration<double>(Clock::now() - escape).count(), 2.0);
 }
+
+// A loop whose length a uniform sets: fine at the default margin, a minute a frame once the
+// lecturer presses + on it. The new value is tried in the worker first; the window keeps
+// answering and drawing the last value that drew, then says the value was refused and puts it
+// back; the picture never changed. Esc still closes it.
+TEST(LiveWindowWatchdog, ValueThatMakesTheShaderLoopIsTriedFirst) {
+    std::string dir = tempDir("live-watchdog-value");
+    fs::create_directories(dir + "/mine/margin");
+    std::ofstream(dir + "/mine/margin/lit.frag")
+        << replaced(readText(kOurs), "    if (marginKind == 0) return margin;",
+                    "    float m = 0.0;\n"
+                    "    for (int i = 0; i < (margin > 0.0105 ? 100000000 : 1); i++) m += margin;\n"
+                    "    if (marginKind == 0) return m;");
+    LiveWindow w("--shaders mine --stage margin --state state.json --size 640x480", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["picture"] == "stage"; }, 60))
+        << w.state().dump() << w.err();
+    ASSERT_TRUE(w.keys("p"));
+    ASSERT_TRUE(waitUntil([&] { return countLines(w.out(), "saved ") >= 1; }, 30)) << w.out();
+    for (int k = 0; k < 8 && w.state()["param"] != "margin"; ++k) {
+        const std::string param = w.state()["param"];
+        ASSERT_TRUE(w.keys("Tab"));
+        ASSERT_TRUE(w.waitState([&](const auto& s) { return s["param"] != param; }, 5));
+    }
+    ASSERT_EQ(w.state()["param"], "margin");
+    const std::string before = w.state()["value"];
+    ASSERT_TRUE(w.keys("plus"));
+    ASSERT_TRUE(w.waitState(
+        [](const auto& s) { return s["tryingValues"] == true && s["trying"] == true; }, 5))
+        << w.state().dump();
+    // The window answers meanwhile: `i` changes the HUD within a second.
+    const std::string hud = w.state()["hud"];
+    ASSERT_TRUE(w.keys("i"));
+    EXPECT_TRUE(w.waitState([&](const auto& s) { return s["hud"] != hud; }, 1.0))
+        << "no answer to i within a second while the value was tried";
+    ASSERT_TRUE(w.waitState(
+        [&](const auto& s) {
+            std::string m = s["message"];
+            return s["trying"] == false && s["value"] == before &&
+                   m.find("did not draw") != std::string::npos &&
+                   m.find("time limit") != std::string::npos;
+        },
+        60))
+        << w.state().dump() << w.err();
+    ASSERT_TRUE(w.keys("p"));
+    ASSERT_TRUE(waitUntil([&] { return countLines(w.out(), "saved ") >= 2; }, 30)) << w.out();
+    std::istringstream out(w.out());
+    std::vector<std::string> shots;
+    for (std::string line; std::getline(out, line);)
+        if (line.rfind("saved ", 0) == 0) shots.push_back(line.substr(6));
+    ASSERT_EQ(shots.size(), 2u);
+    Image first, second;
+    ASSERT_EQ(readPng(shots[0], first), "");
+    ASSERT_EQ(readPng(shots[1], second), "");
+    EXPECT_TRUE(first.rgba == second.rgba) << "the picture changed";
+    auto escape = Clock::now();
+    EXPECT_EQ(w.quit(), 0) << w.err();
+    EXPECT_LT(std::chrono::duration<double>(Clock::now() - escape).count(), 2.0);
+}
