@@ -53,6 +53,9 @@ WindowSession::WindowSession(const WindowArgs& args)
     request_.tree = tree_;
     startScene_ = effectiveScene(request_);
     trial_ = args.trial;
+    // The trees as they are at the start are trusted (ours, or tried below): only files changed
+    // during the session are tried before a tree draws with them.
+    triedFingerprint_[GlslTree::Core] = triedFingerprint_[GlslTree::Legacy] = watch_.current();
     // A student's folder is tried before anything of it is compiled here. Live, the window
     // answers keys meanwhile and shows that it is trying (a looping stage takes the whole time
     // limit, and every stage may loop); a scripted run (--frames) waits for the verdict first.
@@ -143,9 +146,15 @@ bool WindowSession::selectStage(std::size_t index, GlslTree sessionTree) {
     }
     slot_ = next;
     scene_ = scene;
-    if (sessionTree != tree_) reloadErrors_.clear();  // the other tree's: not about this picture
+    const bool otherTree = sessionTree != tree_;
+    if (otherTree) reloadErrors_.clear();  // the other tree's: not about this picture
     tree_ = sessionTree;
     renderError_.clear();
+    // Its files changed since it last drew: tried first (its stages not drawn yet wait).
+    if (otherTree && trial_ && !firstTrial_ && triedFingerprint_[tree_] != watch_.current()) {
+        startTrial(false);
+        treeTrial_ = true;
+    }
     return true;
 }
 
@@ -423,6 +432,14 @@ WindowSession::Sets WindowSession::nonDefault(const ParamSet& params) {
     return sets;
 }
 
+bool WindowSession::waitingForTrial() const {
+    if (!slot_ || !trial_) return false;
+    Renderer& r = *slot_->renderer;
+    if (firstTrial_) return !r.shaders().overlay().empty();
+    return treeTrial_ && trial_->running() && r.shaders().tree() == tree_ &&
+           !drewOnce_.count(refusedKey(r.stage().id));
+}
+
 bool WindowSession::drawsStudentPrograms() const {
     return trial_ && slot_ && !slot_->renderer->shaders().overlay().empty();
 }
@@ -527,7 +544,8 @@ bool WindowSession::finishTrial() {
 
 void WindowSession::adopt(const std::vector<TrialVerdict>& verdicts) {
     const bool first = firstTrial_;
-    firstTrial_ = false;
+    firstTrial_ = treeTrial_ = false;
+    triedFingerprint_[tree_] = trialFingerprint_;
     const bool hadErrors = !shownErrors().empty() || !renderError_.empty();
     const std::string tree = treeName(tree_);
     std::set<std::string> passed, said;
@@ -720,7 +738,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
             line += " | " + name + " = " + r.params().text(name) + ignoredMark(name);
         }
         top.lines.push_back({line, yellow});
-        if (waitingForFirstTrial()) top.lines.push_back({kTryingLine, green});
+        if (waitingForTrial()) top.lines.push_back({kTryingLine, green});
         if (valuesPending()) top.lines.push_back({kTryingValuesLine, green});
         const std::string lesson = lessonLine();
         if (!lesson.empty()) top.lines.push_back({lesson, white});
@@ -741,7 +759,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
     else
         status << static_cast<int>(drawMs_ * 10) / 10.0 << " ms to draw";
     top.lines.push_back({status.str(), white});
-    if (waitingForFirstTrial()) top.lines.push_back({kTryingLine, green});
+    if (waitingForTrial()) top.lines.push_back({kTryingLine, green});
     if (valuesPending()) top.lines.push_back({kTryingValuesLine, green});
     if (scene_ != startScene_)
         top.lines.push_back({"scene " + scene_ + ": the " + s.id +
@@ -803,7 +821,7 @@ void WindowSession::drawStage(GLuint target, int width, int height) {
     Renderer& r = *slot_->renderer;
     const std::string key = refusedKey(r.stage().id);
     auto refused = refused_.find(key);
-    if (waitingForFirstTrial()) {  // nothing of the student's folder built here yet
+    if (waitingForTrial()) {  // nothing of these files built here yet
         glBindFramebuffer(GL_FRAMEBUFFER, target);
         glViewport(0, 0, width, height);
         glClearColor(0.1f, 0.1f, 0.12f, 1);
@@ -942,7 +960,7 @@ std::string WindowSession::stateJson() const {
     j["trying"] = trial_ && trial_->running();
     j["tryingValues"] = valuesPending();  // drawn with the last good values meanwhile
     // "none": no good program drew it; "trying": the student's folder is still in the worker
-    j["picture"] = waitingForFirstTrial() ? "trying" : renderError_.empty() ? "stage" : "none";
+    j["picture"] = waitingForTrial() ? "trying" : renderError_.empty() ? "stage" : "none";
     j["drawn"] = drawnFrames_;
     j["message"] = flash_;
     j["animating"] = animateLight_;

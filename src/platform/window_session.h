@@ -66,10 +66,9 @@ class WindowSession {
     bool valuesPending() const;            // any of those not drawn in the worker yet
     std::string refusedKey(const std::string& stage) const;
     std::vector<std::string> shownErrors() const;
-    // The picture is the student's folder's, still in its first trial: a placeholder is drawn.
-    bool waitingForFirstTrial() const {
-        return firstTrial_ && slot_ && !slot_->renderer->shaders().overlay().empty();
-    }
+    // The picture waits for a trial: the student's folder in its first one, or a stage of a tree
+    // switched to after its files changed, never drawn here yet. A placeholder is drawn.
+    bool waitingForTrial() const;
     void saveShot();
     void flash(const std::string& text, bool error);
     std::vector<HudBlock> hudBlocks() const;
@@ -132,6 +131,8 @@ class WindowSession {
     std::uint64_t trialFingerprint_ = 0;
     std::string trialFile_;    // the file changed last when the trial began
     bool firstTrial_ = false;  // the student's folder is in its first trial: none of it drawn yet
+    bool treeTrial_ = false;   // the tree switched to is in a trial (its files changed meanwhile)
+    std::map<GlslTree, std::uint64_t> triedFingerprint_;  // the files each tree last drew with
     std::map<std::string, Sets> fileTrialSets_;  // stage -> the values the file trial drew with
     bool paramTrial_ = false;                    // the running trial tries values, not files
     std::vector<Sets> paramTrialTried_;          // its values, in the order tried

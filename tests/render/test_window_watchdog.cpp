@@ -278,3 +278,56 @@ TEST(LiveWindowWatchdog, ValueThatMakesTheShaderLoopIsTriedFirst) {
     EXPECT_EQ(w.quit(), 0) << w.err();
     EXPECT_LT(std::chrono::duration<double>(Clock::now() - escape).count(), 2.0);
 }
+
+// The lecturer edits the other tree's shader while the window shows this one: switching trees
+// with `g` tries that tree's changed files first. Its stage never drawn here waits (the window
+// says it is trying and answers keys), then the refusal names the file; Esc closes. The shipped
+// trees are a copy here (SHADOWLAB_DATA_DIR), so that the test can edit them.
+TEST(LiveWindowWatchdog, OtherTreesChangedFilesAreTriedOnSwitching) {
+    std::string dir = tempDir("live-watchdog-tree");
+    const std::string data = dir + "/data", source = SHADOWLAB_SOURCE_DIR;
+    for (const char* sub : {"shaders_core", "shaders_legacy", "scenes", "slides_examples"}) {
+        fs::create_directories(data + "/" + sub);
+        fs::copy(source + "/" + sub, data + "/" + sub, fs::copy_options::recursive);
+    }
+    fs::create_directories(data + "/src/stages");
+    fs::copy_file(source + "/src/stages/expectations.json", data + "/src/stages/expectations.json");
+    ::setenv("SHADOWLAB_DATA_DIR", data.c_str(), 1);
+    LiveWindow w("--stage margin --state state.json --size 640x480", dir);
+    ::unsetenv("SHADOWLAB_DATA_DIR");
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["picture"] == "stage"; }, 60))
+        << w.state().dump() << w.err();
+    const std::string legacy = data + "/shaders_legacy/margin/lit.frag";
+    const std::string looping =
+        replaced(readText(legacy), "    if (marginKind == 0) return margin;",
+                 "    float m = 0.0;\n"
+                 "    for (int i = 0; i < 10; i--) m += margin;\n"
+                 "    if (marginKind == 0) return m;");
+    std::ofstream(legacy + ".tmp") << looping;
+    fs::rename(legacy + ".tmp", legacy);
+    // The core tree's trial of the change passes (the change is not in it).
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["message"] != ""; }, 30))
+        << w.state().dump();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["trying"] == false; }, 30));
+    ASSERT_TRUE(w.keys("g"));
+    ASSERT_TRUE(w.waitState(
+        [](const auto& s) { return s["tree"] == "legacy" && s["picture"] == "trying"; }, 10))
+        << w.state().dump();
+    const std::string param = w.state()["param"];
+    ASSERT_TRUE(w.keys("Tab"));
+    EXPECT_TRUE(w.waitState([&](const auto& s) { return s["param"] != param; }, 1.0))
+        << "no answer to Tab within a second while the other tree was tried";
+    ASSERT_TRUE(w.waitState(
+        [](const auto& s) {
+            std::string e = s["error"];
+            return s["trying"] == false && e.find("margin/lit.frag") != std::string::npos &&
+                   e.find("time limit") != std::string::npos;
+        },
+        60))
+        << w.state().dump() << w.err();
+    EXPECT_EQ(w.state()["picture"], "none");
+    auto escape = Clock::now();
+    EXPECT_EQ(w.quit(), 0) << w.err();
+    EXPECT_LT(std::chrono::duration<double>(Clock::now() - escape).count(), 2.0);
+}
