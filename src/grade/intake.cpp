@@ -226,11 +226,6 @@ std::string nearMiss(const std::string& path, const std::map<std::string, std::s
     return candidates.front();
 }
 
-std::string privateTemp() {
-    const char* t = std::getenv("TMPDIR");
-    return t && *t ? t : "/tmp";
-}
-
 }  // namespace
 
 // Editor and archive leftovers: never a shader, never mentioned.
@@ -360,26 +355,6 @@ std::vector<std::string> expectedFiles(const std::string& stage,
     for (const std::string& f : shipped)
         if (stageOf(f) == stage) out.push_back(f);
     return out;
-}
-
-PrivateDir::PrivateDir(const std::string& prefix) {
-    std::string pattern = privateTemp() + "/" + prefix + "-XXXXXX";
-    std::vector<char> buf(pattern.begin(), pattern.end());
-    buf.push_back('\0');
-    if (!::mkdtemp(buf.data()))  // mode 0700: no other user reads or plants anything here
-        throw std::runtime_error("cannot make a private folder in " + privateTemp() + ": " +
-                                 std::strerror(errno));
-    path_ = buf.data();
-}
-
-PrivateDir::~PrivateDir() {
-    removeTree(path_);
-}
-
-std::string removeTree(const std::string& dir) {
-    std::error_code ec;
-    std::filesystem::remove_all(dir, ec);  // removes links themselves, never their targets
-    return ec ? ec.message() : "";
 }
 
 }  // namespace sl

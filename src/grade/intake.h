@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "gl/shader_library.h"
+#include "grade/private_dir.h"
 
 namespace sl {
 
@@ -72,22 +73,5 @@ std::vector<std::string> stageFiles(const Submission& s, const std::string& stag
 // The shipped files of `stage` in `shipped` (what a MISSING stage expected).
 std::vector<std::string> expectedFiles(const std::string& stage,
                                        const std::set<std::string>& shipped);
-
-// A private temporary folder (mode 0700, under $TMPDIR or /tmp), removed with its contents when
-// this goes away. Throws std::runtime_error when it cannot be made.
-class PrivateDir {
-  public:
-    explicit PrivateDir(const std::string& prefix = "shadowlab-intake");
-    ~PrivateDir();
-    PrivateDir(const PrivateDir&) = delete;
-    PrivateDir& operator=(const PrivateDir&) = delete;
-    const std::string& path() const { return path_; }
-
-  private:
-    std::string path_;
-};
-
-// Removes `dir` and everything in it without following links ("" or the error).
-std::string removeTree(const std::string& dir);
 
 }  // namespace sl

@@ -91,7 +91,7 @@ def run(exe, case):
     start = time.monotonic()
     stdin = case.stdin(tmp) if case.stdin else subprocess.DEVNULL
     if case.kill_after:
-        p, problems = run_and_kill(exe, args, case, stdin)
+        p, problems = run_and_kill(exe, args, case, stdin, tmp)
     else:
         problems = []
         try:
@@ -175,14 +175,19 @@ def shadowlab_processes_under(pid):
 WORKER_GROUPS = {}
 
 
-def run_and_kill(exe, args, case, stdin):
+def run_and_kill(exe, args, case, stdin, tmp):
     """Starts shadowlab, kills it after kill_after = (seconds, signal) as a harness's timeout
-    would, and checks that no worker of it is left running a second later."""
+    would, and checks that no worker of it is left running a second later, and that its
+    private folders (the snapshot, the shader cache) are gone: at once for a signal it can
+    catch, with the next run after SIGKILL. Its $TMPDIR is the case's own, to see them."""
     seconds, sig = case.kill_after
+    env = dict(case.env or os.environ)
+    env["TMPDIR"] = os.path.join(tmp, "system-tmp")
+    os.makedirs(env["TMPDIR"])
     # A shell's background job inherits SIGINT ignored: give shadowlab the default action, as
     # a harness's child has.
     p = subprocess.Popen([exe] + shlex.split(args), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                         stdin=stdin, env=case.env,
+                         stdin=stdin, env=env,
                          preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     time.sleep(seconds)
     workers = shadowlab_processes_under(p.pid)
@@ -199,6 +204,15 @@ def run_and_kill(exe, args, case, stdin):
         problems.append(f"workers still running after the parent died: {alive}")
         for pid in alive:
             os.kill(pid, signal.SIGKILL)
+    private = lambda: sorted(n for n in os.listdir(env["TMPDIR"]) if n.startswith("shadowlab-"))
+    if "--shaders" in args and not private() and sig == signal.SIGKILL:
+        problems.append("no private folder was there to outlive SIGKILL")
+    if sig == signal.SIGKILL:  # nothing catches it: the next run removes what it left
+        subprocess.run([exe, "check", "--stage", "phong", "--size", "80x60", "--shaders",
+                        os.path.join(ROOT, "shaders_core")], env=env, capture_output=True,
+                       timeout=60)
+    if private():
+        problems.append(f"private folders left in $TMPDIR: {private()}")
     return Completed(p.returncode, out.decode(errors="replace"), err.decode(errors="replace")), \
         problems
 
@@ -1092,7 +1106,8 @@ def attack_cases():
     for sig in (signal.SIGTERM, signal.SIGKILL, signal.SIGINT):
         cases.append(Case(f"shadowlab killed by {sig.name} during check --all", -sig, "",
                           "check --all --glsl core --report {tmp}/report.json "
-                          "--diff-dir {tmp}/diffs", timeout=30, kill_after=(2.5, sig),
+                          "--diff-dir {tmp}/diffs --shaders " + os.path.join(ROOT, "shaders_core"),
+                          timeout=30, kill_after=(2.5, sig),
                           check=no_report))
     cases.append(Case("check --all of one submission: 3 at once agree with one alone", 2, "",
                       CHECK + " --all", timeout=120, one_line=False,
