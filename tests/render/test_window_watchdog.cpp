@@ -186,6 +186,32 @@ TEST(LiveWindowWatchdog, CrashAndMemoryBlowUpKeepTheLastGoodProgram) {
     breakWhileLive("--time-limit 60 --memory-limit 1536", {crash(), memory()});
 }
 
+// While a looping file is tried, the window answers Tab within a second; then the panel names
+// the file and the time limit, the folder's stage has no picture, and Esc closes it at once.
+namespace {
+
+void answersThenRefusesTheLoop(LiveWindow& w, const std::string& file) {
+    const std::string param = w.state()["param"];
+    ASSERT_TRUE(w.keys("Tab"));
+    EXPECT_TRUE(w.waitState([&](const auto& s) { return s["param"] != param; }, 1.0))
+        << "no answer to Tab within a second while the files were tried";
+    EXPECT_EQ(w.state()["trying"], true) << "the trial ended before the key";
+    ASSERT_TRUE(w.waitState(
+        [&](const auto& s) {
+            std::string e = s["error"];
+            return s["trying"] == false && e.find(file) != std::string::npos &&
+                   e.find("time limit") != std::string::npos;
+        },
+        60))
+        << w.state().dump() << w.err();
+    EXPECT_EQ(w.state()["picture"], "none");  // never drawn here: no good program of the files
+    auto escape = Clock::now();
+    EXPECT_EQ(w.quit(), 0) << w.err();
+    EXPECT_LT(std::chrono::duration<double>(Clock::now() - escape).count(), 2.0);
+}
+
+}  // namespace
+
 // A folder that already loops when the window starts: the window shows itself at once, says it
 // is trying the folder, answers keys meanwhile (every stage of a looping shared file could take
 // the whole limit in turn), then names the file; Esc closes it.
@@ -201,23 +227,7 @@ TEST(LiveWindowWatchdog, LoopingFolderAtStartLeavesTheWindowAnswering) {
     std::cout << "window up and trying after "
               << std::chrono::duration<double>(Clock::now() - started).count() << " s\n";
     EXPECT_EQ(w.state()["trying"], true);
-    const std::string param = w.state()["param"];
-    ASSERT_TRUE(w.keys("Tab"));
-    EXPECT_TRUE(w.waitState([&](const auto& s) { return s["param"] != param; }, 1.0))
-        << "no answer to Tab within a second while the folder was tried";
-    EXPECT_EQ(w.state()["trying"], true) << "the trial ended before the key";
-    ASSERT_TRUE(w.waitState(
-        [](const auto& s) {
-            std::string e = s["error"];
-            return s["trying"] == false && e.find("mine/margin/lit.frag") != std::string::npos &&
-                   e.find("time limit") != std::string::npos;
-        },
-        60))
-        << w.state().dump() << w.err();
-    EXPECT_EQ(w.state()["picture"], "none");  // never drawn here: no good program of the folder
-    auto escape = Clock::now();
-    EXPECT_EQ(w.quit(), 0) << w.err();
-    EXPECT_LT(std::chrono::duration<double>(Clock::now() - escape).count(), 2.0);
+    answersThenRefusesTheLoop(w, "mine/margin/lit.frag");
 }
 
 // A loop whose length a uniform sets: fine at the default margin, a minute a frame once the
@@ -314,20 +324,5 @@ TEST(LiveWindowWatchdog, OtherTreesChangedFilesAreTriedOnSwitching) {
     ASSERT_TRUE(w.waitState(
         [](const auto& s) { return s["tree"] == "legacy" && s["picture"] == "trying"; }, 10))
         << w.state().dump();
-    const std::string param = w.state()["param"];
-    ASSERT_TRUE(w.keys("Tab"));
-    EXPECT_TRUE(w.waitState([&](const auto& s) { return s["param"] != param; }, 1.0))
-        << "no answer to Tab within a second while the other tree was tried";
-    ASSERT_TRUE(w.waitState(
-        [](const auto& s) {
-            std::string e = s["error"];
-            return s["trying"] == false && e.find("margin/lit.frag") != std::string::npos &&
-                   e.find("time limit") != std::string::npos;
-        },
-        60))
-        << w.state().dump() << w.err();
-    EXPECT_EQ(w.state()["picture"], "none");
-    auto escape = Clock::now();
-    EXPECT_EQ(w.quit(), 0) << w.err();
-    EXPECT_LT(std::chrono::duration<double>(Clock::now() - escape).count(), 2.0);
+    answersThenRefusesTheLoop(w, "margin/lit.frag");
 }
