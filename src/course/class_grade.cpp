@@ -148,7 +148,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     }
     std::cout << "grade " << n << " submissions by " << printableName(args.assignment) << " ("
               << a.name << ")";
-    if (todo.size() < n) {
+    if (todo.size() < n || reasons.count("new") < reasons.size()) {
         std::cout << ": " << n - todo.size() << " already graded, " << todo.size() << " to grade";
         std::string why;
         for (const auto& [reason, count] : reasons)

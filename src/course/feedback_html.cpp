@@ -127,9 +127,10 @@ std::string plainWords(const RowRecord& rr) {
 
 namespace {
 
-// Only a visible stage's visible rows are shown to the student; the rest are counted.
+// A page is handed back once grades are out (after the due date, published): every row but a
+// hidden one (or one of a hidden stage) is shown; hidden rows are counted, never shown.
 bool shownToStudent(const StageRecord& st, const RowRecord& row) {
-    return st.visibility == "visible" && row.visibility == "visible";
+    return st.visibility != "hidden" && row.visibility != "hidden";
 }
 
 std::string pointsOf(double points, double max, Status status) {
@@ -155,7 +156,12 @@ std::string studentPage(const StudentRecord& record) {
         std::string status = statusName(st.status);
         h << "<h2 id=\"" << esc(id) << "\">" << esc(id) << ": "
           << pointsOf(st.points, st.maxPoints, st.status) << " <span class=\"" << esc(status)
-          << "\">" << esc(status) << "</span></h2>\n<p>" << esc(st.message) << "</p>\n";
+          << "\">" << esc(status) << "</span></h2>\n<p>"
+          << esc(st.status == Status::NotGraded
+                     ? "The grading machine could not run this stage. That is not your "
+                       "submission's fault; it will be graded again."
+                     : st.message)
+          << "</p>\n";
         int hidden = 0;
         const RowRecord* shown = nullptr;
         h << "<table><tr><th>view</th><th>setting</th><th>verdict</th><th>points</th><th>in plain "

@@ -16,8 +16,8 @@ std::string plainWords(const RowRecord& row);
 
 // The student's page: per stage the status, points and message; one picture set per stage (the
 // first visible row that lost points, else its first visible row): theirs, the truth and the
-// diff with its legend, read from the row's images. Rows the student may not see yet (hidden)
-// are counted, not shown.
+// diff with its legend, read from the row's images. A page is handed back once grades are out:
+// hidden rows (and those of a hidden stage) are counted as hidden, never shown.
 std::string studentPage(const StudentRecord& record);
 
 // The class page: students by stages, coloured by points, each linked to `pageOf(student)`;

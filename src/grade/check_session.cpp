@@ -150,6 +150,15 @@ GradingPlan defaultPlan(const StageCheckArgs& a, const std::vector<RenderRequest
     return plan;
 }
 
+void makeDiffDir(const CheckOutputs& out) {
+    if (out.diffDir.empty()) return;
+    std::error_code ec;
+    fs::create_directories(out.diffDir, ec);
+    if (ec || !fs::is_directory(out.diffDir))
+        throw UsageError("--diff-dir: cannot create the folder '" + printableName(out.diffDir) +
+                         "'");
+}
+
 }  // namespace
 
 void validateOutputs(const CheckOutputs& out, const std::string& submission) {
@@ -197,13 +206,7 @@ int gradeOneStudent(const GradingPlan& plan, const StudentWork& work, GradeSetti
                     const std::string& headline) {
     std::size_t total = 0;
     for (const StagePlan& st : plan.stages) total += st.rows.size();
-    if (!out.diffDir.empty()) {
-        std::error_code ec;
-        fs::create_directories(out.diffDir, ec);
-        if (ec || !fs::is_directory(out.diffDir))
-            throw UsageError("--diff-dir: cannot create the folder '" +
-                             printableName(out.diffDir) + "'");
-    }
+    makeDiffDir(out);
     std::cout << headline << "\n        " << tableHeader() << std::flush;
     // Mesa's shader cache for this run's workers: private, gone with the run.
     PrivateDir shaderCache("shadowlab-shader-cache");
@@ -314,6 +317,7 @@ int runStageCheck(const StageCheckArgs& a) {
     for (const StagePlan& st : plan.stages)
         for (const RowPlan& row : st.rows) validateRequest(row.check.request);
     // Every diff image's path, before any GL work.
+    makeDiffDir(a.out);
     const CheckCase* first = plan.stages.empty() || plan.stages.front().rows.empty()
                                  ? nullptr
                                  : &plan.stages.front().rows.front().check;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "grade/bounds.h"
 #include "grade/stage_runs.h"
 #include "io/json_fields.h"
 
@@ -42,7 +43,7 @@ void score(RowRecord& row, const RowPlan& plan) {
     row.extraView = plan.extra;
     row.result.view = plan.check.view;
     if (!plan.check.lesson.empty()) row.result.lesson = plan.check.lesson;
-    row.maxPoints = isScored(row.status()) ? rounded(plan.points) : 0.0;
+    row.maxPoints = isScored(row.status()) ? plan.points : 0.0;
     row.points = earnsPoints(row.status()) ? row.maxPoints : 0.0;
 }
 
@@ -121,10 +122,15 @@ StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
             if (!bad) {
                 row.result = results[i];
             } else {
+                // Every row takes the failure of the row that stopped the job; the others carry
+                // it cut short (the stage's message has it whole): outputs stay small.
+                const bool own = i < results.size() && &results[i] == bad;
+                const std::string message =
+                    own ? bad->message : capped(bad->message, kMaxInheritedMessage);
                 row = i < results.size() ? RowRecord{results[i]}
-                                         : unrenderedRow(p.rows[i], bad->status, bad->message);
+                                         : unrenderedRow(p.rows[i], bad->status, message);
                 row.result.status = bad->status;
-                row.result.message = bad->message;
+                row.result.message = message;
             }
             score(row, p.rows[i]);
             st.rows.push_back(std::move(row));
@@ -223,8 +229,8 @@ json recordJson(const StudentRecord& r) {
         json rows = json::array();
         for (const RowRecord& row : st.rows) {
             json j = checkJson(row.result);
-            j["points"] = row.points;
-            j["max_points"] = row.maxPoints;
+            j["points"] = rounded(row.points);
+            j["max_points"] = rounded(row.maxPoints);
             j["visibility"] = row.visibility;
             j["extra_view"] = row.extraView;
             rows.push_back(std::move(j));
@@ -263,7 +269,9 @@ json recordJson(const StudentRecord& r) {
               {"skipped", c.skipped},
               {"missing", c.missing},
               {"errors", c.errors},
-              {"not_graded", c.notGraded}}},
+              {"not_graded", c.notGraded},
+              {"exit_code", r.exitCode()},
+              {"seconds", r.seconds}}},
             {"stages", stages}};
 }
 

@@ -103,7 +103,10 @@ std::string rowOutput(const RowRecord& row) {
             out << " " << name << " " << figureText(value);
         out << "\n";
     }
-    if (!r.diffFile.empty())
+    // Its file name only: the grader's folders are nobody else's business.
+    if (r.diffFile.empty())
+        out << "diff image: none\n";
+    else
         out << "diff image: " << r.diffFile.substr(r.diffFile.find_last_of('/') + 1)
             << " (red: false shadow, blue: false lit, grey: agreement)\n";
     if (!r.note.empty()) out << "note: " << r.note << "\n";
@@ -112,7 +115,7 @@ std::string rowOutput(const RowRecord& row) {
 
 std::string tableHeader() {
     return "stage/tree/view lesson                    false-shadow %  false-lit %  band fs/fl %   "
-           "edge mean/p95 px  mirror id % / dB  verdict    points  message\n";
+           "edge mean/p95 px  mirror id % / dB  points  verdict\n";
 }
 
 std::string tableLine(const RowRecord& row) {
@@ -123,8 +126,8 @@ std::string tableLine(const RowRecord& row) {
            fixed(a.falseLitPct, 9, 2) + "    " + fixed(a.falseShadowBandPct, 6, 1) + "/" +
            padded(fixed(a.falseLitBandPct, 5, 1), 6) + "  " + fixed(a.edgeMeanPx, 6, 2) + "/" +
            padded(fixed(a.edgeP95Px, 5, 1), 8) + "  " + fixed(a.mirrorIdPct, 7, 2) + "/" +
-           padded(fixed(a.mirrorPsnrDb, 5, 1), 6) + "   " + padded(r.verdict(), 10) +
-           padded(pts, 8) + r.message + "\n";
+           padded(fixed(a.mirrorPsnrDb, 5, 1), 6) + "   " + padded(pts, 8) +
+           padded(r.verdict(), 6) + r.message + "\n";
 }
 
 std::string stageSummary(const StudentRecord& r) {
@@ -164,7 +167,7 @@ nlohmann::json gradescopeResults(const StudentRecord& r) {
             for (const auto& [name, value] : c.figureMap())
                 figures[name] = std::isnan(value) ? nlohmann::json() : nlohmann::json(value);
             tests.push_back(
-                {{"name", rowName(row) + (c.lesson.empty() ? "" : " [" + c.lesson + "]")},
+                {{"name", rowName(row)},
                  {"number", std::to_string(number) + "." + std::to_string(++sub)},
                  {"score", row.points},
                  {"max_score", row.maxPoints},
@@ -254,7 +257,7 @@ std::string junitXml(const StudentRecord& r) {
             ++tests;
             cases << "    <testcase classname=\"shadowlab." << xmlEscaped(st.stage + "/" + st.tree)
                   << "\" name=\""
-                  << xmlEscaped(rowName(row) + (c.lesson.empty() ? "" : " [" + c.lesson + "]"))
+                  << xmlEscaped(rowName(row))
                   << "\" time=\"" << seconds3(c.seconds) << "\">\n"
                   << "      <properties>\n        <property name=\"points\" value=\""
                   << points(row.points) << "\"/>\n        <property name=\"max_points\" value=\""
