@@ -278,6 +278,8 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         return r;
     }
     r.studentFiles = renderer.shaders().overlayFiles(r.stage);
+    if (const StageInfo* info = findStage(r.stage))
+        r.sourceNotes = cappedList(renderer.shaders().sourceNotes(r.stage, info->sourceRules));
     for (const std::string& n : renderer.shaders().unsetUniformNotes(r.stage))
         r.note += (r.note.empty() ? "" : "; ") + n;
     r.note = capped(r.note, kMaxRowMessage);
@@ -353,6 +355,7 @@ nlohmann::json checkJson(const CheckResult& r) {
         {"message", r.judgement.message},
         {"diff", r.diffFile.empty() ? nlohmann::json() : nlohmann::json(r.diffFile)},
         {"note", r.note.empty() ? nlohmann::json() : nlohmann::json(r.note)},
+        {"source_notes", r.sourceNotes},
         {"seconds", r.seconds},
         {"seed", r.seed ? nlohmann::json(*r.seed) : nlohmann::json()}};
 }
@@ -452,6 +455,8 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
             r.studentFiles = j["student_files"].get<std::vector<std::string>>();
         r.diffFile = textOrEmpty(j.at("diff"));
         if (j.contains("note")) r.note = textOrEmpty(j["note"]);
+        if (j.contains("source_notes"))
+            r.sourceNotes = j["source_notes"].get<std::vector<std::string>>();
         r.seconds = j.at("seconds").get<double>();
         if (j.contains("seed") && !j["seed"].is_null()) r.seed = j["seed"].get<std::uint64_t>();
         return r;
@@ -464,6 +469,7 @@ void boundResult(CheckResult& r) {
     r.judgement.message = capped(r.judgement.message, kMaxRowMessage);
     r.note = capped(r.note, kMaxRowMessage);
     r.studentFiles = cappedList(r.studentFiles);
+    r.sourceNotes = cappedList(r.sourceNotes);
 }
 
 }  // namespace sl
