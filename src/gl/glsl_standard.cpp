@@ -117,6 +117,7 @@ std::string fileOf(const GlslSource& src, int source) {
 // The #version a stage file declares (110 when none, as GLSL says), its profile word and the
 // line it is on. Comments and blank lines may come before it.
 struct Declared {
+    bool declared = false;
     int version = 110;
     std::string profile;
     int line = 1;
@@ -148,6 +149,7 @@ Declared declaredVersion(const std::string& text) {
     std::string directive = text.substr(i, text.find('\n', i) - i);  // its line alone
     if (i < n && text[i] == '#' &&
         std::sscanf(directive.c_str(), "# version %d %15[a-z]", &version, profile) >= 1) {
+        d.declared = true;
         d.version = version;
         d.profile = profile;
         d.line = line;
@@ -157,20 +159,21 @@ Declared declaredVersion(const std::string& text) {
 
 // What the tree's context guarantees (src/platform: legacy OpenGL 2.1 compatibility under
 // OSMesa, core OpenGL 3.3): a version beyond it works on one driver and not on another.
-void requireTreeVersion(GlslTree tree, const GlslSource& src, const Declared& d) {
+// "" when `d` is one of them, else the error line.
+std::string treeVersionError(GlslTree tree, const GlslSource& src, const Declared& d) {
     bool core = tree == GlslTree::Core;
     bool ok = core ? (d.version == 140 || d.version == 150 || d.version == 330) &&
                          (d.profile.empty() || d.profile == "core")
                    : d.version == 110 || d.version == 120;
-    if (ok) return;
-    std::string declared =
-        "#version " + std::to_string(d.version) + (d.profile.empty() ? "" : " " + d.profile);
-    throw ShaderError(
-        fileOf(src, 0) + ":" + std::to_string(d.line) + ": error: " + declared +
-        (core ? " is not one an OpenGL 3.3 core context guarantees (#version 140, 150 or 330 "
-                "core); the core tree's shaders declare #version 330 core"
-              : " is not one the legacy tree's OpenGL 2.1 context guarantees (#version 110 "
-                "or 120); the legacy tree's shaders declare #version 120"));
+    if (ok) return {};
+    std::string declared = d.declared ? "#version " + std::to_string(d.version) +
+                                            (d.profile.empty() ? "" : " " + d.profile)
+                                      : "no #version (GLSL 1.10 then)";
+    return fileOf(src, 0) + ":" + std::to_string(d.line) + ": error: " + declared +
+           (core ? ": an OpenGL 3.3 core context guarantees #version 140, 150 or 330 core "
+                   "only; the core tree's shaders declare #version 330 core"
+                 : ": the legacy tree's OpenGL 2.1 context guarantees #version 110 or 120 "
+                   "only; the legacy tree's shaders declare #version 120");
 }
 
 // glslang's "ERROR: S:L: msg" lines as "FILE:L: error: msg" (summary lines dropped).
@@ -210,8 +213,11 @@ struct ParsedStage {
 
 ParsedStage parseStage(EShLanguage language, const char* kind, const GlslSource& src,
                        GlslTree tree) {
+    const std::string header =
+        fileOf(src, 0) + ": " + kind + " shader did not compile " + kByGlslang + ":\n";
     Declared declared = declaredVersion(src.text);
-    requireTreeVersion(tree, src, declared);
+    std::string versionError = treeVersionError(tree, src, declared);
+    if (!versionError.empty()) throw ShaderError(header + versionError + "\n");
     ParsedStage p;
     p.version = declared.version;
     p.shader = std::make_unique<glslang::TShader>(language);
@@ -225,8 +231,7 @@ ParsedStage parseStage(EShLanguage language, const char* kind, const GlslSource&
     if (!ok) {
         std::vector<std::string> errors = mappedErrors(log, src);
         if (errors.empty()) errors.push_back(fileOf(src, 0) + ": error: glslang refused it");
-        throw ShaderError(fileOf(src, 0) + ": " + kind + " shader did not compile " + kByGlslang +
-                          ":\n" + joined(errors));
+        throw ShaderError(header + joined(errors));
     }
     // The printed tree: its lines begin with a location ("0:12", "1:?").
     std::istringstream in(printed);

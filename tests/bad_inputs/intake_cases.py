@@ -141,8 +141,11 @@ def intake_cases(h):
         Case("a link error names both files in the report", 2, "program did not link",
              SMALL_CHECK + " --report {tmp}/report.json", timeout=30, one_line=False,
              setup=link_mismatch(h),
-             check=report_message_names("shaders_core/margin/lit.vert + ",
-                                        "student/margin/lit.frag: program did not link: ")),
+             check=report_message_names(
+                 "shaders_core/margin/lit.vert + ",
+                 "student/margin/lit.frag: program did not link by the GLSL standard (glslang",
+                 "student/margin/lit.frag:7: error: Linking vertex and fragment stages: Types "
+                 "must match")),
         Case("an include that is a hard link to the secret (check)", 2, "has 2 hard links",
              SMALL_CHECK + " --report {tmp}/report.json", timeout=30, one_line=False,
              check=h.no_secret,
