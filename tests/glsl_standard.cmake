@@ -6,3 +6,10 @@ add_test(NAME glsl_standard_corpus
          COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/glsl_standard/run_standard.py
                  $<TARGET_FILE:shadowlab> ${CMAKE_BINARY_DIR}/glsl-standard-ci)
 set_tests_properties(glsl_standard_corpus PROPERTIES LABELS "check;glsl" TIMEOUT 900)
+
+# Source rules end to end: the report's rows carry `source_notes` (a camera-recognising shader,
+# a constant margin; none for a correct submission).
+add_test(NAME glsl_source_notes
+         COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/glsl_standard/source_notes.py
+                 $<TARGET_FILE:shadowlab> ${CMAKE_BINARY_DIR}/glsl-source-notes-ci)
+set_tests_properties(glsl_source_notes PROPERTIES LABELS "check;glsl" TIMEOUT 900)

@@ -11,16 +11,12 @@
 #include "gl/glsl_standard.h"
 #include "gl/shader_library.h"
 #include "gl/source_rules.h"
+#include "render/request.h"
 
 namespace fs = std::filesystem;
 using namespace sl;
 
 namespace {
-
-std::string treeRoot(GlslTree tree) {
-    return std::string(SHADOWLAB_SOURCE_DIR) +
-           (tree == GlslTree::Core ? "/shaders_core" : "/shaders_legacy");
-}
 
 // A student's overlay in a fresh temporary folder, removed at the end of the test.
 class Overlay {
@@ -44,7 +40,7 @@ class Overlay {
 // The message of the ShaderError that checking stage/pass throws ("" when it passes).
 std::string refusal(GlslTree tree, const Overlay& overlay, const std::string& stage,
                     const std::string& pass) {
-    ShaderLibrary lib(tree, treeRoot(tree), overlay.dir());
+    ShaderLibrary lib(tree, shaderTreeRoot(tree), overlay.dir());
     try {
         lib.standardProgram(stage, pass);
     } catch (const ShaderError& e) {
@@ -79,9 +75,9 @@ std::string legacyFrag(const std::string& body, const std::string& declarations 
 
 TEST(GlslStandard, ShippedTreesValidateClean) {
     for (GlslTree tree : {GlslTree::Core, GlslTree::Legacy}) {
-        ShaderLibrary lib(tree, treeRoot(tree), "");
+        ShaderLibrary lib(tree, shaderTreeRoot(tree), "");
         int programs = 0;
-        for (const auto& folder : fs::directory_iterator(treeRoot(tree))) {
+        for (const auto& folder : fs::directory_iterator(shaderTreeRoot(tree))) {
             for (const auto& file : fs::directory_iterator(folder.path())) {
                 if (file.path().extension() != ".vert") continue;
                 fs::path frag = file.path();

@@ -10,17 +10,13 @@
 
 #include "gl/shader_library.h"
 #include "gl/source_rules.h"
+#include "render/request.h"
 #include "render/stage_interface.h"
 
 namespace fs = std::filesystem;
 using namespace sl;
 
 namespace {
-
-std::string treeRoot(GlslTree tree) {
-    return std::string(SHADOWLAB_SOURCE_DIR) +
-           (tree == GlslTree::Core ? "/shaders_core" : "/shaders_legacy");
-}
 
 const std::vector<SourceRule>& rulesOf(const std::string& stage) {
     const StageInfo* info = findStage(stage);
@@ -32,7 +28,7 @@ const std::vector<SourceRule>& rulesOf(const std::string& stage) {
 // The findings of `stage`'s rules on its pass `pass`, built from `overlay` over our tree.
 std::vector<std::string> findings(GlslTree tree, const std::string& overlay,
                                   const std::string& stage, const std::string& pass) {
-    ShaderLibrary lib(tree, treeRoot(tree), overlay);
+    ShaderLibrary lib(tree, shaderTreeRoot(tree), overlay);
     return sourceFindings(rulesOf(stage), lib.standardProgram(stage, pass));
 }
 
@@ -49,7 +45,7 @@ class Overlay {
         char name[] = "/tmp/sl-rules-XXXXXX";
         dir_ = ::mkdtemp(name);
         for (const std::string& folder : {stage, std::string("common")})
-            fs::copy(treeRoot(tree) + "/" + folder, dir_ + "/" + folder,
+            fs::copy(shaderTreeRoot(tree) + "/" + folder, dir_ + "/" + folder,
                      fs::copy_options::recursive);
     }
     ~Overlay() { fs::remove_all(dir_); }
@@ -77,8 +73,8 @@ TEST(SourceRules, ShippedShadersHaveNoFinding) {
         if (info.sourceRules.empty()) continue;
         for (GlslTree tree : {GlslTree::Core, GlslTree::Legacy}) {
             // Our own tree as the overlay: every file counts as the student's.
-            ShaderLibrary lib(tree, treeRoot(tree), treeRoot(tree));
-            for (const auto& file : fs::directory_iterator(treeRoot(tree) + "/" + info.id)) {
+            ShaderLibrary lib(tree, shaderTreeRoot(tree), shaderTreeRoot(tree));
+            for (const auto& file : fs::directory_iterator(shaderTreeRoot(tree) + "/" + info.id)) {
                 if (file.path().extension() != ".vert") continue;
                 ProgramSource program = lib.standardProgram(info.id, file.path().stem());
                 std::vector<std::string> found = sourceFindings(info.sourceRules, program);
@@ -180,7 +176,7 @@ TEST(SourceRules, ScreenPlaceNotDepthAndThroughAVarying) {
 TEST(SourceRules, OnlyTheStudentsFilesAreRead) {
     std::string overlay =
         std::string(SHADOWLAB_SOURCE_DIR) + "/tests/students/depth_game_known_eyes";
-    ShaderLibrary lib(GlslTree::Core, treeRoot(GlslTree::Core), overlay);
+    ShaderLibrary lib(GlslTree::Core, shaderTreeRoot(GlslTree::Core), overlay);
     ProgramSource program = lib.standardProgram("depth", "lit");
     program.students = [](const std::string&) { return false; };
     EXPECT_TRUE(sourceFindings(rulesOf("depth"), program).empty());
