@@ -28,7 +28,9 @@ common=(cmake g++ make pkg-config python3 python3-glad libx11-dev libegl-dev lib
 # The course cycle: libarchive unpacks students' zips (safely: src/course/archive.h); glslang,
 # Khronos' reference GLSL compiler, decides what a shader may say on every driver alike
 # (src/gl/glsl_standard.h; glslang 11 on Ubuntu 22.04 .. 16 on Debian testing: cmake/glslang.cmake).
-course=(libarchive-dev glslang-dev)
+# glslang-tools too: Debian testing's glslang CMake package names its /usr/bin/glslang and stops
+# the configure step where that file is missing (glslang-dev 16.6 does not pull it in).
+course=(libarchive-dev glslang-dev glslang-tools)
 case "$ID:${VERSION_ID:-}" in
   debian:12)
     system="Debian 12"

@@ -500,7 +500,10 @@ std::vector<std::string> ShaderLibrary::sourceNotes(const std::string& stage,
     if (overlay_.empty() || rules.empty()) return notes;
     for (const auto& [key, entry] : programs_) {
         if (key.rfind(stage + "/", 0) != 0) continue;
-        for (std::string& n : sourceFindings(rules, *entry.source))
+        auto cached = entry.findings.find(&rules);
+        if (cached == entry.findings.end())
+            cached = entry.findings.emplace(&rules, sourceFindings(rules, *entry.source)).first;
+        for (std::string n : cached->second)
             if (std::find(notes.begin(), notes.end(), n) == notes.end())
                 notes.push_back(std::move(n));
     }

@@ -74,7 +74,8 @@ class ShaderLibrary {
     std::string resolve(const std::string& relative) const;  // find(relative).shown
 
     // What `rules` find in the student's files of the programs of `stage` built so far
-    // (gl/source_rules.h), each finding once.
+    // (gl/source_rules.h), each finding once. Kept per program and by the rules' address: pass
+    // the stage's own (StageInfo::sourceRules), which live as long as the program.
     std::vector<std::string> sourceNotes(const std::string& stage,
                                          const std::vector<SourceRule>& rules) const;
 
@@ -89,6 +90,9 @@ class ShaderLibrary {
         std::vector<std::string> files;  // every file read, for change detection
         std::vector<long long> stamps;
         std::shared_ptr<const ProgramSource> source;  // what the source rules read
+        // sourceNotes' findings by the rules asked (a stage's rules live as long as the program):
+        // every row of a stage asks again.
+        mutable std::map<const void*, std::vector<std::string>> findings;
     };
     Entry build(const std::string& stage, const std::string& pass) const;
     // Expands the pass's two files into `vert` and `frag` and checks them by the standard.

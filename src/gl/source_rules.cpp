@@ -16,7 +16,11 @@ namespace {
 using Sources = std::set<std::string>;
 
 constexpr std::size_t kMaxFindings = 6;  // notes per rule and program
-constexpr int kMaxRounds = 64;           // the fixed point is reached long before
+constexpr int kMaxRounds = 16;           // the fixed point comes in two or three
+// Beyond these a program is not read (a note says so): a student's 1 MB shader must not make the
+// rules, which are no score, cost the row its time budget, nor recurse the stack away.
+constexpr std::size_t kMaxNodes = 100000;
+constexpr int kMaxDepth = 1000;
 
 bool startsWith(const std::string& s, const char* prefix) {
     return s.rfind(prefix, 0) == 0;
@@ -97,13 +101,14 @@ class StageFlow {
         return SyntaxTree::head(text.substr(std::string(prefix).size()));
     }
 
-    void collectAssigned(int i, std::string function) {
+    void collectAssigned(int i, std::string function, int depth = 0) {
+        if (depth >= kMaxDepth) return;
         const std::string& text = at(i).text;
         if (startsWith(text, "Function Definition: "))
             function = signature(text, "Function Definition: ");
         if (isAssignment(SyntaxTree::head(text)) && !at(i).children.empty())
             assigned_.insert(target(at(i).children[0], function));
-        for (int c : at(i).children) collectAssigned(c, function);
+        for (int c : at(i).children) collectAssigned(c, function, depth + 1);
     }
 
     void walkAll() {
@@ -145,6 +150,12 @@ class StageFlow {
     }
 
     Sources eval(int i, const std::string& function, const Sources& control) {
+        if (depth_ >= kMaxDepth) return {};
+        struct Deeper {
+            int& d;
+            explicit Deeper(int& depth) : d(++depth) {}
+            ~Deeper() { --d; }
+        } deeper(depth_);
         const SyntaxNode& n = at(i);
         const std::string head = SyntaxTree::head(n.text);
         std::string name, type;
@@ -241,6 +252,7 @@ class StageFlow {
     std::map<std::string, Sources> vars_, returns_;
     std::map<std::string, std::vector<std::string>> params_;
     bool recording_ = false;
+    int depth_ = 0;
     std::vector<Comparison> comparisons_;
 };
 
@@ -394,6 +406,18 @@ SourceRule SourceRule::constantComparison(std::vector<NameGroup> groups, std::st
 std::vector<std::string> sourceFindings(const std::vector<SourceRule>& rules,
                                         const ProgramSource& program) {
     std::vector<std::string> findings;
+    std::size_t lines = 0;
+    for (const std::string* tree : {&program.trees.vertex, &program.trees.fragment})
+        lines += std::size_t(std::count(tree->begin(), tree->end(), '\n'));
+    if (lines > kMaxNodes) {
+        if (!rules.empty())
+            findings.push_back("pass " + program.pass +
+                               ": source rules not read: glslang's tree of "
+                               "it has " +
+                               std::to_string(lines) + " nodes, more than " +
+                               std::to_string(kMaxNodes));
+        return findings;
+    }
     for (const SourceRule& rule : rules) {
         if (!rule.pass.empty() && rule.pass != program.pass) continue;
         if (rule.kind == SourceRule::Kind::ConstantComparison)
