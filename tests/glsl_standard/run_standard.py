@@ -12,6 +12,9 @@ import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from report_rows import rows  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 # case folder, stage, tree, the student's file, its line, glslang's words
@@ -30,17 +33,6 @@ CASES = [
 
 BY_GLSLANG = "by the GLSL standard (glslang, Khronos' reference compiler)"
 
-
-def rows(node):
-    """Every report row (a dict with a stage and a verdict), however the report nests them."""
-    if isinstance(node, dict):
-        if "stage" in node and "verdict" in node and "message" in node:
-            yield node
-        for value in node.values():
-            yield from rows(value)
-    elif isinstance(node, list):
-        for value in node:
-            yield from rows(value)
 
 
 def run(exe, args, report):

@@ -9,6 +9,9 @@ import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from report_rows import rows  # noqa: E402
+
 STUDENTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "students")
 
 # student case, stage, text every row's source_notes must hold ("" = none at all), exit code
@@ -19,6 +22,7 @@ CASES = [
      "the shadow comparison does not depend on the normal or the light direction", 1),
     ("rgb_correct_core", "rgb", "", 0),
 ]
+
 
 
 def main():
@@ -32,17 +36,17 @@ def main():
                             report], capture_output=True, text=True, timeout=600)
         problems = [] if p.returncode == code else [f"exit {p.returncode}, not {code}"]
         with open(report) as f:
-            rows = [r for r in json.load(f)["results"] if r["stage"] == stage]
-        if not rows:
+            mine = [r for r in rows(json.load(f)) if r["stage"] == stage]
+        if not mine:
             problems.append("no row of the stage")
-        for r in rows:
+        for r in mine:
             notes = r.get("source_notes")
             if not isinstance(notes, list):
-                problems.append(f"{r['name']}: source_notes is {notes!r}, not a list")
+                problems.append(f"{r.get('name')}: source_notes is {notes!r}, not a list")
             elif text and not any(text in n and shaders in n for n in notes):
-                problems.append(f"{r['name']}: no source note says '{text}': {notes}")
+                problems.append(f"{r.get('name')}: no source note says '{text}': {notes}")
             elif not text and notes:
-                problems.append(f"{r['name']}: notes for a correct submission: {notes}")
+                problems.append(f"{r.get('name')}: notes for a correct submission: {notes}")
         print(("FAIL " if problems else "ok   ") + name)
         for pr in problems[:5]:
             print("    " + pr)
