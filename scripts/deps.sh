@@ -25,8 +25,12 @@ ID="" VERSION_ID="" VERSION_CODENAME="" PRETTY_NAME=""
 common=(cmake g++ make pkg-config python3 python3-glad libx11-dev libegl-dev libglm-dev
         libcli11-dev nlohmann-json3-dev libstb-dev libgtest-dev xvfb xauth xdotool gnuplot-nox
         libegl-mesa0 libglx-mesa0 libgl1-mesa-dri)
-# The course cycle: libarchive unpacks students' zips (safely: src/course/archive.h).
-course=(libarchive-dev)
+# The course cycle: libarchive unpacks students' zips (safely: src/course/archive.h); glslang,
+# Khronos' reference GLSL compiler, decides what a shader may say on every driver alike
+# (src/gl/glsl_standard.h; glslang 11 on Ubuntu 22.04 .. 16 on Debian testing: cmake/glslang.cmake).
+# glslang-tools too: Debian testing's glslang CMake package names its /usr/bin/glslang and stops
+# the configure step where that file is missing (glslang-dev 16.6 does not pull it in).
+course=(libarchive-dev glslang-dev glslang-tools)
 case "$ID:${VERSION_ID:-}" in
   debian:12)
     system="Debian 12"
@@ -52,7 +56,7 @@ case "$ID:${VERSION_ID:-}" in
     echo "deps: ${PRETTY_NAME:-this system} is not one deps.sh knows (Debian 12, 13, testing;" \
          "Ubuntu 22.04, 24.04). Install by hand: CMake >= 3.20, a C++17 compiler, pkg-config," \
          "python3 with glad (python3-glad), GLM, CLI11, nlohmann-json, stb, GoogleTest, freeglut," \
-         "X11, EGL with Mesa's llvmpipe (OSMesa optional), Xvfb, xauth, xdotool, gnuplot;" \
+         "X11, EGL with Mesa's llvmpipe (OSMesa optional), glslang, Xvfb, xauth, xdotool, gnuplot;" \
          "for scripts/test.sh also clang with libFuzzer and valgrind." >&2
     exit 1 ;;
 esac

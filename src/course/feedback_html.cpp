@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "io/files.h"
@@ -271,7 +272,26 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
         h << "<tr><td>" << esc(stages[i]) << "</td><td class=\"msg\">"
           << (count ? esc(best) : "none") << "</td><td>" << count << "</td></tr>\n";
     }
-    h << "</table>\n</body></html>\n";
+    h << "</table>\n";
+    // The source rules' findings (possible gaming, a method not written): for the instructor,
+    // never a score by themselves, never on a student's page.
+    std::ostringstream notes;
+    for (std::size_t k = 0; k < records.size(); ++k)
+        for (const StageRecord& st : records[k].stages) {
+            std::set<std::string> seen;
+            for (const RowRecord& row : st.rows)
+                for (const std::string& n : row.result.sourceNotes)
+                    if (seen.insert(n).second)
+                        notes << "<tr><td><a href=\"" << esc(pages[k]) << "\">"
+                              << esc(records[k].student) << "</a></td><td>"
+                              << esc(st.stage + "/" + st.tree) << "</td><td class=\"msg\">"
+                              << esc(n) << "</td></tr>\n";
+        }
+    if (!notes.str().empty())
+        h << "<h2>Notes from the source rules (for the instructor: not a score)</h2>\n"
+             "<table><tr><th>student</th><th>stage</th><th>note</th></tr>\n"
+          << notes.str() << "</table>\n";
+    h << "</body></html>\n";
     return h.str();
 }
 

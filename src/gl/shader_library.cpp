@@ -10,6 +10,8 @@
 #include <set>
 #include <sstream>
 
+#include "gl/glsl_standard.h"
+#include "gl/source_rules.h"
 #include "io/files.h"
 
 namespace sl {
@@ -121,9 +123,7 @@ bool inside(const std::string& path, const std::string& folder) {
 }
 
 // Source text with includes expanded; files[k] is the file behind source-string number k.
-struct Expanded {
-    std::string text;
-    std::vector<std::string> files;
+struct Expanded : GlslSource {
     int includes = 0;
 };
 
@@ -372,11 +372,31 @@ std::string ShaderLibrary::resolve(const std::string& relative) const {
     return find(relative).shown;
 }
 
-ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::string& pass) const {
+ProgramSource ShaderLibrary::checkedSource(const std::string& stage, const std::string& pass,
+                                           GlslSource& vert, GlslSource& frag) const {
     Preprocessor pre(*this, tree_);
+    Expanded v, f;
+    pre.expand(stage + "/" + pass + ".vert", v, 0, "");
+    pre.expand(stage + "/" + pass + ".frag", f, 0, "");
+    vert = std::move(v);
+    frag = std::move(f);
+    // The standard first (glslang): what it forbids is an error whatever this driver accepts.
+    StageTrees trees = requireStandardGlsl(tree_, vert, frag);
+    std::string overlay = overlay_;
+    return {pass, std::move(trees), vert.files, frag.files, [overlay](const std::string& file) {
+                return !overlay.empty() && file.rfind(overlay + "/", 0) == 0;
+            }};
+}
+
+ProgramSource ShaderLibrary::standardProgram(const std::string& stage,
+                                             const std::string& pass) const {
+    GlslSource vert, frag;
+    return checkedSource(stage, pass, vert, frag);
+}
+
+ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::string& pass) const {
     Expanded vert, frag;
-    pre.expand(stage + "/" + pass + ".vert", vert, 0, "");
-    pre.expand(stage + "/" + pass + ".frag", frag, 0, "");
+    auto source = std::make_shared<const ProgramSource>(checkedSource(stage, pass, vert, frag));
     VertexShader vs = compile<VertexShader>(vert, "vertex");
     FragmentShader fs = compile<FragmentShader>(frag, "fragment");
 
@@ -420,6 +440,7 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     e.program.setOrigin(files);
     e.files = vert.files;
     e.files.insert(e.files.end(), frag.files.begin(), frag.files.end());
+    e.source = std::move(source);
     // Any file read from the overlay (a pass file or an include) makes it the student's program.
     e.program.setStudentFiles(studentNames(e.files));
     // Each file of ours the overlay could replace is watched at its overlay name too (missing
@@ -469,6 +490,22 @@ std::vector<std::string> ShaderLibrary::unsetUniformNotes(const std::string& sta
             notes.push_back("pass " + key + " (your shader) uses uniform '" + printableName(u) +
                             "', which the stage never sets in that pass: it keeps its initial "
                             "value (0 unless the shader gives one)");
+    }
+    return notes;
+}
+
+std::vector<std::string> ShaderLibrary::sourceNotes(const std::string& stage,
+                                                    const std::vector<SourceRule>& rules) const {
+    std::vector<std::string> notes;
+    if (overlay_.empty() || rules.empty()) return notes;
+    for (const auto& [key, entry] : programs_) {
+        if (key.rfind(stage + "/", 0) != 0) continue;
+        auto cached = entry.findings.find(&rules);
+        if (cached == entry.findings.end())
+            cached = entry.findings.emplace(&rules, sourceFindings(rules, *entry.source)).first;
+        for (std::string n : cached->second)
+            if (std::find(notes.begin(), notes.end(), n) == notes.end())
+                notes.push_back(std::move(n));
     }
     return notes;
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,10 @@
 #include "gl/program.h"
 
 namespace sl {
+
+struct SourceRule;     // gl/source_rules.h
+struct ProgramSource;  // gl/source_rules.h
+struct GlslSource;     // gl/glsl_standard.h
 
 enum class GlslTree { Core, Legacy };
 const char* treeName(GlslTree t);  // "core" | "legacy"
@@ -68,13 +73,31 @@ class ShaderLibrary {
     std::vector<std::string> unsetUniformNotes(const std::string& stage);
     std::string resolve(const std::string& relative) const;  // find(relative).shown
 
+    // What `rules` find in the student's files of the programs of `stage` built so far
+    // (gl/source_rules.h), each finding once. Kept per program and by the rules' address: pass
+    // the stage's own (StageInfo::sourceRules), which live as long as the program.
+    std::vector<std::string> sourceNotes(const std::string& stage,
+                                         const std::vector<SourceRule>& rules) const;
+
+    // The stage/pass program checked by the standard alone (gl/glsl_standard.h), no GL context
+    // needed: glslang's syntax trees and files, as the source rules read them. Throws
+    // ShaderError as program() would.
+    ProgramSource standardProgram(const std::string& stage, const std::string& pass) const;
+
   private:
     struct Entry {
         Program program;
         std::vector<std::string> files;  // every file read, for change detection
         std::vector<long long> stamps;
+        std::shared_ptr<const ProgramSource> source;  // what the source rules read
+        // sourceNotes' findings by the rules asked (a stage's rules live as long as the program):
+        // every row of a stage asks again.
+        mutable std::map<const void*, std::vector<std::string>> findings;
     };
     Entry build(const std::string& stage, const std::string& pass) const;
+    // Expands the pass's two files into `vert` and `frag` and checks them by the standard.
+    ProgramSource checkedSource(const std::string& stage, const std::string& pass, GlslSource& vert,
+                                GlslSource& frag) const;
 
     GlslTree tree_;
     std::string root_;

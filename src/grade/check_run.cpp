@@ -242,6 +242,8 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         return r;
     }
     r.studentFiles = renderer.shaders().overlayFiles(r.stage);
+    if (const StageInfo* info = findStage(r.stage))
+        r.sourceNotes = cappedList(renderer.shaders().sourceNotes(r.stage, info->sourceRules));
     for (const std::string& n : renderer.shaders().unsetUniformNotes(r.stage))
         r.note += (r.note.empty() ? "" : "; ") + n;
     r.note = capped(r.note, kMaxRowMessage);
@@ -302,6 +304,7 @@ nlohmann::json checkJson(const CheckResult& r) {
         {"message", r.message},
         {"diff", r.diffFile.empty() ? nlohmann::json() : nlohmann::json(r.diffFile)},
         {"note", r.note.empty() ? nlohmann::json() : nlohmann::json(r.note)},
+        {"source_notes", r.sourceNotes},
         {"seconds", r.seconds},
         {"seed", r.seed ? nlohmann::json(*r.seed) : nlohmann::json()}};
 }
@@ -390,6 +393,8 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
             r.studentFiles = j["student_files"].get<std::vector<std::string>>();
         r.diffFile = textOrEmpty(j.at("diff"));
         if (j.contains("note")) r.note = textOrEmpty(j["note"]);
+        if (j.contains("source_notes"))
+            r.sourceNotes = j["source_notes"].get<std::vector<std::string>>();
         r.seconds = j.at("seconds").get<double>();
         if (j.contains("seed") && !j["seed"].is_null()) r.seed = j["seed"].get<std::uint64_t>();
         return r;
@@ -402,6 +407,7 @@ void boundResult(CheckResult& r) {
     r.message = capped(r.message, kMaxRowMessage);
     r.note = capped(r.note, kMaxRowMessage);
     r.studentFiles = cappedList(r.studentFiles);
+    r.sourceNotes = cappedList(r.sourceNotes);
 }
 
 }  // namespace sl

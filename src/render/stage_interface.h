@@ -11,6 +11,7 @@
 
 #include "gl/debug.h"
 #include "gl/shader_library.h"
+#include "gl/source_rules.h"
 #include "render/gpu_scene.h"
 #include "render/stage_params.h"
 
@@ -74,6 +75,9 @@ struct StageInfo {
     // `check` finds "dark without a caster" against it. Empty: the stage's own all-lit render
     // (the fixed-function stage, whose lighting no shader of ours reproduces).
     std::string unshadowedStage = "phong";
+    // What the student's shaders of this stage must or must not say, read from glslang's syntax
+    // tree (gl/source_rules.h): a finding is a note on the row for the instructor, not a score.
+    std::vector<SourceRule> sourceRules;
     std::function<std::unique_ptr<Stage>()> create;
 };
 

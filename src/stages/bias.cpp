@@ -39,6 +39,7 @@ StageInfo biasStage() {
     s.params.push_back(ParamSpec::number("margin", 0.01, 0.0, 0.1, 0.001,
                                          "added to the stored depth before comparing"));
     s.views = shadowViews();
+    s.sourceRules = {gamingRule()};
     s.create = [] { return std::make_unique<BiasStage>(); };
     return s;
 }

@@ -34,6 +34,7 @@ StageInfo depthStage() {
     s.params.push_back(ParamSpec::number("margin", 0.01, 0.0, 0.1, 0.001,
                                          "added to the stored depth before comparing"));
     s.views = shadowViews();
+    s.sourceRules = {gamingRule()};
     s.create = [] { return std::make_unique<DepthStage>(); };
     return s;
 }

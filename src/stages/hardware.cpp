@@ -57,6 +57,7 @@ StageInfo hardwareStage() {
         "back: skip closed casters' faces turned away from the light (same map, half the "
         "fragments); none: draw both sides; front: draw only casters' back faces into the map"));
     s.views = shadowViews();
+    s.sourceRules = {gamingRule()};
     s.create = [] { return std::make_unique<HardwareStage>(); };
     return s;
 }

@@ -46,6 +46,16 @@ StageInfo marginStage() {
     s.params.push_back(ParamSpec::choice("storage", {"rgb8", "depth16", "depth24", "depth32f"},
                                          "what the map stores depth in"));
     s.views = shadowViews();
+    // The slope kind's margin grows with the angle between N and L: the value the shadow test
+    // adds must depend on both (a constant margin passes the pictures of some views).
+    s.sourceRules = {
+        gamingRule(),
+        SourceRule::comparisonDependsOn(
+            "lit", "shadowMap",
+            {{"the normal", {"normal", "gl_Normal"}},
+             {"the light direction", {"lightPosition", "gl_LightSource"}}},
+            "the slope-scaled margin (margin-kind=slope) must grow with the angle between the "
+            "normal and the light direction")};
     s.create = [] { return std::make_unique<MarginStage>(); };
     return s;
 }

@@ -15,6 +15,7 @@
 #include "render/scene_pass.h"
 #include "render/shadow_map.h"
 #include "scene/mesh.h"
+#include "stages/shadow_stage.h"
 
 namespace sl {
 
@@ -408,6 +409,7 @@ StageInfo mirrorStage() {
     s.needsMirror = true;
     // shadow-map here means the render-to-texture target: the mirror texture, full screen.
     s.views = {ViewMode::Final, ViewMode::ShadowMap};
+    s.sourceRules = {gamingRule()};
     s.create = [] { return std::make_unique<MirrorStage>(); };
     return s;
 }

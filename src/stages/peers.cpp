@@ -64,6 +64,7 @@ StageInfo peersStage() {
     s.params.push_back(ParamSpec::number("min-offset", 0.5, 0.0, 10.0, 0.25,
                                          "normal-offset: texels along N where N.L = 1"));
     s.views = shadowViews();
+    s.sourceRules = {gamingRule()};
     s.create = [] { return std::make_unique<PeersStage>(); };
     return s;
 }

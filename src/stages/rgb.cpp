@@ -40,6 +40,7 @@ StageInfo rgbStage() {
     s.params.push_back(ParamSpec::number("margin", 0.0, 0.0, 0.1, 0.001,
                                          "added to the stored depth before comparing"));
     s.views = shadowViews();
+    s.sourceRules = {gamingRule()};
     s.create = [] { return std::make_unique<RgbStage>(); };
     return s;
 }

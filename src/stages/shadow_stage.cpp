@@ -44,6 +44,16 @@ std::vector<ViewMode> shadowViews() {
             ViewMode::LightDepth};
 }
 
+SourceRule gamingRule() {
+    return SourceRule::constantComparison(
+        {{"the camera position", {"eyePosition"}},
+         {"the view matrix", {"view"}},
+         {"the light position", {"lightPosition"}},
+         {"the pixel's place on screen", {"gl_FragCoord"}}},
+        "a shader may recognise the graded camera, light or image size this way (a note for "
+        "the instructor, not a score)");
+}
+
 void ShadowStage::render(FrameContext& f) {
     settings_ = settings(f.params);
     Program& shadow = f.shaders.program(id_, "shadow");

@@ -13,6 +13,9 @@ std::vector<ParamSpec> commonShadowParams(const std::string& castersDefault);
 ShadowMapSettings commonShadowSettings(const ParamSet& p);
 // The views every shadow stage offers.
 std::vector<ViewMode> shadowViews();
+// The source rule every shadow stage and the mirror carry: a comparison of the camera, the
+// light or the pixel's place on screen against a constant is a way to recognise the graded views.
+SourceRule gamingRule();
 
 class ShadowStage : public Stage {
   public:

@@ -702,7 +702,7 @@ def hostile_cases():
              "{R} --shaders {student}", timeout=20,
              setup=student({"phong/lit.vert": shipped("phong/lit.vert").replace(
                  b"position", b"pos")})),
-        Case("#error with bytes that are not UTF-8", 2, "preprocessor error", CHECK + " --stage phong",
+        Case("#error with bytes that are not UTF-8", 2, "'#error' : bad", CHECK + " --stage phong",
              timeout=60, check=report_valid(("phong", "ERROR")),
              setup=student({lit: b"#version 330 core\n#error bad \xff\xfe\x1b[31m bytes\n"})),
         Case("a folder name that is not UTF-8", 2, "fragment shader did not compile",

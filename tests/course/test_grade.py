@@ -83,7 +83,8 @@ os.makedirs(shots)
 class_probe = pages.check_page(out + "/class.html", shots + "/class.png")
 print("class.html", class_probe)
 assert class_probe["broken"] == 0 and class_probe["overflowing"] == 0 and not class_probe["pageWider"]
-assert sorted(class_probe["links"]) == sorted("feedback/%s.html" % s for s in records), class_probe["links"]
+# Every student's page once in the grade table; the source rules' notes may link a page again.
+assert sorted(set(class_probe["links"])) == sorted("feedback/%s.html" % s for s in records), class_probe["links"]
 assert class_probe["screenshot"]["colours"] > 3
 for student in records:
     page = out + "/feedback/%s.html" % student

@@ -38,6 +38,9 @@ CheckResult judgedRgb() {
     r.message = "as expected: no acne";
     r.diffFile = "/tmp/diff/rgb-core.png";
     r.note = "a note";
+    r.sourceNotes = {
+        "possible gaming: /tmp/student/rgb/lit.frag:12 compares the camera "
+        "position (eyePosition) with a constant; ..."};
     r.seconds = 0.4375;
     return r;
 }
@@ -58,6 +61,8 @@ TEST(CheckJson, AJudgedResultRoundTrips) {
     EXPECT_TRUE(std::isnan(back.figures.mirrorPsnrDb));
     EXPECT_EQ(back.figures.falseLitPct, r.figures.falseLitPct);
     EXPECT_EQ(back.note, "a note");
+    EXPECT_EQ(back.sourceNotes, r.sourceNotes);
+    EXPECT_EQ(j["source_notes"].size(), 1u);
     // Through text as well, as it crosses the pipe.
     EXPECT_EQ(checkJson(checkResultFromJson(nlohmann::json::parse(j.dump()))), j);
 }
