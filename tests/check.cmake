@@ -161,28 +161,31 @@ set_tests_properties(check_floor_edge_strip PROPERTIES LABELS check TIMEOUT 300)
 # margin only when eyePosition is one of the grader's fixed cameras passes every fixed row and
 # fails the displaced one, whose camera the seed moves (acne, false shadow about 50 %), for each
 # of four seeds, and under `check --assignment` too. A margin shader that never writes the slope
-# branch passes every lesson but the slope one (false shadow 0.62 % against 0.1 %; ours 0.004 %).
+# branch passes every lesson but the slope one (false shadow 0.62 % against 0.25 %; ours 0.004 %).
 add_test(NAME check_game_known_eyes
          COMMAND python3 ${SL_CHECK_PY}/measurement_cases.py known-eyes ${SL_EXE} ${SL_CHECK_DIR}/known-eyes 3 17 101 4242)
-set_tests_properties(check_game_known_eyes PROPERTIES LABELS check TIMEOUT 600)
+set_tests_properties(check_game_known_eyes PROPERTIES LABELS check TIMEOUT 1500)
 add_test(NAME check_game_known_eyes_assignment
          COMMAND ${SL_EXPECT} --exit 1
                  --output "margin/core/displaced margin +FAIL +0[.]00/[0-9.]+ .*false_shadow_pct [0-9.]+ not <= 1"
                  --output "margin/core/lecture margin +PASS"
                  --absent "margin/core/(lecture|cube-on-cube|sphere-on-cube|cube-on-sphere|grazing) margin +FAIL"
                  -- ${SL_EXE} check --assignment ${SL_CHECK_PY}/margin_assignment.json
-                    --shaders ${CMAKE_CURRENT_SOURCE_DIR}/students/margin_game_known_eyes --seed 5)
-set_tests_properties(check_game_known_eyes_assignment PROPERTIES LABELS check TIMEOUT 300)
+                    --shaders ${CMAKE_CURRENT_SOURCE_DIR}/students/margin_game_known_eyes --seed 5
+                    --time-limit 300)
+set_tests_properties(check_game_known_eyes_assignment PROPERTIES LABELS check TIMEOUT 600)
 add_test(NAME check_constant_margin_slope_lesson
          COMMAND python3 ${SL_CHECK_PY}/measurement_cases.py constant-slope ${SL_EXE} ${SL_CHECK_DIR}/constant-slope)
-set_tests_properties(check_constant_margin_slope_lesson PROPERTIES LABELS check TIMEOUT 300)
+set_tests_properties(check_constant_margin_slope_lesson PROPERTIES LABELS check TIMEOUT 900)
 
 # Correct shaders pass the displaced view whatever the seed: one correct case of the corpus per
-# shadow stage (both trees among them) and our own hardware and peers, five seeds each.
+# shadow stage (both trees among them) and our own peers, five seeds each. These measurement
+# tests give check --time-limit 300: the figures are the point, and at load 20 on 2 cores a
+# stage's rows ran past the default 30 s.
 add_test(NAME check_displaced_seeds
          COMMAND python3 ${SL_CHECK_PY}/displaced_seeds.py ${SL_EXE} ${SL_CHECK_DIR}/displaced-seeds
                  --seeds 201-205 --case rgb_correct_legacy --case depth_textureproj --case bias_correct_core
-                 --case margin_slope_inv_cos --case hw_pcf3x3 --case ours:peers:core --jobs 2)
+                 --case margin_slope_inv_cos --case hw_pcf3x3 --case ours:peers:core --jobs 2 --time-limit 300)
 set_tests_properties(check_displaced_seeds PROPERTIES LABELS check TIMEOUT 1500)
 
 # Issue 27: every lesson's outcome and look line (the words the window shows over the picture)
@@ -191,6 +194,6 @@ set_tests_properties(check_displaced_seeds PROPERTIES LABELS check TIMEOUT 1500)
 # method the one in use, a named object one of the scene's. The reader itself on made-up lines.
 add_test(NAME check_look_claims
          COMMAND python3 ${SL_CHECK_PY}/look_claims.py ${SL_EXE} ${SL_CHECK_DIR}/look-claims)
-set_tests_properties(check_look_claims PROPERTIES LABELS check TIMEOUT 600)
+set_tests_properties(check_look_claims PROPERTIES LABELS check TIMEOUT 1800)
 add_test(NAME check_look_claims_reader COMMAND python3 ${SL_CHECK_PY}/look_claims.py --self-test)
 set_tests_properties(check_look_claims_reader PROPERTIES LABELS check)

@@ -7,9 +7,11 @@
                                 with acne (false shadow over 20 %), for every seed given.
   constant-slope EXE WORK       tests/students/margin_constant_only never writes the slope branch.
                                 Every lesson but the slope one passes; the slope lesson must FAIL
-                                with false shadow over three times its bound of 0.1 % (measured
+                                with false shadow over 0.4 %, above its bound of 0.25 % (measured
                                 0.62 %), while our shipped shaders pass it under 0.05 %.
-Each `check` writes a fresh report (deleted first) and its exit code is asserted too."""
+Each `check` writes a fresh report (deleted first) and its exit code is asserted too. Each runs
+with --time-limit 300: the figures are what is measured here, and a loaded machine must not turn
+them into a TIMEOUT (30 s for a stage's 13 rows ran out at load 20 on 2 cores)."""
 import json
 import os
 import subprocess
@@ -25,7 +27,8 @@ def check(exe, work, name, args, exit_code):
     report = os.path.join(work, name + ".json")
     if os.path.exists(report):
         os.remove(report)
-    run = subprocess.run([exe, "check", *args, "--report", report], stdout=subprocess.PIPE,
+    run = subprocess.run([exe, "check", *args, "--time-limit", "300", "--report", report],
+                         stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, check=False)
     if run.returncode != exit_code or not os.path.isfile(report):
         sys.stdout.write(run.stdout.decode("utf-8", errors="replace"))
@@ -73,7 +76,7 @@ def constant_slope(exe, work):
             print(row_line(r))
     for who, rows, verdict, check_fs in (
             ("ours", ours, "PASS", lambda fs: fs < 0.05),
-            ("constant only", theirs, "FAIL", lambda fs: fs > 0.3)):
+            ("constant only", theirs, "FAIL", lambda fs: fs > 0.4)):
         slope = [r for r in rows if r.get("lesson") == SLOPE_LESSON]
         if len(slope) != 1:
             problems.append(f"{who}: {len(slope)} rows of the slope lesson '{SLOPE_LESSON}'")
