@@ -167,25 +167,22 @@ add_test(NAME check_game_known_eyes
 set_tests_properties(check_game_known_eyes PROPERTIES LABELS check TIMEOUT 1500)
 add_test(NAME check_game_known_eyes_assignment
          COMMAND ${SL_EXPECT} --exit 1
-                 --output "margin/core/displaced margin +FAIL +0[.]00/[0-9.]+ .*false_shadow_pct [0-9.]+ not <= 1"
-                 --output "margin/core/lecture margin +PASS"
-                 --absent "margin/core/(lecture|cube-on-cube|sphere-on-cube|cube-on-sphere|grazing) margin +FAIL"
+                 --output "margin/core/displaced +[0-9.]+ [^\\n]* 0/[0-9.]+ +FAIL +expected correct, but false_shadow_pct [0-9.]+ not <= 1"
+                 --output "margin/core/lecture +[0-9.]+ [^\\n]* PASS"
+                 --absent "margin/core/(lecture|cube-on-cube|sphere-on-cube|cube-on-sphere|grazing)[^\\n]* FAIL"
                  -- ${SL_EXE} check --assignment ${SL_CHECK_PY}/margin_assignment.json
-                    --shaders ${CMAKE_CURRENT_SOURCE_DIR}/students/margin_game_known_eyes --seed 5
-                    --time-limit 300)
+                    --shaders ${CMAKE_CURRENT_SOURCE_DIR}/students/margin_game_known_eyes --seed 5)
 set_tests_properties(check_game_known_eyes_assignment PROPERTIES LABELS check TIMEOUT 600)
 add_test(NAME check_constant_margin_slope_lesson
          COMMAND python3 ${SL_CHECK_PY}/measurement_cases.py constant-slope ${SL_EXE} ${SL_CHECK_DIR}/constant-slope)
 set_tests_properties(check_constant_margin_slope_lesson PROPERTIES LABELS check TIMEOUT 900)
 
 # Correct shaders pass the displaced view whatever the seed: one correct case of the corpus per
-# shadow stage (both trees among them) and our own peers, five seeds each. These measurement
-# tests give check --time-limit 300: the figures are the point, and at load 20 on 2 cores a
-# stage's rows ran past the default 30 s.
+# shadow stage (both trees among them) and our own peers, five seeds each.
 add_test(NAME check_displaced_seeds
          COMMAND python3 ${SL_CHECK_PY}/displaced_seeds.py ${SL_EXE} ${SL_CHECK_DIR}/displaced-seeds
                  --seeds 201-205 --case rgb_correct_legacy --case depth_textureproj --case bias_correct_core
-                 --case margin_slope_inv_cos --case hw_pcf3x3 --case ours:peers:core --jobs 2 --time-limit 300)
+                 --case margin_slope_inv_cos --case hw_pcf3x3 --case ours:peers:core --jobs 2)
 set_tests_properties(check_displaced_seeds PROPERTIES LABELS check TIMEOUT 1500)
 
 # Issue 27: every lesson's outcome and look line (the words the window shows over the picture)

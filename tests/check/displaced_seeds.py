@@ -19,6 +19,9 @@ import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from report_rows import report_rows  # noqa: E402
+
 STUDENTS = os.path.join(os.path.dirname(HERE), "students")
 SHADOW_STAGES = ("rgb", "depth", "bias", "margin", "hardware", "fixed", "peers")
 
@@ -61,7 +64,7 @@ def run(exe, work, name, seed, extra):
     if not os.path.isfile(report):
         return False, f"{name} seed {seed}: exit {done.returncode}, no report"
     with open(report) as f:
-        rows = json.load(f)["results"]
+        rows = report_rows(json.load(f))
     displaced = [r for r in rows if r["view"] == "displaced"]
     failing = [r for r in rows if r["verdict"] != "PASS"]
     worst = lambda key: max((r["figures"][key] or 0) for r in displaced) if displaced else float("nan")

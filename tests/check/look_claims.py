@@ -24,6 +24,8 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+from report_rows import report_rows  # noqa: E402
 
 
 def load_vocabulary():
@@ -147,12 +149,13 @@ def check_report(report_path):
     with open(report["expectations"]) as f:
         book = json.load(f)
     vocabulary = load_vocabulary()
+    results = report_rows(report)
     problems = []
     for entry in book["expectations"]:
         name = label(entry)
-        rows = [r for r in report["results"]
+        rows = [r for r in results
                 if r.get("lesson") == name and r["view"] == own_view(book, r["scene"])]
-        trees = entry.get("trees") or sorted({r["tree"] for r in report["results"]
+        trees = entry.get("trees") or sorted({r["tree"] for r in results
                                               if r["stage"] == entry["stage"]})
         if sorted(r["tree"] for r in rows) != sorted(trees):
             problems.append(f"{name}: rows in its own view for trees "
@@ -205,8 +208,7 @@ def main():
         report = os.path.join(work, "look.json")
         if os.path.exists(report):
             os.remove(report)
-        # The figures are the point: a loaded machine must not turn a stage into a TIMEOUT.
-        run = subprocess.run([exe, "check", "--all", "--time-limit", "300", "--report", report],
+        run = subprocess.run([exe, "check", "--all", "--report", report],
                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, check=False)
         if run.returncode != 0 or not os.path.isfile(report):
             sys.stdout.write(run.stdout.decode("utf-8", errors="replace")[-4000:])
