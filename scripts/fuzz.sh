@@ -23,12 +23,23 @@ mkdir "$corpus/seeds" "$corpus/new"
 for f in "${seeds[@]}"; do
   [ "$(stat -c %s "$f")" -le 8192 ] && cp "$f" "$corpus/seeds/$(basename "$(dirname "$f")")-$(basename "$f")"
 done
+# libFuzzer's whole output goes to a log: its exit code is kept (a pipe would lose it), and a
+# run that never started (a binary that does not load, a flag it refuses) is a failure too.
+log="$corpus/fuzz.log"
+rc=0
 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 build-fuzz/fuzz_scene -max_total_time="${FUZZ_SECONDS:-60}" -timeout=10 -rss_limit_mb=2048 \
   -max_len=65536 -dict=tests/fuzz/scene.dict -artifact_prefix=build-fuzz/ \
-  -print_final_stats=1 "$corpus/new" "$corpus/seeds" 2>&1 | grep -E "^#[0-9]+ +DONE|stat::number_of_executed_units|ERROR|SUMMARY|Test unit written" || true
-# libFuzzer's own exit code is lost in the pipe: a crash leaves crash-*/timeout-*/oom-* files.
+  -print_final_stats=1 "$corpus/new" "$corpus/seeds" >"$log" 2>&1 || rc=$?
+grep -E "^#[0-9]+ +DONE|stat::number_of_executed_units|ERROR|SUMMARY|Test unit written" "$log" || true
 if ls build-fuzz/crash-* build-fuzz/timeout-* build-fuzz/oom-* build-fuzz/leak-* >/dev/null 2>&1; then
   echo "fuzz: FAILED, inputs kept in build-fuzz/"; exit 1
 fi
-echo "fuzz: done in $((SECONDS - start)) s"
+if [ "$rc" -ne 0 ]; then
+  tail -n 20 "$log"; echo "fuzz: FAILED, the fuzzer exited $rc"; exit 1
+fi
+units=$(sed -n 's/^stat::number_of_executed_units: *\([0-9]*\).*/\1/p' "$log" | tail -n 1)
+if [ -z "$units" ] || [ "$units" -eq 0 ]; then
+  tail -n 20 "$log"; echo "fuzz: FAILED, the fuzzer ran no input"; exit 1
+fi
+echo "fuzz: done in $((SECONDS - start)) s, $units inputs run"

@@ -72,8 +72,8 @@ struct CheckCase {
 // `--scene`: the base request alone); and each from every view of its scene, unless the user
 // gave a camera or light (`--eye`, `--at`, `--fovy`, `--light`: one view named "custom").
 // With a `seed`, each scene of a stage that casts shadows gets one more view, "displaced": the
-// scene's own camera on its casters and light moved by displacementFor(seed) (GUIDE section 4:
-// a shader that knows the fixed views' geometry cannot know this one's).
+// scene's casters, light and camera moved by displacementFor(seed) (GUIDE section 4: a shader
+// that knows the fixed views' geometry or cameras cannot know this one's).
 std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool customView,
                                   std::optional<std::uint64_t> seed = std::nullopt);
 

@@ -29,7 +29,8 @@ struct RenderRequest {
     std::optional<float> fovy;
     std::vector<std::pair<std::string, std::string>> sets;  // --set NAME=VALUE
     ViewMode view = ViewMode::Final;
-    // Grading's displaced view: the scene's casters and light moved by displacementFor(seed).
+    // Grading's displaced view: the scene's casters, light and camera moved by
+    // displacementFor(seed) (an --eye, --at or --fovy given still wins).
     std::optional<std::uint64_t> displaceSeed;
 };
 

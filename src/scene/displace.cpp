@@ -55,6 +55,35 @@ bool castersOverlap(const Scene& scene, const glm::vec3& centre, const glm::vec3
     return false;
 }
 
+// The camera moved by `d` about its target `at` (already moved with the casters): the eye's
+// offset split into its height along `axis` and its direction in the receiver's plane; that
+// direction set `d.cameraTurnDegrees` away from the light's (seen from the light's own side the
+// casters hide their shadows; a light straight above the receiver leaves the camera's own
+// direction to turn from), its elevation changed within 15..75 degrees, its length scaled.
+Camera movedCamera(const Camera& camera, const glm::vec3& at, const Light& light,
+                   const glm::vec3& axis, const Displacement& d) {
+    auto across = [&](const glm::vec3& w) { return w - glm::dot(w, axis) * axis; };
+    glm::vec3 offset = camera.eye - camera.at;
+    float length = glm::length(offset);
+    if (length < 1e-6f) return camera;
+    glm::vec3 u, v;
+    planeBasis(axis, u, v);
+    glm::vec3 fromLight = across(light.position - light.target);
+    glm::vec3 own = across(offset);
+    glm::vec3 side = glm::length(fromLight) > 1e-3f * glm::length(light.position - light.target)
+                         ? fromLight
+                     : glm::length(own) > 1e-6f ? own
+                                                : u;
+    side = glm::normalize(turned(glm::normalize(side), glm::vec3(0), axis, d.cameraTurnDegrees));
+    float elevation = glm::degrees(std::atan2(glm::dot(offset, axis), glm::length(own)));
+    elevation = std::clamp(elevation + d.cameraElevationDegrees, 15.0f, 75.0f);
+    float e = glm::radians(elevation), r = length * d.cameraDistanceScale;
+    Camera out = camera;
+    out.at = at;
+    out.eye = at + r * (std::cos(e) * side + std::sin(e) * axis);
+    return out;
+}
+
 }  // namespace
 
 Displacement displacementFor(std::uint64_t seed) {
@@ -64,6 +93,9 @@ Displacement displacementFor(std::uint64_t seed) {
     d.casterShift = {float(0.3 * unit(g) - 0.15), float(0.3 * unit(g) - 0.15)};
     double light = 10.0 + 10.0 * unit(g);
     d.lightTurnDegrees = float(unit(g) < 0.5 ? -light : light);
+    d.cameraTurnDegrees = float(50.0 + 260.0 * unit(g));
+    d.cameraElevationDegrees = float(20.0 * unit(g) - 10.0);
+    d.cameraDistanceScale = float(0.85 + 0.3 * unit(g));
     return d;
 }
 
@@ -110,6 +142,8 @@ Scene displacedScene(const Scene& scene, const Displacement& d) {
             o.up = turned(o.up, glm::vec3(0), axis, turn);
         }
     out.light.position = turned(scene.light.position, scene.light.target, axis, d.lightTurnDegrees);
+    out.camera = movedCamera(scene.camera, turned(scene.camera.at, centre, axis, turn) + shift,
+                             out.light, axis, d);
     return out;
 }
 

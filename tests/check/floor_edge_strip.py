@@ -28,8 +28,14 @@ PALE_RED, PALE_BLUE = (240, 170, 170), (170, 190, 240)
 
 def band_counts(exe, work, name, args):
     png = os.path.join(work, name + ".png")
-    subprocess.run([exe, "check", "--diff", png, *args], check=False,
-                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    if os.path.exists(png):  # a picture left by an earlier run must not be read as this one's
+        os.remove(png)
+    run = subprocess.run([exe, "check", "--diff", png, *args], check=False,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    if run.returncode != 0 or not os.path.isfile(png):
+        sys.stdout.write(run.stdout.decode("utf-8", errors="replace"))
+        sys.exit(f"FAIL: check {' '.join(args)} exited {run.returncode}"
+                 f"{'' if os.path.isfile(png) else ' and wrote no ' + png}")
     _, _, pixels = read_png(png)
     blue = sum(1 for p in pixels if p == PALE_BLUE)
     red = sum(1 for p in pixels if p == PALE_RED)

@@ -2,6 +2,10 @@
 // none where they do not, and each lesson's failure where the lecture has one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 #include "platform/headless.h"
 #include "render_fixture.h"
 
@@ -135,18 +139,97 @@ TEST_P(Lessons, TheMapIsRenderedOnlyWhenSomethingChanged) {
     EXPECT_EQ(glErrorCount(), 0);
 }
 
-TEST_P(Lessons, EveryDebugViewRendersWithoutGlErrors) {
-    for (const char* stage : {"rgb", "depth", "bias", "margin", "hardware"})
-        for (ViewMode v :
-             {ViewMode::ShadowMap, ViewMode::Light, ViewMode::Visibility, ViewMode::LightDepth}) {
-            RenderRequest r = smallRequest(stage, GetParam());
-            r.view = v;
-            Rendered out = renderHeadless(r);
-            EXPECT_EQ(out.glErrors, 0) << stage << " " << viewName(v);
-            // Something other than the background was drawn.
-            int centreLuma = static_cast<int>(out.image.luma(r.width / 2, r.height / 2));
-            EXPECT_NE(centreLuma, static_cast<int>(out.image.luma(1, 1)) + 1000) << stage;
+namespace {
+
+// What a debug view's picture holds, over the pixels that are not the background.
+struct ViewCensus {
+    int drawn = 0;                     // pixels other than the background colour
+    int grey = 0;                      // of those, R = G = B (within 2 levels)
+    int black = 0;                     // grey and luma below 10
+    int white = 0;                     // grey and luma above 245
+    int red = 0, green = 0, blue = 0;  // a channel clearly above both others (the casters' colours)
+    float lowLuma = 255, highLuma = 0;  // 5th and 95th percentile luma of the drawn pixels
+};
+
+ViewCensus census(const Image& image) {
+    ViewCensus c;
+    const std::uint8_t* bg = image.at(0, 0);
+    std::vector<float> lumas;
+    for (int j = 0; j < image.height; ++j)
+        for (int i = 0; i < image.width; ++i) {
+            const std::uint8_t* p = image.at(i, j);
+            if (p[0] == bg[0] && p[1] == bg[1] && p[2] == bg[2]) continue;
+            ++c.drawn;
+            float y = image.luma(i, j);
+            lumas.push_back(y);
+            bool grey = std::abs(p[0] - p[1]) <= 2 && std::abs(p[1] - p[2]) <= 2;
+            c.grey += grey;
+            c.black += grey && y < 10;
+            c.white += grey && y > 245;
+            c.red += p[0] > p[1] + 40 && p[0] > p[2] + 40;
+            c.green += p[1] > p[0] + 40 && p[1] > p[2] + 40;
+            c.blue += p[2] > p[0] + 40 && p[2] > p[1] + 40;
         }
+    if (!lumas.empty()) {
+        std::sort(lumas.begin(), lumas.end());
+        c.lowLuma = lumas[lumas.size() / 20];
+        c.highLuma = lumas[lumas.size() * 19 / 20];
+    }
+    return c;
+}
+
+}  // namespace
+
+// Each debug view shows what its legend says (window_text.cpp viewLegend), checked on its
+// picture: the map a grey depth image with near and far; the light's view the three casters in
+// their colours; visibility black in the casters' shadows and white on the open floor; the
+// light depth a grey ramp, darker near the light than far from it.
+TEST_P(Lessons, EveryDebugViewShowsWhatItsLegendSays) {
+    for (const char* stage : {"rgb", "depth", "bias", "margin", "hardware"}) {
+        Settings sets;
+        if (std::string(stage) == "rgb") sets = {{"margin", "0.01"}};   // no acne
+        if (std::string(stage) == "bias") sets = {{"bias-z", "+0.5"}};  // the right sign
+        RenderRequest r = smallRequest(stage, GetParam(), sets);
+        const int pixels = r.width * r.height;
+        Image image;
+        auto show = [&](ViewMode view) {
+            r.view = view;
+            Rendered out = renderHeadless(r);
+            EXPECT_EQ(out.glErrors, 0) << stage << " " << viewName(view);
+            image = out.image;
+            return census(image);
+        };
+        ViewCensus c = show(ViewMode::ShadowMap);
+        // The map is drawn square (240 x 240 of 320 x 240), grey, near and far both in it.
+        EXPECT_GT(c.drawn, pixels / 2) << stage << " shadow-map: the map is not drawn";
+        EXPECT_GT(c.grey, c.drawn * 95 / 100) << stage << " shadow-map: not a grey depth image";
+        EXPECT_GT(c.highLuma - c.lowLuma, 40.0f) << stage << " shadow-map: one flat depth";
+
+        c = show(ViewMode::Light);
+        // The floating cube (red), the standing cube (green) and the sphere (blue) as the light
+        // sees them. The red cube is mostly behind the green one (that is how it gets its
+        // shadow): 241 of its pixels show at 320x240.
+        EXPECT_GT(c.red, 100) << stage << " light view: no red cube";
+        EXPECT_GT(c.green, pixels / 100) << stage << " light view: no green cube";
+        EXPECT_GT(c.blue, pixels / 100) << stage << " light view: no blue sphere";
+
+        c = show(ViewMode::Visibility);
+        EXPECT_GT(c.grey, c.drawn * 98 / 100) << stage << " visibility: not black and white";
+        EXPECT_GT(c.black, pixels / 50) << stage << " visibility: no shadow";
+        EXPECT_GT(c.white, pixels / 10) << stage << " visibility: nothing lit";
+        for (glm::vec3 p : kDeepShadow)
+            EXPECT_LT(lumaAt(image, r, p), 10.0f)
+                << stage << " visibility: not black in the shadow at " << p.x << "," << p.z;
+        for (glm::vec3 p : kClearlyLit)
+            EXPECT_GT(lumaAt(image, r, p), 245.0f)
+                << stage << " visibility: not white on the lit floor at " << p.x << "," << p.z;
+
+        c = show(ViewMode::LightDepth);
+        EXPECT_GT(c.grey, c.drawn * 98 / 100) << stage << " light-depth: not grey";
+        // The floor near the light (x 1.2) is nearer it than the floor beyond the casters.
+        EXPECT_LT(lumaAt(image, r, kClearlyLit[0]) + 20.0f, lumaAt(image, r, kDeepShadow[0]))
+            << stage << " light-depth: near not darker than far";
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Trees, Lessons, ::testing::Values(GlslTree::Core, GlslTree::Legacy),
