@@ -1,5 +1,6 @@
 #include "eval/evaluator.h"
 
+#include <cstdio>
 #include <sstream>
 
 #include "metrics/mirror_metrics.h"
@@ -31,7 +32,8 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
         renderer_ = makeRenderer(r);
         sceneLight_ = renderer_->scene().light.position;
         key_ = key.str();
-        sceneKey_ = r.scene + "/" + std::to_string(r.width) + "x" + std::to_string(r.height);
+        sceneKey_ = r.scene + "/" + std::to_string(r.width) + "x" + std::to_string(r.height) +
+                    "/displaced=" + (r.displaceSeed ? std::to_string(*r.displaceSeed) : "");
     }
     renderer_->selectStage(r.stage);
     renderer_->params() = ParamSet(renderer_->stage().params);
@@ -50,11 +52,24 @@ void Evaluator::reset() {
     truth_.reset();
 }
 
+namespace {
+
+// A float as a key: every bit of it (two lights 1e-7 apart trace different references).
+std::string exact(float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%a", double(v));
+    return text;
+}
+
+}  // namespace
+
 const ReferenceImage& Evaluator::reference() {
     Renderer& r = *renderer_;
     std::ostringstream key;
-    auto put = [&](const glm::vec3& v) { key << "/" << v.x << "," << v.y << "," << v.z; };
-    key << sceneKey_ << "/" << r.camera.fovyDegrees;
+    auto put = [&](const glm::vec3& v) {
+        key << "/" << exact(v.x) << "," << exact(v.y) << "," << exact(v.z);
+    };
+    key << sceneKey_ << "/" << exact(r.camera.fovyDegrees);
     for (const glm::vec3& v : {r.lightPosition, r.camera.eye, r.camera.at}) put(v);
     if (!truth_ || key.str() != referenceKey_) {
         referenceKey_ = key.str();
@@ -83,6 +98,7 @@ const ReferenceShades& Evaluator::shades() {
         Renderer& r = *renderer_;
         truth_->shades = referenceShades(r.scene(), r.camera, truth_->reference, r.lightPosition);
         truth_->visible = shadowVisiblePixels(truth_->shades);
+        truth_->shares = shadeShares(truth_->shades);
         truth_->shaded = true;
     }
     return truth_->shades;
@@ -129,30 +145,53 @@ ShadowEvidence Evaluator::shadowEvidence() {
     r.render(context_->framebuffer(), w, h);
     e.allLit = context_->read();
     r.allLit = false;
-    const std::string& unshadowed = r.stage().unshadowedStage;
-    e.baseline = unshadowed.empty()
-                     ? e.allLit
-                     : renderWith(shippedRenderer(Shipped::Unhighlighted), unshadowed);
-    e.renderedIds = decodeIdImage(renderWith(shippedRenderer(Shipped::Ids), "phong"),
-                                  int(r.scene().objects.size()), 1.0f);
-    ShadowFigureInputs inputs;
-    inputs.renderedIds = e.renderedIds;
-    inputs.shadowVisible = shadowVisible();
-    if (tolerance_ == EdgeTolerance::MapTexel)
-        inputs.bandPx =
-            mapTexelOnScreen(ref, r.camera, r.stats.lightViewProjection, r.stats.mapSize);
-    inputs.darkWithoutCaster = classifyShadowed(e.allLit, e.baseline);
-    // Bounded from above too: clearly brighter than our lighting with its highlight is as wrong
-    // as darker (flat white, a flat colour, infinities written to an 8-bit target).
-    inputs.litTooBright =
-        classifyShadowed(renderWith(shippedRenderer(Shipped::Lit), "phong"), e.allLit);
-    e.shadowed = classifyShadowed(e.withShadows, e.allLit);
-    for (std::size_t k = 0; k < e.shadowed.size(); ++k)
-        e.shadowed[k] = e.shadowed[k] || inputs.darkWithoutCaster[k];
-    inputs.shadowLevelOff = shadowLevelOff(e.withShadows, e.allLit, shades());
-    inputs.lightLost = lightLost(e.withShadows, e.allLit, shades());
-    e.figures = shadowFigures(ref, e.shadowed, inputs);
+    // Our lighting without shadows (dark without a caster) and with its highlight (too bright:
+    // bounded from above too, flat white, a flat colour, infinities written to an 8-bit target),
+    // and our id render (coverage): the same for every submission, drawn once a view.
+    const ShippedView& ours = shippedView();
+    RenderClassification c =
+        classifyRender(e.withShadows, e.allLit, ours.baselineLuma, ours.oursLuma, truth_->shares);
+    if (tolerance_ == EdgeTolerance::MapTexel) c.inputs.bandPx = mapTexelBand();
+    e.shadowed = std::move(c.shadowed);
+    e.figures = shadowFigures(ref, ours.truth, e.shadowed, c.inputs);
     return e;
+}
+
+const Evaluator::ShippedView& Evaluator::shippedView() {
+    Renderer& r = *renderer_;
+    shades();
+    const std::string& unshadowed = r.stage().unshadowedStage;
+    std::shared_ptr<ShippedView>& slot =
+        truth_->shipped[std::string(context_->backendName()) + "/" + treeName(r.shaders().tree()) +
+                        "/" + unshadowed];
+    if (!slot) {
+        auto view = std::make_shared<ShippedView>();
+        if (!unshadowed.empty())
+            view->baselineLuma =
+                lumaOf(renderWith(shippedRenderer(Shipped::Unhighlighted), unshadowed));
+        view->oursLuma = lumaOf(renderWith(shippedRenderer(Shipped::Lit), "phong"));
+        const std::vector<int> ids =
+            decodeIdImage(renderWith(shippedRenderer(Shipped::Ids), "phong"),
+                          int(r.scene().objects.size()), 1.0f);
+        view->truth = shadowTruth(truth_->reference, ids, truth_->visible);
+        slot = std::move(view);
+        ++shippedViews_;
+    }
+    return *slot;
+}
+
+const std::vector<float>& Evaluator::mapTexelBand() {
+    constexpr std::size_t kMaxBands = 8;  // a view's lessons: a few map sizes
+    const Renderer& r = *renderer_;
+    reference();
+    std::string key = std::to_string(r.stats.mapSize);
+    for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 4; ++k) key += "," + exact(r.stats.lightViewProjection[c][k]);
+    auto found = truth_->bands.find(key);
+    if (found != truth_->bands.end()) return found->second;
+    if (truth_->bands.size() >= kMaxBands) truth_->bands.clear();
+    return truth_->bands[key] = mapTexelOnScreen(truth_->reference, r.camera,
+                                                 r.stats.lightViewProjection, r.stats.mapSize);
 }
 
 namespace {
@@ -200,13 +239,11 @@ Image Evaluator::renderWith(Renderer& other, const std::string& stage) {
 // shadows or a shader that recognises an id render would otherwise agree with itself.
 Accuracy Evaluator::mirrorAccuracy() {
     Renderer& r = *renderer_;
-    int w = context_->width(), h = context_->height();
     const ReferenceImage& ref = reference();
     std::vector<std::uint8_t> mask = mirrorMask(ref, r.scene());
-    Accuracy a = shadowAccuracy(shadowEvidence().figures);
-    r.allLit = false;
-    r.render(context_->framebuffer(), w, h);
-    Image shown = context_->read();
+    const ShadowEvidence e = shadowEvidence();
+    Accuracy a = shadowAccuracy(e.figures);
+    const Image& shown = e.withShadows;  // the stage as it is, mirror included
     auto ours = [&](Shipped kind, const std::string& method) {
         Renderer& other = shippedRenderer(kind);
         other.selectStage(r.stage().id);
@@ -214,11 +251,11 @@ Accuracy Evaluator::mirrorAccuracy() {
         other.params().set("mirror-method", method);
         return renderWith(other, r.stage().id);
     };
-    Image exact = ours(Shipped::Lit, "stencil");
+    Image stencil = ours(Shipped::Lit, "stencil");
     std::vector<int> seen = decodeIdImage(ours(Shipped::Ids, r.params().text("mirror-method")),
                                           mirrorId(r.scene()) - 1, kMirrorReflectance);
     a.mirrorIdPct = mirrorIdAgreementPct(ref, seen);
-    a.mirrorPsnrDb = psnrInMask(shown, exact, mask);
+    a.mirrorPsnrDb = psnrInMask(shown, stencil, mask);
     a.errorPct = 100.0 - a.mirrorIdPct;
     return a;
 }
