@@ -130,25 +130,30 @@ ObjectBoxes objectBoxes(const ReferenceImage& ref, const std::vector<std::uint8_
     return boxes;
 }
 
-std::vector<float> distanceWithinObjects(const ReferenceImage& ref, const ObjectBoxes& boxes,
+std::vector<float> distanceWithinObjects(const std::vector<int>& objectIds, int width,
+                                         const ObjectBoxes& boxes,
                                          const std::vector<std::uint8_t>& feature,
                                          const std::vector<std::uint8_t>& query) {
-    if (feature.size() != ref.pixels.size() || query.size() != ref.pixels.size())
-        throw std::invalid_argument("distanceWithinObjects: size does not match the reference");
-    const int w = ref.width;
+    if (feature.size() != objectIds.size() || query.size() != objectIds.size() || width <= 0 ||
+        objectIds.size() % std::size_t(width) != 0)
+        throw std::invalid_argument("distanceWithinObjects: sizes do not match");
+    const int w = width;
     auto index = [w](int i, int j) { return std::size_t(j) * w + i; };
-    std::vector<float> distance(ref.pixels.size(), std::numeric_limits<float>::infinity());
+    std::vector<float> distance(objectIds.size(), std::numeric_limits<float>::infinity());
+    const int* ids = objectIds.data();
+    const std::uint8_t *features = feature.data(), *queries = query.data();
+    float* out = distance.data();
     for (int id = 0; id < int(boxes.byId.size()); ++id) {
         const ObjectBoxes::Box& b = boxes.byId[id];
         if (b.i1 < b.i0) continue;
         const int bw = b.i1 - b.i0 + 1, bh = b.j1 - b.j0 + 1;
         auto isFeature = [&](int i, int j) {
             const std::size_t k = index(i, j);
-            return feature[k] && ref.pixels[k].objectId == id;
+            return features[k] && ids[k] == id;
         };
         auto isQuery = [&](int i, int j) {
             const std::size_t k = index(i, j);
-            return query[k] && ref.pixels[k].objectId == id;
+            return queries[k] && ids[k] == id;
         };
         bool anyFeature = false, anyQuery = false;
         for (int j = b.j0; j <= b.j1 && !(anyFeature && anyQuery); ++j)
@@ -173,7 +178,7 @@ std::vector<float> distanceWithinObjects(const ReferenceImage& ref, const Object
                 std::copy_n(&squared[std::size_t(r) * bw], bw, f.begin());
                 squaredDistanceLine(f, d, root, from);
                 for (int i = b.i0; i <= b.i1; ++i)
-                    if (isQuery(i, j)) distance[index(i, j)] = float(std::sqrt(d[i - b.i0]));
+                    if (isQuery(i, j)) out[index(i, j)] = float(std::sqrt(d[i - b.i0]));
             }
         });
     }

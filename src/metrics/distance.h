@@ -30,7 +30,9 @@ ObjectBoxes objectBoxes(const ReferenceImage& ref, const std::vector<std::uint8_
 // over each object's own pixels, found with less work: the column pass is a nearest-feature
 // scan (for a 0-or-infinity input it is one), the row pass runs only on rows with a query, and
 // large objects are split over threads.
-std::vector<float> distanceWithinObjects(const ReferenceImage& ref, const ObjectBoxes& boxes,
+// `objectIds` is per pixel, row-major, `width` pixels a row (a reference's object ids).
+std::vector<float> distanceWithinObjects(const std::vector<int>& objectIds, int width,
+                                         const ObjectBoxes& boxes,
                                          const std::vector<std::uint8_t>& feature,
                                          const std::vector<std::uint8_t>& query);
 

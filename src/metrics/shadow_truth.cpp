@@ -40,6 +40,12 @@ ShadowTruth shadowTruth(const ReferenceImage& ref, const std::vector<int>& rende
     t.width = w, t.height = h;
     t.evaluated = evaluatedPixels(ref, renderedIds, shadowVisible);
     const std::size_t count = ref.pixels.size();
+    t.blocked.resize(count);
+    t.objectIds.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        t.blocked[k] = ref.pixels[k].blocked;
+        t.objectIds[k] = ref.pixels[k].objectId;
+    }
     t.neighbours.assign(count, 0);
     t.atSilhouette.assign(count, 0);
     t.trueEdge.assign(count, 0);
@@ -88,7 +94,7 @@ ShadowTruth shadowTruth(const ReferenceImage& ref, const std::vector<int>& rende
         t.trueBoundary += c.trueEdge;
     }
     t.boxes = objectBoxes(ref, t.evaluated);
-    t.toStraddling = distanceWithinObjects(ref, t.boxes, straddling, t.evaluated);
+    t.toStraddling = distanceWithinObjects(t.objectIds, w, t.boxes, straddling, t.evaluated);
     return t;
 }
 
@@ -107,33 +113,42 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const ShadowTruth& truth,
          {inputs.darkWithoutCaster.size(), inputs.litTooBright.size(), inputs.bandPx.size(),
           inputs.shadowLevelOff.size(), inputs.lightLost.size()})
         if (n != 0) requireCount(count, n, "shadowFigures");
-    auto truthAt = [&](std::size_t k) { return ref.pixels[k].blocked; };
-    auto band = [&](std::size_t k) { return inputs.bandPx.empty() ? 1.0f : inputs.bandPx[k]; };
+    // Raw pointers: a byte stored through a vector's element may alias the vector itself, which
+    // would reload every vector's data pointer after each store.
+    const std::uint8_t *evaluated = truth.evaluated.data(), *neighbours = truth.neighbours.data(),
+                       *silhouette = truth.atSilhouette.data(), *blocked = truth.blocked.data(),
+                       *trueEdge = truth.trueEdge.data(), *shown = shadowed.data();
+    const float* toStraddling = truth.toStraddling.data();
+    auto optional = [](const auto& v) { return v.empty() ? nullptr : v.data(); };
+    const std::uint8_t *levelOff = optional(inputs.shadowLevelOff),
+                       *dark = optional(inputs.darkWithoutCaster),
+                       *bright = optional(inputs.litTooBright);
+    const float *lightLost = optional(inputs.lightLost), *bandPx = optional(inputs.bandPx);
+    const std::ptrdiff_t step[4] = {1, -1, w, -w};  // ShadowTruth::neighbours' bits
 
     // The rendered edge: a rendered-shadowed pixel with a rendered-lit neighbour, plus a marked
     // silhouette pixel the render gets right (it cannot show the other side).
     std::vector<std::uint8_t> renderedEdge(count, 0), renderedAcross(count, 0);
+    std::uint8_t *edge = renderedEdge.data(), *across = renderedAcross.data();
     const int bands = rowBandCount(h, w);
     std::vector<long> renderedBoundary(bands, 0);
     forRowBands(h, bands, [&](int b, int first, int end) {
+        long boundary = 0;
         for (std::size_t k = std::size_t(first) * w; k < std::size_t(end) * w; ++k) {
-            if (!truth.evaluated[k]) continue;
-            const bool rendered = shadowed[k] != 0;
-            const int i = int(k % w), j = int(k / w);
-            bool across = false;
-            for (int d = 0; d < 4 && !across; ++d)
-                if (truth.neighbours[k] & (1u << d))
-                    across =
-                        (shadowed[std::size_t(j + kOffsets[d][1]) * w + (i + kOffsets[d][0])] !=
-                         0) != rendered;
-            renderedAcross[k] = across;
-            renderedEdge[k] =
-                (rendered && across) || (truth.atSilhouette[k] && rendered == truthAt(k));
-            renderedBoundary[b] += renderedEdge[k];
+            if (!evaluated[k]) continue;
+            const bool rendered = shown[k] != 0;
+            bool other = false;
+            for (int d = 0; d < 4; ++d)
+                other = other || ((neighbours[k] >> d & 1) &&
+                                  (shown[std::ptrdiff_t(k) + step[d]] != 0) != rendered);
+            across[k] = other;
+            edge[k] = (rendered && other) || (silhouette[k] && rendered == (blocked[k] != 0));
+            boundary += edge[k];
         }
+        renderedBoundary[b] = boundary;
     });
     const std::vector<float> toRenderedEdge =
-        distanceWithinObjects(ref, truth.boxes, renderedEdge, truth.trueEdge);
+        distanceWithinObjects(truth.objectIds, w, truth.boxes, renderedEdge, truth.trueEdge);
 
     ShadowFigures figures;
     figures.evaluatedMask = truth.evaluated;
@@ -143,6 +158,7 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const ShadowTruth& truth,
     figures.trueBoundary = truth.trueBoundary;
     for (long n : renderedBoundary) figures.renderedBoundary += n;
     figures.band.assign(count, 0);
+    std::uint8_t* inBandOut = figures.band.data();
 
     // Counted per band; the sums of fractions kept as lists, so they add up in pixel order
     // whatever the bands (a double sum depends on its order).
@@ -156,36 +172,37 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const ShadowTruth& truth,
     std::vector<Counts> counts(bands);
     const double diagonal = std::hypot(double(w), double(h));
     forRowBands(h, bands, [&](int b, int first, int end) {
-        Counts& c = counts[b];
+        Counts c;
         for (std::size_t k = std::size_t(first) * w; k < std::size_t(end) * w; ++k) {
-            if (!truth.evaluated[k]) continue;
-            const bool inBand = truth.toStraddling[k] < band(k);
-            figures.band[k] = inBand;
-            const bool wrong = (shadowed[k] != 0) != truthAt(k);
-            if (truthAt(k)) {
+            if (!evaluated[k]) continue;
+            const float tolerance = bandPx ? bandPx[k] : 1.0f;
+            const bool inBand = toStraddling[k] < tolerance;
+            inBandOut[k] = inBand;
+            const bool wrong = (shown[k] != 0) != (blocked[k] != 0);
+            if (blocked[k]) {
                 (inBand ? c.shadowIn : c.shadowOut)++;
                 if (wrong) (inBand ? c.shadowInWrong : c.shadowOutWrong)++;
                 if (!inBand && !wrong) {
                     ++c.shadowShown;
-                    if (!inputs.shadowLevelOff.empty() && inputs.shadowLevelOff[k])
-                        ++c.shadowShownOff;
+                    if (levelOff && levelOff[k]) ++c.shadowShownOff;
                 }
             } else {
                 (inBand ? c.litIn : c.litOut)++;
-                if (!inBand && !inputs.lightLost.empty()) c.lost.push_back(inputs.lightLost[k]);
+                if (!inBand && lightLost) c.lost.push_back(lightLost[k]);
                 if (wrong) (inBand ? c.litInWrong : c.litOutWrong)++;
-                if (wrong && !inBand && renderedAcross[k]) ++c.litWrongSpeckled;
+                if (wrong && !inBand && across[k]) ++c.litWrongSpeckled;
             }
             // The "everything lit" frame has no caster in the light's way: a pixel dark there is
             // wrong whatever the truth of the real frame.
-            if (!inputs.darkWithoutCaster.empty() && inputs.darkWithoutCaster[k]) ++c.darkUnlit;
-            if (!inputs.litTooBright.empty() && inputs.litTooBright[k]) ++c.tooBright;
-            if (truth.trueEdge[k]) {
+            if (dark && dark[k]) ++c.darkUnlit;
+            if (bright && bright[k]) ++c.tooBright;
+            if (trueEdge[k]) {
                 // How far the render puts this piece of the true edge, beyond the tolerance.
                 double d = std::min(double(toRenderedEdge[k]), diagonal);
-                c.distances.push_back(std::max(0.0, d - std::max(0.0, double(band(k)) - 1.0)));
+                c.distances.push_back(std::max(0.0, d - std::max(0.0, double(tolerance) - 1.0)));
             }
         }
+        counts[b] = std::move(c);
     });
     Counts all;
     double litLost = 0.0, sum = 0.0;
@@ -266,21 +283,26 @@ RenderClassification classifyRender(const Image& withShadows, const Image& allLi
     in.shadowLevelOff.resize(count);
     in.lightLost.resize(count);
     const ClassifyOptions classify{}, level = kShadowLevelOptions;
+    // Raw pointers: a byte stored through a vector's element may alias the vector itself, which
+    // would reload every vector's data pointer after each store.
+    std::uint8_t *shadowed = out.shadowed.data(), *dark = in.darkWithoutCaster.data(),
+                 *bright = in.litTooBright.data(), *off = in.shadowLevelOff.data();
+    float* lost = in.lightLost.data();
+    const float *baselines = baselineLuma.empty() ? nullptr : baselineLuma.data(),
+                *ours = oursLuma.data(), *keptShares = shares.kept.data();
+    const std::uint8_t* reached = shares.reached.data();
+    const std::uint8_t *renders = withShadows.rgba.data(), *allLits = allLit.rgba.data();
     forRowBands(h, rowBandCount(h, w), [&](int, int first, int end) {
-        for (int j = first; j < end; ++j)
-            for (int i = 0; i < w; ++i) {
-                const std::size_t k = std::size_t(j) * w + i;
-                const float rendered = withShadows.luma(i, j), lit = allLit.luma(i, j);
-                const float baseline = baselineLuma.empty() ? lit : baselineLuma[k];
-                const bool dark = pixel::shadowed(lit, baseline, classify);
-                in.darkWithoutCaster[k] = dark;
-                in.litTooBright[k] = pixel::shadowed(oursLuma[k], lit, classify);
-                out.shadowed[k] = pixel::shadowed(rendered, lit, classify) || dark;
-                const float kept = shares.kept[k];
-                in.shadowLevelOff[k] =
-                    shares.reached[k] && pixel::levelOff(rendered, lit, kept, level);
-                in.lightLost[k] = pixel::lightLost(rendered, lit, kept, kLightLostAbsoluteDrop);
-            }
+        for (std::size_t k = std::size_t(first) * w; k < std::size_t(end) * w; ++k) {
+            const float rendered = rec601Luma(renders + 4 * k), lit = rec601Luma(allLits + 4 * k);
+            const bool darkHere = pixel::shadowed(lit, baselines ? baselines[k] : lit, classify);
+            dark[k] = darkHere;
+            bright[k] = pixel::shadowed(ours[k], lit, classify);
+            shadowed[k] = pixel::shadowed(rendered, lit, classify) || darkHere;
+            const float kept = keptShares[k];
+            off[k] = reached[k] && pixel::levelOff(rendered, lit, kept, level);
+            lost[k] = pixel::lightLost(rendered, lit, kept, kLightLostAbsoluteDrop);
+        }
     });
     return out;
 }

@@ -18,6 +18,8 @@ namespace sl {
 struct ShadowTruth {
     int width = 0, height = 0;
     std::vector<std::uint8_t> evaluated;  // evaluatedPixels
+    std::vector<std::uint8_t> blocked;    // the truth: the reference's `blocked`
+    std::vector<int> objectIds;           // the reference's object ids
     // Per evaluated pixel, bit d set when its 4-neighbour d (+i, -i, +j, -j) is evaluated and
     // shows the same object: the neighbours whose state can make an edge with it.
     std::vector<std::uint8_t> neighbours;
