@@ -2,11 +2,23 @@
 
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
 
 namespace sl {
+
+namespace {
+
+// A float as a key: every bit of it (two lights 1e-7 apart trace different references).
+std::string exact(float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%a", double(v));
+    return text;
+}
+
+}  // namespace
 
 Renderer& Evaluator::prepare(const RenderRequest& request) {
     validateRequest(request);
@@ -15,20 +27,31 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
     r.sceneGiven = true;
     // The camera is part of the key: spheres are tessellated for the camera they are seen from.
     auto vec = [](const std::optional<glm::vec3>& v) {
-        std::ostringstream t;
-        if (v) t << v->x << "," << v->y << "," << v->z;
-        return t.str();
+        return v ? exact(v->x) + "," + exact(v->y) + "," + exact(v->z) : std::string();
     };
+    // The context depends on the profile and size only: a new overlay or view builds a new
+    // renderer in it (a context's start-up cost as much as a row's figures).
+    const std::string contextKey = std::to_string(static_cast<int>(r.tree)) + "/" +
+                                   std::to_string(r.width) + "x" + std::to_string(r.height);
     std::ostringstream key;
-    key << static_cast<int>(r.tree) << "/" << r.scene << "/" << r.width << "x" << r.height
-        << "/overlay=" << r.overlay << "/eye=" << vec(r.eye) << "/at=" << vec(r.at)
-        << "/fovy=" << (r.fovy ? std::to_string(*r.fovy) : "")
+    key << contextKey << "/" << r.scene << "/overlay=" << r.overlay << "/eye=" << vec(r.eye)
+        << "/at=" << vec(r.at) << "/fovy=" << (r.fovy ? exact(*r.fovy) : "")
         << "/displaced=" << (r.displaceSeed ? std::to_string(*r.displaceSeed) : "");
+    if (context_ && contextKey == contextKey_ && !context_->makeCurrent())
+        throw std::runtime_error(std::string("could not make the ") + context_->backendName() +
+                                 " context current again");  // another may have been since
     if (key.str() != key_) {
-        reset();
-        context_ = createHeadlessContext(backend_, r.tree, r.width, r.height);
-        installGlDebugOutput(
-            true);  // a GL error is caught in the draw that raised it (whose shader)
+        if (!context_ || contextKey != contextKey_) {
+            reset();
+            context_ = createHeadlessContext(backend_, r.tree, r.width, r.height);
+            installGlDebugOutput(
+                true);  // a GL error is caught in the draw that raised it (whose shader)
+            contextKey_ = contextKey;
+        } else {
+            for (auto& shipped : shipped_) shipped.reset();  // they draw the old scene
+            renderer_.reset();
+            key_.clear();
+        }
         renderer_ = makeRenderer(r);
         sceneLight_ = renderer_->scene().light.position;
         key_ = key.str();
@@ -47,21 +70,11 @@ void Evaluator::reset() {
     for (auto& r : shipped_) r.reset();  // the renderers' GL objects go before the context
     renderer_.reset();
     context_.reset();
+    contextKey_.clear();
     key_.clear();
     referenceKey_.clear();
     truth_.reset();
 }
-
-namespace {
-
-// A float as a key: every bit of it (two lights 1e-7 apart trace different references).
-std::string exact(float v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%a", double(v));
-    return text;
-}
-
-}  // namespace
 
 const ReferenceImage& Evaluator::reference() {
     Renderer& r = *renderer_;

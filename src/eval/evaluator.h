@@ -41,9 +41,10 @@ struct ShadowEvidence {
     ShadowFigures figures;
 };
 
-// Holds a context and renderer for the current (backend, tree, scene, size, overlay, camera) and
-// rebuilds them only when one of those changes, so a run compiles each stage's shaders once per
-// context.
+// Holds a context for the current (backend, tree, size) and a renderer for the current (scene,
+// overlay, camera) in it, and rebuilds each only when one of those changes, so a run compiles
+// each stage's shaders once per renderer. What follows from a view's truth alone is kept across
+// overlays (Truth below): grading a class, a student's row costs two renders and one pass.
 class Evaluator {
   public:
     // How far from the true shadow edge a rendered edge may be before it counts as an error.
@@ -106,7 +107,7 @@ class Evaluator {
 
     Backend backend_;
     EdgeTolerance tolerance_;
-    std::string key_;
+    std::string contextKey_, key_;
     std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<Renderer> shipped_[3];  // by Shipped
