@@ -11,10 +11,10 @@ namespace sl {
 
 namespace {
 
-// A float as a key: every bit of it (two lights 1e-7 apart trace different references).
-std::string exact(float v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%a", double(v));
+// A number as a key: every bit of it (two lights 1e-7 apart trace different references).
+std::string exact(double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%a", v);
     return text;
 }
 
@@ -53,6 +53,7 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
             key_.clear();
         }
         renderer_ = makeRenderer(r);
+        overlay_ = r.overlay;
         sceneLight_ = renderer_->scene().light.position;
         key_ = key.str();
         sceneKey_ = r.scene + "/" + std::to_string(r.width) + "x" + std::to_string(r.height) +
@@ -142,8 +143,34 @@ Accuracy shadowAccuracy(const ShadowFigures& f) {
 }
 
 Accuracy Evaluator::accuracy() {
-    if (renderer_->stage().id == "mirror") return mirrorAccuracy();
-    return shadowAccuracy(shadowEvidence().figures);
+    // Our own shaders' figures are the same whoever is graded (a class measures them in every
+    // displaced view for each student's bounds): measured once a configuration.
+    std::string key;
+    if (overlay_.empty()) {
+        const Renderer& r = *renderer_;
+        key = key_ + "/stage=" + r.stage().id + "/view=" + viewName(r.view) +
+              "/light=" + exact(r.lightPosition.x) + "," + exact(r.lightPosition.y) + "," +
+              exact(r.lightPosition.z) + "/eye=" + exact(r.camera.eye.x) + "," +
+              exact(r.camera.eye.y) + "," + exact(r.camera.eye.z) + "/at=" + exact(r.camera.at.x) +
+              "," + exact(r.camera.at.y) + "," + exact(r.camera.at.z) +
+              "/fovy=" + exact(r.camera.fovyDegrees);
+        const ParamSet& params = renderer_->params();
+        for (const ParamSpec& p : params.specs())
+            key += "/" + p.name + "=" +
+                   (p.kind == ParamKind::Choice ? params.choice(p.name)
+                                                : exact(params.number(p.name)));
+        auto found = ours_.find(key);
+        if (found != ours_.end()) return found->second;
+    }
+    Accuracy a = renderer_->stage().id == "mirror" ? mirrorAccuracy()
+                                                   : shadowAccuracy(shadowEvidence().figures);
+    if (!key.empty()) {
+        ++oursMeasured_;
+        constexpr std::size_t kMaxOurs = 64;
+        if (ours_.size() >= kMaxOurs) ours_.clear();
+        ours_[key] = a;
+    }
+    return a;
 }
 
 ShadowEvidence Evaluator::shadowEvidence() {

@@ -66,7 +66,7 @@ class Evaluator {
     Renderer& renderer() { return *renderer_; }
 
     // Renders the current configuration and compares it with the reference: the shadow stages'
-    // figures, or the mirror's.
+    // figures, or the mirror's. Our own shaders' (no overlay) are kept by configuration.
     Accuracy accuracy();
     // The reference for the current camera, light and size (traced once, then reused).
     const ReferenceImage& reference();
@@ -78,6 +78,8 @@ class Evaluator {
     // many times it drew our shipped shaders' pictures of a view (ids, lighting: once a view).
     int tracedCount() const { return traced_; }
     int shippedViewCount() const { return shippedViews_; }
+    // How many times accuracy() measured our own shaders (no overlay): once a configuration.
+    int oursMeasuredCount() const { return oursMeasured_; }
     // The shadow stages' half of accuracy(): the render with its map and with the map forced to
     // "everything lit", our own unshadowed lighting (phong) and an id render for coverage. A
     // pixel is shadowed where the render is clearly darker than the all-lit one, or the all-lit
@@ -108,6 +110,8 @@ class Evaluator {
     Backend backend_;
     EdgeTolerance tolerance_;
     std::string contextKey_, key_;
+    std::string overlay_;                   // the current renderer's
+    std::map<std::string, Accuracy> ours_;  // accuracy() of our shaders, by configuration
     std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<Renderer> shipped_[3];  // by Shipped
@@ -135,6 +139,7 @@ class Evaluator {
     std::shared_ptr<Truth> truth_;  // the current view's
     int traced_ = 0;
     int shippedViews_ = 0;
+    int oursMeasured_ = 0;
 };
 
 }  // namespace sl

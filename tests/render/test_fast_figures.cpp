@@ -228,3 +228,41 @@ TEST(FastFigures, SameBitsAsTheSlowCodeAtFullSizeToThePixel) {
     q.width = 640, q.height = 480;
     expectSameAsSlow(rig, q, "rgb 640x480 margin 0", Evaluator::EdgeTolerance::Pixel);
 }
+
+TEST(FastFigures, OurShadersAreMeasuredOnceAConfiguration) {
+    // check measures our shaders in each displaced view for every student's bounds.
+    Evaluator rig(Backend::Auto);
+    RenderRequest ours = request("margin", GlslTree::Core);
+    ours.displaceSeed = 7;
+    RenderRequest finer = ours;
+    finer.sets = {{"map-size", "2048"}};
+    auto expectSame = [](const Accuracy& a, const Accuracy& b, const std::string& what) {
+        EXPECT_TRUE(sameBits(a.falseShadowPct, b.falseShadowPct)) << what;
+        EXPECT_TRUE(sameBits(a.falseLitPct, b.falseLitPct)) << what;
+        EXPECT_TRUE(sameBits(a.edgeMeanPx, b.edgeMeanPx)) << what;
+        EXPECT_TRUE(sameBits(a.edgeP95Px, b.edgeP95Px)) << what;
+        EXPECT_TRUE(sameBits(a.litLightLostPct, b.litLightLostPct)) << what;
+        EXPECT_TRUE(sameBits(a.falseShadowBandPct, b.falseShadowBandPct)) << what;
+    };
+    rig.prepare(ours);
+    const Accuracy first = rig.accuracy();
+    expectSame(first,
+               shadowAccuracy(slowEvidence(ours, Evaluator::EdgeTolerance::MapTexel).figures),
+               "ours");
+    rig.prepare(finer);
+    const Accuracy second = rig.accuracy();
+    expectSame(second,
+               shadowAccuracy(slowEvidence(finer, Evaluator::EdgeTolerance::MapTexel).figures),
+               "ours, map-size 2048");
+    EXPECT_FALSE(sameBits(first.edgeP95Px, second.edgeP95Px) &&
+                 sameBits(first.falseShadowBandPct, second.falseShadowBandPct))
+        << "another map size measures the same: the test shows nothing";
+    // A student in between, then ours again: measured twice in all, for the two settings.
+    rig.prepare(request("margin", GlslTree::Core, "margin_zero"));
+    rig.accuracy();
+    rig.prepare(ours);
+    expectSame(rig.accuracy(), first, "ours again");
+    rig.prepare(finer);
+    expectSame(rig.accuracy(), second, "ours again, map-size 2048");
+    EXPECT_EQ(rig.oursMeasuredCount(), 2);
+}
