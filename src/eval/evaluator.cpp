@@ -1,9 +1,11 @@
 #include "eval/evaluator.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
+#include "io/box.h"
 #include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
 
@@ -67,6 +69,21 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
     return *renderer_;
 }
 
+std::size_t Evaluator::maxTruths(int width, int height) {
+    // A view's truth holds the reference (sizeof(ReferencePixel) a pixel) and about 100 bytes a
+    // pixel more (shades, our pictures' luma for both trees, the truth's half of the figures, the
+    // band of a few map settings): at most a quarter of the worker's memory goes to them.
+    static const long long budget = [] {
+        Box box = readBox();
+        std::optional<long long> limit = box.addressSpaceBytes;
+        if (box.memoryBytes && (!limit || *box.memoryBytes < *limit)) limit = box.memoryBytes;
+        return limit ? *limit / 4 : 1LL << 30;
+    }();
+    const long long perTruth =
+        (long long)(sizeof(ReferencePixel) + 100) * std::max(1, width) * std::max(1, height);
+    return std::size_t(std::clamp<long long>(budget / perTruth, 1, kMaxTruths));
+}
+
 void Evaluator::reset() {
     for (auto& r : shipped_) r.reset();  // the renderers' GL objects go before the context
     renderer_.reset();
@@ -95,7 +112,7 @@ const ReferenceImage& Evaluator::reference() {
             truth_->reference = traceReference(r.scene(), r.camera, r.lightPosition,
                                                context_->width(), context_->height());
             ++traced_;
-            if (truthOrder_.size() >= kMaxTruths) {
+            if (truthOrder_.size() >= maxTruths(context_->width(), context_->height())) {
                 truths_.erase(truthOrder_.front());
                 truthOrder_.erase(truthOrder_.begin());
             }

@@ -119,7 +119,8 @@ class Evaluator {
     // The references of the views seen so far and what follows from them alone, kept across
     // overlays and shader errors (a reference depends on the scene, its displacement, the size,
     // camera and light only): grading a class in one evaluator traces and measures each view's
-    // truth once. Bounded (kMaxTruths, oldest dropped first).
+    // truth once. Bounded (kMaxTruths, fewer where they would take more than a quarter of the
+    // worker's memory: maxTruths; oldest dropped first).
     struct Truth {
         ReferenceImage reference;
         bool shaded = false;
@@ -132,6 +133,7 @@ class Evaluator {
         std::map<std::string, std::vector<float>> bands;
     };
     static constexpr std::size_t kMaxTruths = 8;
+    static std::size_t maxTruths(int width, int height);
     std::string sceneKey_;  // scene and size of the current renderer
     std::map<std::string, std::shared_ptr<Truth>> truths_;
     std::vector<std::string> truthOrder_;
