@@ -112,7 +112,7 @@ const ReferenceImage& Evaluator::reference() {
             truth_->reference = traceReference(r.scene(), r.camera, r.lightPosition,
                                                context_->width(), context_->height());
             ++traced_;
-            if (truthOrder_.size() >= maxTruths(context_->width(), context_->height())) {
+            while (truthOrder_.size() >= maxTruths(context_->width(), context_->height())) {
                 truths_.erase(truthOrder_.front());
                 truthOrder_.erase(truthOrder_.begin());
             }
