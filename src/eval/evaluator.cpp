@@ -1,11 +1,26 @@
 #include "eval/evaluator.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
+#include "io/box.h"
 #include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
 
 namespace sl {
+
+namespace {
+
+// A number as a key: every bit of it (two lights 1e-7 apart trace different references).
+std::string exact(double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%a", v);
+    return text;
+}
+
+}  // namespace
 
 Renderer& Evaluator::prepare(const RenderRequest& request) {
     validateRequest(request);
@@ -14,24 +29,37 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
     r.sceneGiven = true;
     // The camera is part of the key: spheres are tessellated for the camera they are seen from.
     auto vec = [](const std::optional<glm::vec3>& v) {
-        std::ostringstream t;
-        if (v) t << v->x << "," << v->y << "," << v->z;
-        return t.str();
+        return v ? exact(v->x) + "," + exact(v->y) + "," + exact(v->z) : std::string();
     };
+    // The context depends on the profile and size only: a new overlay or view builds a new
+    // renderer in it (a context's start-up cost as much as a row's figures).
+    const std::string contextKey = std::to_string(static_cast<int>(r.tree)) + "/" +
+                                   std::to_string(r.width) + "x" + std::to_string(r.height);
     std::ostringstream key;
-    key << static_cast<int>(r.tree) << "/" << r.scene << "/" << r.width << "x" << r.height
-        << "/overlay=" << r.overlay << "/eye=" << vec(r.eye) << "/at=" << vec(r.at)
-        << "/fovy=" << (r.fovy ? std::to_string(*r.fovy) : "")
+    key << contextKey << "/" << r.scene << "/overlay=" << r.overlay << "/eye=" << vec(r.eye)
+        << "/at=" << vec(r.at) << "/fovy=" << (r.fovy ? exact(*r.fovy) : "")
         << "/displaced=" << (r.displaceSeed ? std::to_string(*r.displaceSeed) : "");
+    if (context_ && contextKey == contextKey_ && !context_->makeCurrent())
+        throw std::runtime_error(std::string("could not make the ") + context_->backendName() +
+                                 " context current again");  // another may have been since
     if (key.str() != key_) {
-        reset();
-        context_ = createHeadlessContext(backend_, r.tree, r.width, r.height);
-        installGlDebugOutput(
-            true);  // a GL error is caught in the draw that raised it (whose shader)
+        if (!context_ || contextKey != contextKey_) {
+            reset();
+            context_ = createHeadlessContext(backend_, r.tree, r.width, r.height);
+            installGlDebugOutput(
+                true);  // a GL error is caught in the draw that raised it (whose shader)
+            contextKey_ = contextKey;
+        } else {
+            for (auto& shipped : shipped_) shipped.reset();  // they draw the old scene
+            renderer_.reset();
+            key_.clear();
+        }
         renderer_ = makeRenderer(r);
+        overlay_ = r.overlay;
         sceneLight_ = renderer_->scene().light.position;
         key_ = key.str();
-        sceneKey_ = r.scene + "/" + std::to_string(r.width) + "x" + std::to_string(r.height);
+        sceneKey_ = r.scene + "/" + std::to_string(r.width) + "x" + std::to_string(r.height) +
+                    "/displaced=" + (r.displaceSeed ? std::to_string(*r.displaceSeed) : "");
     }
     renderer_->selectStage(r.stage);
     renderer_->params() = ParamSet(renderer_->stage().params);
@@ -41,10 +69,26 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
     return *renderer_;
 }
 
+std::size_t Evaluator::maxTruths(int width, int height) {
+    // A view's truth holds the reference (sizeof(ReferencePixel) a pixel) and about 100 bytes a
+    // pixel more (shades, our pictures' luma for both trees, the truth's half of the figures, the
+    // band of a few map settings): at most a quarter of the worker's memory goes to them.
+    static const long long budget = [] {
+        Box box = readBox();
+        std::optional<long long> limit = box.addressSpaceBytes;
+        if (box.memoryBytes && (!limit || *box.memoryBytes < *limit)) limit = box.memoryBytes;
+        return limit ? *limit / 4 : 1LL << 30;
+    }();
+    const long long perTruth =
+        (long long)(sizeof(ReferencePixel) + 100) * std::max(1, width) * std::max(1, height);
+    return std::size_t(std::clamp<long long>(budget / perTruth, 1, kMaxTruths));
+}
+
 void Evaluator::reset() {
     for (auto& r : shipped_) r.reset();  // the renderers' GL objects go before the context
     renderer_.reset();
     context_.reset();
+    contextKey_.clear();
     key_.clear();
     referenceKey_.clear();
     truth_.reset();
@@ -53,8 +97,10 @@ void Evaluator::reset() {
 const ReferenceImage& Evaluator::reference() {
     Renderer& r = *renderer_;
     std::ostringstream key;
-    auto put = [&](const glm::vec3& v) { key << "/" << v.x << "," << v.y << "," << v.z; };
-    key << sceneKey_ << "/" << r.camera.fovyDegrees;
+    auto put = [&](const glm::vec3& v) {
+        key << "/" << exact(v.x) << "," << exact(v.y) << "," << exact(v.z);
+    };
+    key << sceneKey_ << "/" << exact(r.camera.fovyDegrees);
     for (const glm::vec3& v : {r.lightPosition, r.camera.eye, r.camera.at}) put(v);
     if (!truth_ || key.str() != referenceKey_) {
         referenceKey_ = key.str();
@@ -66,7 +112,7 @@ const ReferenceImage& Evaluator::reference() {
             truth_->reference = traceReference(r.scene(), r.camera, r.lightPosition,
                                                context_->width(), context_->height());
             ++traced_;
-            if (truthOrder_.size() >= kMaxTruths) {
+            while (truthOrder_.size() >= maxTruths(context_->width(), context_->height())) {
                 truths_.erase(truthOrder_.front());
                 truthOrder_.erase(truthOrder_.begin());
             }
@@ -83,6 +129,7 @@ const ReferenceShades& Evaluator::shades() {
         Renderer& r = *renderer_;
         truth_->shades = referenceShades(r.scene(), r.camera, truth_->reference, r.lightPosition);
         truth_->visible = shadowVisiblePixels(truth_->shades);
+        truth_->shares = shadeShares(truth_->shades);
         truth_->shaded = true;
     }
     return truth_->shades;
@@ -113,8 +160,34 @@ Accuracy shadowAccuracy(const ShadowFigures& f) {
 }
 
 Accuracy Evaluator::accuracy() {
-    if (renderer_->stage().id == "mirror") return mirrorAccuracy();
-    return shadowAccuracy(shadowEvidence().figures);
+    // Our own shaders' figures are the same whoever is graded (a class measures them in every
+    // displaced view for each student's bounds): measured once a configuration.
+    std::string key;
+    if (overlay_.empty()) {
+        const Renderer& r = *renderer_;
+        key = key_ + "/stage=" + r.stage().id + "/view=" + viewName(r.view) +
+              "/light=" + exact(r.lightPosition.x) + "," + exact(r.lightPosition.y) + "," +
+              exact(r.lightPosition.z) + "/eye=" + exact(r.camera.eye.x) + "," +
+              exact(r.camera.eye.y) + "," + exact(r.camera.eye.z) + "/at=" + exact(r.camera.at.x) +
+              "," + exact(r.camera.at.y) + "," + exact(r.camera.at.z) +
+              "/fovy=" + exact(r.camera.fovyDegrees);
+        const ParamSet& params = renderer_->params();
+        for (const ParamSpec& p : params.specs())
+            key += "/" + p.name + "=" +
+                   (p.kind == ParamKind::Choice ? params.choice(p.name)
+                                                : exact(params.number(p.name)));
+        auto found = ours_.find(key);
+        if (found != ours_.end()) return found->second;
+    }
+    Accuracy a = renderer_->stage().id == "mirror" ? mirrorAccuracy()
+                                                   : shadowAccuracy(shadowEvidence().figures);
+    if (!key.empty()) {
+        ++oursMeasured_;
+        constexpr std::size_t kMaxOurs = 64;
+        if (ours_.size() >= kMaxOurs) ours_.clear();
+        ours_[key] = a;
+    }
+    return a;
 }
 
 ShadowEvidence Evaluator::shadowEvidence() {
@@ -129,30 +202,53 @@ ShadowEvidence Evaluator::shadowEvidence() {
     r.render(context_->framebuffer(), w, h);
     e.allLit = context_->read();
     r.allLit = false;
-    const std::string& unshadowed = r.stage().unshadowedStage;
-    e.baseline = unshadowed.empty()
-                     ? e.allLit
-                     : renderWith(shippedRenderer(Shipped::Unhighlighted), unshadowed);
-    e.renderedIds = decodeIdImage(renderWith(shippedRenderer(Shipped::Ids), "phong"),
-                                  int(r.scene().objects.size()), 1.0f);
-    ShadowFigureInputs inputs;
-    inputs.renderedIds = e.renderedIds;
-    inputs.shadowVisible = shadowVisible();
-    if (tolerance_ == EdgeTolerance::MapTexel)
-        inputs.bandPx =
-            mapTexelOnScreen(ref, r.camera, r.stats.lightViewProjection, r.stats.mapSize);
-    inputs.darkWithoutCaster = classifyShadowed(e.allLit, e.baseline);
-    // Bounded from above too: clearly brighter than our lighting with its highlight is as wrong
-    // as darker (flat white, a flat colour, infinities written to an 8-bit target).
-    inputs.litTooBright =
-        classifyShadowed(renderWith(shippedRenderer(Shipped::Lit), "phong"), e.allLit);
-    e.shadowed = classifyShadowed(e.withShadows, e.allLit);
-    for (std::size_t k = 0; k < e.shadowed.size(); ++k)
-        e.shadowed[k] = e.shadowed[k] || inputs.darkWithoutCaster[k];
-    inputs.shadowLevelOff = shadowLevelOff(e.withShadows, e.allLit, shades());
-    inputs.lightLost = lightLost(e.withShadows, e.allLit, shades());
-    e.figures = shadowFigures(ref, e.shadowed, inputs);
+    // Our lighting without shadows (dark without a caster) and with its highlight (too bright:
+    // bounded from above too, flat white, a flat colour, infinities written to an 8-bit target),
+    // and our id render (coverage): the same for every submission, drawn once a view.
+    const ShippedView& ours = shippedView();
+    RenderClassification c =
+        classifyRender(e.withShadows, e.allLit, ours.baselineLuma, ours.oursLuma, truth_->shares);
+    if (tolerance_ == EdgeTolerance::MapTexel) c.inputs.bandPx = mapTexelBand();
+    e.shadowed = std::move(c.shadowed);
+    e.figures = shadowFigures(ref, ours.truth, e.shadowed, c.inputs);
     return e;
+}
+
+const Evaluator::ShippedView& Evaluator::shippedView() {
+    Renderer& r = *renderer_;
+    shades();
+    const std::string& unshadowed = r.stage().unshadowedStage;
+    std::shared_ptr<ShippedView>& slot =
+        truth_->shipped[std::string(context_->backendName()) + "/" + treeName(r.shaders().tree()) +
+                        "/" + unshadowed];
+    if (!slot) {
+        auto view = std::make_shared<ShippedView>();
+        if (!unshadowed.empty())
+            view->baselineLuma =
+                lumaOf(renderWith(shippedRenderer(Shipped::Unhighlighted), unshadowed));
+        view->oursLuma = lumaOf(renderWith(shippedRenderer(Shipped::Lit), "phong"));
+        const std::vector<int> ids =
+            decodeIdImage(renderWith(shippedRenderer(Shipped::Ids), "phong"),
+                          int(r.scene().objects.size()), 1.0f);
+        view->truth = shadowTruth(truth_->reference, ids, truth_->visible);
+        slot = std::move(view);
+        ++shippedViews_;
+    }
+    return *slot;
+}
+
+const std::vector<float>& Evaluator::mapTexelBand() {
+    constexpr std::size_t kMaxBands = 8;  // a view's lessons: a few map sizes
+    const Renderer& r = *renderer_;
+    reference();
+    std::string key = std::to_string(r.stats.mapSize);
+    for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 4; ++k) key += "," + exact(r.stats.lightViewProjection[c][k]);
+    auto found = truth_->bands.find(key);
+    if (found != truth_->bands.end()) return found->second;
+    if (truth_->bands.size() >= kMaxBands) truth_->bands.clear();
+    return truth_->bands[key] = mapTexelOnScreen(truth_->reference, r.camera,
+                                                 r.stats.lightViewProjection, r.stats.mapSize);
 }
 
 namespace {
@@ -200,13 +296,11 @@ Image Evaluator::renderWith(Renderer& other, const std::string& stage) {
 // shadows or a shader that recognises an id render would otherwise agree with itself.
 Accuracy Evaluator::mirrorAccuracy() {
     Renderer& r = *renderer_;
-    int w = context_->width(), h = context_->height();
     const ReferenceImage& ref = reference();
     std::vector<std::uint8_t> mask = mirrorMask(ref, r.scene());
-    Accuracy a = shadowAccuracy(shadowEvidence().figures);
-    r.allLit = false;
-    r.render(context_->framebuffer(), w, h);
-    Image shown = context_->read();
+    const ShadowEvidence e = shadowEvidence();
+    Accuracy a = shadowAccuracy(e.figures);
+    const Image& shown = e.withShadows;  // the stage as it is, mirror included
     auto ours = [&](Shipped kind, const std::string& method) {
         Renderer& other = shippedRenderer(kind);
         other.selectStage(r.stage().id);
@@ -214,11 +308,11 @@ Accuracy Evaluator::mirrorAccuracy() {
         other.params().set("mirror-method", method);
         return renderWith(other, r.stage().id);
     };
-    Image exact = ours(Shipped::Lit, "stencil");
+    Image stencil = ours(Shipped::Lit, "stencil");
     std::vector<int> seen = decodeIdImage(ours(Shipped::Ids, r.params().text("mirror-method")),
                                           mirrorId(r.scene()) - 1, kMirrorReflectance);
     a.mirrorIdPct = mirrorIdAgreementPct(ref, seen);
-    a.mirrorPsnrDb = psnrInMask(shown, exact, mask);
+    a.mirrorPsnrDb = psnrInMask(shown, stencil, mask);
     a.errorPct = 100.0 - a.mirrorIdPct;
     return a;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "metrics/shadow_metrics.h"
+#include "metrics/shadow_truth.h"
 #include "platform/headless.h"
 #include "reference/raytracer.h"
 #include "render/request.h"
@@ -36,15 +37,14 @@ Accuracy shadowAccuracy(const ShadowFigures& f);
 // The two renders and the classification behind a shadow stage's figures (diff images use them).
 struct ShadowEvidence {
     Image withShadows, allLit;
-    Image baseline;  // our own phong stage without its highlight: the lighting without shadows
     std::vector<std::uint8_t> shadowed;  // see Evaluator::shadowEvidence
-    std::vector<int> renderedIds;        // the object each pixel of the render shows
     ShadowFigures figures;
 };
 
-// Holds a context and renderer for the current (backend, tree, scene, size, overlay, camera) and
-// rebuilds them only when one of those changes, so a run compiles each stage's shaders once per
-// context.
+// Holds a context for the current (backend, tree, size) and a renderer for the current (scene,
+// overlay, camera) in it, and rebuilds each only when one of those changes, so a run compiles
+// each stage's shaders once per renderer. What follows from a view's truth alone is kept across
+// overlays (Truth below): grading a class, a student's row costs two renders and one pass.
 class Evaluator {
   public:
     // How far from the true shadow edge a rendered edge may be before it counts as an error.
@@ -66,7 +66,7 @@ class Evaluator {
     Renderer& renderer() { return *renderer_; }
 
     // Renders the current configuration and compares it with the reference: the shadow stages'
-    // figures, or the mirror's.
+    // figures, or the mirror's. Our own shaders' (no overlay) are kept by configuration.
     Accuracy accuracy();
     // The reference for the current camera, light and size (traced once, then reused).
     const ReferenceImage& reference();
@@ -74,8 +74,12 @@ class Evaluator {
     const std::vector<std::uint8_t>& shadowVisible();
     // The reference's own shading, lit and blocked (referenceShades), for the current view.
     const ReferenceShades& shades();
-    // How many references this evaluator traced (a class should trace each view once).
+    // How many references this evaluator traced (a class should trace each view once), and how
+    // many times it drew our shipped shaders' pictures of a view (ids, lighting: once a view).
     int tracedCount() const { return traced_; }
+    int shippedViewCount() const { return shippedViews_; }
+    // How many times accuracy() measured our own shaders (no overlay): once a configuration.
+    int oursMeasuredCount() const { return oursMeasured_; }
     // The shadow stages' half of accuracy(): the render with its map and with the map forced to
     // "everything lit", our own unshadowed lighting (phong) and an id render for coverage. A
     // pixel is shadowed where the render is clearly darker than the all-lit one, or the all-lit
@@ -83,6 +87,18 @@ class Evaluator {
     ShadowEvidence shadowEvidence();
 
   private:
+    // What the figures of a view take from our shipped shaders and the truth, whoever's shaders
+    // are measured: the luma of our lighting without shadows (empty where the stage's all-lit
+    // render is its own baseline) and with its highlight, and the truth's half of the figures
+    // (its evaluated pixels come from our id render).
+    struct ShippedView {
+        std::vector<float> baselineLuma, oursLuma;
+        ShadowTruth truth;
+    };
+    const ShippedView& shippedView();
+    // mapTexelOnScreen for the current view and the light view-projection and map size of the
+    // last render (they depend on the lesson's settings, not on the shaders measured).
+    const std::vector<float>& mapTexelBand();
     Accuracy mirrorAccuracy();
     // A renderer over the current scene with our shipped shaders only: what the stage's picture
     // is measured against, whatever the overlay does. Unhighlighted: the scene without its
@@ -93,27 +109,39 @@ class Evaluator {
 
     Backend backend_;
     EdgeTolerance tolerance_;
-    std::string key_;
+    std::string contextKey_, key_;
+    std::string overlay_;                   // the current renderer's
+    std::map<std::string, Accuracy> ours_;  // accuracy() of our shaders, by configuration
     std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<Renderer> shipped_[3];  // by Shipped
     glm::vec3 sceneLight_{0};
-    // The references of the views seen so far, kept across overlays and shader errors (a
-    // reference depends on the scene, size, camera and light only): grading a class in one
-    // evaluator traces each view once. Bounded (kMaxTruths, oldest dropped first).
+    // The references of the views seen so far and what follows from them alone, kept across
+    // overlays and shader errors (a reference depends on the scene, its displacement, the size,
+    // camera and light only): grading a class in one evaluator traces and measures each view's
+    // truth once. Bounded (kMaxTruths, fewer where they would take more than a quarter of the
+    // worker's memory: maxTruths; oldest dropped first).
     struct Truth {
         ReferenceImage reference;
         bool shaded = false;
         ReferenceShades shades;  // the reference's shading lit and blocked
         std::vector<std::uint8_t> visible;
+        ShadeShares shares;
+        // By backend, tree and unshadowed stage (our renders of the view).
+        std::map<std::string, std::shared_ptr<ShippedView>> shipped;
+        // By light view-projection and map size (mapTexelBand).
+        std::map<std::string, std::vector<float>> bands;
     };
     static constexpr std::size_t kMaxTruths = 8;
+    static std::size_t maxTruths(int width, int height);
     std::string sceneKey_;  // scene and size of the current renderer
     std::map<std::string, std::shared_ptr<Truth>> truths_;
     std::vector<std::string> truthOrder_;
     std::string referenceKey_;
     std::shared_ptr<Truth> truth_;  // the current view's
     int traced_ = 0;
+    int shippedViews_ = 0;
+    int oursMeasured_ = 0;
 };
 
 }  // namespace sl

@@ -33,13 +33,22 @@ glm::vec2 pixelCenterNdc(int i, int j, int width, int height) {
 }
 
 Ray pixelRay(const Camera& c, int i, int j, int width, int height) {
-    glm::vec2 ndc = pixelCenterNdc(i, j, width, height);
-    glm::mat4 invView = glm::inverse(viewMatrix(c));
-    float t = std::tan(glm::radians(c.fovyDegrees) * 0.5f);
-    float aspect = static_cast<float>(width) / static_cast<float>(height);
-    glm::vec3 dirCam(ndc.x * t * aspect, ndc.y * t, -1.0f);
-    glm::vec3 dir = glm::normalize(glm::vec3(invView * glm::vec4(dirCam, 0.0f)));
-    return {c.eye, dir};
+    return PixelRays(c, width, height)(i, j);
+}
+
+PixelRays::PixelRays(const Camera& c, int width, int height)
+    : invView_(glm::inverse(viewMatrix(c))),
+      eye_(c.eye),
+      tanHalfFovy_(std::tan(glm::radians(c.fovyDegrees) * 0.5f)),
+      aspect_(static_cast<float>(width) / static_cast<float>(height)),
+      width_(width),
+      height_(height) {}
+
+Ray PixelRays::operator()(int i, int j) const {
+    glm::vec2 ndc = pixelCenterNdc(i, j, width_, height_);
+    glm::vec3 dirCam(ndc.x * tanHalfFovy_ * aspect_, ndc.y * tanHalfFovy_, -1.0f);
+    glm::vec3 dir = glm::normalize(glm::vec3(invView_ * glm::vec4(dirCam, 0.0f)));
+    return {eye_, dir};
 }
 
 bool projectToPixel(const Camera& c, int width, int height, const glm::vec3& p, glm::vec2& pixel) {

@@ -28,6 +28,20 @@ glm::vec2 pixelCenterNdc(int i, int j, int width, int height);
 // The world-space ray from the eye through the centre of pixel (i, j).
 Ray pixelRay(const Camera& c, int i, int j, int width, int height);
 
+// pixelRay for every pixel of one W x H image, the camera's basis (the inverse view matrix)
+// computed once instead of per pixel; each ray is bit for bit pixelRay's.
+class PixelRays {
+  public:
+    PixelRays(const Camera& c, int width, int height);
+    Ray operator()(int i, int j) const;
+
+  private:
+    glm::mat4 invView_;
+    glm::vec3 eye_;
+    float tanHalfFovy_, aspect_;
+    int width_, height_;
+};
+
 // Project a world point to pixel coordinates (x right, y down, continuous; pixel (i,j) covers
 // [i, i+1) x [j, j+1)). Returns false when the point is behind the camera.
 bool projectToPixel(const Camera& c, int width, int height, const glm::vec3& p, glm::vec2& pixel);

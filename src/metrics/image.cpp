@@ -9,11 +9,6 @@
 
 namespace sl {
 
-float Image::luma(int i, int j) const {
-    const std::uint8_t* p = at(i, j);
-    return 0.299f * p[0] + 0.587f * p[1] + 0.114f * p[2];
-}
-
 namespace {
 
 std::string failure(const std::string& path, const std::string& why) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "math/camera.h"
+#include "metrics/distance.h"
 #include "metrics/image.h"
 #include "reference/raytracer.h"
 
@@ -102,7 +103,8 @@ struct ShadowFigureInputs {
 
 // `shadowed` comes from classifyShadowed (one byte per pixel, non-zero = shadowed) and must match
 // the reference size (std::invalid_argument otherwise), as must every non-empty input.
-// Percentages are 0 when nothing is counted.
+// Percentages are 0 when nothing is counted. (The evaluator keeps the truth's half of this per
+// view: shadow_truth.h.)
 ShadowFigures shadowFigures(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed,
                             const ShadowFigureInputs& inputs = {});
 
@@ -137,15 +139,18 @@ std::vector<std::uint8_t> shadowVisiblePixels(const ReferenceShades& shades, flo
 // luma(allLit) * kept by more than both thresholds (`relativeDrop` of the all-lit luma and
 // `absoluteDrop` levels). A black shadow (ambient dropped too) is off by the whole ambient, at
 // least 20 % of the lit luma; a shadow keeping half the diffuse light by 14-33 %.
+inline constexpr ClassifyOptions kShadowLevelOptions{0.10f, 6.0f};
 std::vector<std::uint8_t> shadowLevelOff(const Image& withShadows, const Image& allLit,
                                          const ReferenceShades& shades,
-                                         const ClassifyOptions& options = {0.10f, 6.0f});
+                                         const ClassifyOptions& options = kShadowLevelOptions);
 
 // Per pixel, the fraction (0..1) of its light the render loses: (allLit - withShadows) over
 // allLit * (1 - kept), the drop a hard shadow would make there (at least `absoluteDrop` levels,
 // so a pixel the light barely reaches does not divide by nothing).
+inline constexpr float kLightLostAbsoluteDrop = 6.0f;
 std::vector<float> lightLost(const Image& withShadows, const Image& allLit,
-                             const ReferenceShades& shades, float absoluteDrop = 6.0f);
+                             const ReferenceShades& shades,
+                             float absoluteDrop = kLightLostAbsoluteDrop);
 
 // Which pixels the figures count (the `evaluated` definition above).
 std::vector<std::uint8_t> evaluatedPixels(const ReferenceImage& ref,
@@ -160,10 +165,5 @@ std::vector<std::uint8_t> evaluatedPixels(const ReferenceImage& ref,
 Image diffImage(const ReferenceImage& ref, const std::vector<std::uint8_t>& shadowed,
                 const Image& withShadows, const std::vector<std::uint8_t>& evaluated = {},
                 const std::vector<std::uint8_t>& band = {});
-
-// Exact Euclidean distance transform: for every pixel of a width x height grid, the distance in
-// pixels to the nearest pixel with feature[k] != 0 (+infinity when there is none).
-std::vector<float> distanceToFeatures(const std::vector<std::uint8_t>& feature, int width,
-                                      int height);
 
 }  // namespace sl

@@ -86,6 +86,9 @@ class EglContextImpl : public HeadlessContext {
     }
     GLuint framebuffer() const override { return fbo_.id(); }
     const char* backendName() const override { return "egl"; }
+    bool makeCurrent() override {
+        return eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_);
+    }
 
   private:
     EGLDisplay display_;

@@ -18,6 +18,8 @@ class HeadlessContext {
     // The framebuffer the renderer should draw into (0 for OSMesa's own buffer).
     virtual GLuint framebuffer() const = 0;
     virtual const char* backendName() const = 0;
+    // Makes this context current again (another one may have been since), and says whether it is.
+    virtual bool makeCurrent() = 0;
     int width() const { return width_; }
     int height() const { return height_; }
     // Reads the framebuffer back, row 0 at the top.

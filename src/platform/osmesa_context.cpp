@@ -34,6 +34,9 @@ class OSMesaContextImpl : public HeadlessContext {
     ~OSMesaContextImpl() override { OSMesaDestroyContext(ctx_); }
     GLuint framebuffer() const override { return 0; }
     const char* backendName() const override { return "osmesa"; }
+    bool makeCurrent() override {
+        return OSMesaMakeCurrent(ctx_, pixels_.data(), GL_UNSIGNED_BYTE, width_, height_);
+    }
 
   private:
     OSMesaContext ctx_;

@@ -265,9 +265,10 @@ namespace {
 // hit point, in the direction of that ray's hit: at a sphere's limb, or a floor seen near
 // grazing, the tangent plane runs off almost parallel to the ray and the full continuation
 // would land far beyond the edge, in some other shadow.
-bool shadowChangesBeyond(const SceneIndex& index, const Camera& camera, const glm::vec3& light,
-                         const ReferencePixel& p, int i, int j, int width, int height) {
-    Ray ray = pixelRay(camera, i, j, width, height);
+bool shadowChangesBeyond(const SceneIndex& index, const Camera& camera, const PixelRays& rays,
+                         const glm::vec3& light, const ReferencePixel& p, int i, int j,
+                         int height) {
+    Ray ray = rays(i, j);
     float facing = glm::dot(ray.direction, p.normal);
     if (std::abs(facing) < 1e-6f) return false;
     float t = glm::dot(p.position - ray.origin, p.normal) / facing;
@@ -284,6 +285,7 @@ bool shadowChangesBeyond(const SceneIndex& index, const Camera& camera, const gl
 void markSilhouettes(const SceneIndex& index, const Camera& camera, const glm::vec3& lightPosition,
                      ReferenceImage& image) {
     const int w = image.width, h = image.height;
+    const PixelRays rays(camera, w, h);
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
             ReferencePixel& p = image.pixels[std::size_t(j) * w + i];
@@ -294,7 +296,7 @@ void markSilhouettes(const SceneIndex& index, const Camera& camera, const glm::v
                 if (ni < 0 || nj < 0 || ni >= w || nj >= h) continue;
                 const ReferencePixel& n = image.pixels[std::size_t(nj) * w + ni];
                 if (n.objectId == p.objectId && n.facesLight) continue;  // not a silhouette
-                if (shadowChangesBeyond(index, camera, lightPosition, p, ni, nj, w, h)) {
+                if (shadowChangesBeyond(index, camera, rays, lightPosition, p, ni, nj, h)) {
                     p.shadowEdgeAtSilhouette = true;
                     break;
                 }
@@ -322,13 +324,14 @@ ReferenceImage traceReference(const Scene& scene, const Camera& camera,
     threads = std::min(threads, height);
 
     const SceneIndex index(scene);
+    const PixelRays rays(camera, width, height);
     // Every pixel is computed on its own, so which thread does a row cannot change the result.
     // Rows are dealt out round-robin so each thread gets a share of the busy and the empty rows.
     auto traceRows = [&](int first) {
         for (int j = first; j < height; j += threads)
             for (int i = 0; i < width; ++i)
                 image.pixels[std::size_t(j) * width + i] =
-                    tracePixel(index, pixelRay(camera, i, j, width, height), lightPosition);
+                    tracePixel(index, rays(i, j), lightPosition);
     };
     std::vector<std::thread> workers;
     for (int k = 1; k < threads; ++k) workers.emplace_back(traceRows, k);
