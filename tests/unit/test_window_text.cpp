@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "platform/window_text.h"
+#include "window/window_text.h"
 #include "render/hud.h"
 
 using namespace sl;
