@@ -134,6 +134,7 @@ bool WindowSession::selectStage(std::size_t index, GlslTree sessionTree) {
     if (sessionTree != tree_) reloadErrors_.clear();  // the other tree's: not about this picture
     tree_ = sessionTree;
     renderError_.clear();
+    rebuildShown();  // programs adopted while another renderer was on screen
     return true;
 }
 
@@ -218,22 +219,51 @@ void WindowSession::settleTrials() {
     }
 }
 
+// New programs are built here for the renderer on screen at once, for the others when they are
+// shown: a frame's worth of compiling, not one per scene and tree the session has visited.
 void WindowSession::adopt(GlslTree tree, const std::set<std::string>& folders, bool force) {
-    std::vector<std::string> errors;
     for (auto& [key, slot] : slots_) {
         if (slot.renderer->shaders().tree() != tree) continue;
-        auto e = slot.renderer->reloadShaders(force, &folders);
-        errors.insert(errors.end(), e.begin(), e.end());
+        Deferred& later = deferred_[key];
+        later.folders.insert(folders.begin(), folders.end());
+        later.force = later.force || force;
     }
-    for (const auto& e : errors)
-        if (std::find(reloadErrors_.begin(), reloadErrors_.end(), e) == reloadErrors_.end()) {
-            reloadErrors_.push_back(e);
-            say(std::cerr,
-                "shadowlab: shader error (keeping the last good program): " + oneLine(e));
-        }
-    if (errors.empty()) reloadErrors_.clear();
     renderError_.clear();
     printedRenderError_.clear();
+    rebuildShown();
+}
+
+void WindowSession::rebuildShown() {
+    for (auto& [key, slot] : slots_) {
+        if (&slot != slot_) continue;
+        auto later = deferred_.find(key);
+        if (later == deferred_.end()) return;
+        // Only from files that drew in the worker: a folder saved again since waits for its
+        // trial (the files on disk are what a rebuild reads).
+        const GlslTree tree = slot.renderer->shaders().tree();
+        auto good = [&](const std::string& folder) {
+            if (findStage(folder)) return watchdog_->diskIsGood(tree, folder);
+            for (const StageInfo& s : stageRegistry())  // shared: every stage drew with it
+                if (!(s.legacyOnly && tree == GlslTree::Core) && !watchdog_->diskIsGood(tree, s.id))
+                    return false;
+            return true;
+        };
+        std::set<std::string> now, wait;
+        for (const auto& f : later->second.folders) (good(f) ? now : wait).insert(f);
+        const auto errors = slot.renderer->reloadShaders(later->second.force, &now);
+        if (wait.empty())
+            deferred_.erase(later);
+        else
+            later->second.folders = wait;
+        for (const auto& e : errors)
+            if (std::find(reloadErrors_.begin(), reloadErrors_.end(), e) == reloadErrors_.end()) {
+                reloadErrors_.push_back(e);
+                say(std::cerr,
+                    "shadowlab: shader error (keeping the last good program): " + oneLine(e));
+            }
+        if (errors.empty()) reloadErrors_.clear();
+        return;
+    }
 }
 
 bool WindowSession::handleTrialEvents() {

@@ -70,6 +70,7 @@ class WindowSession {
     Watchdog::OnScreen onScreen() const;
     TrialJob jobFor(GlslTree tree, const std::string& stage);
     void adopt(GlslTree tree, const std::set<std::string>& folders, bool force);
+    void rebuildShown();
     std::vector<std::string> shownErrors() const;  // the on-screen stage's first
     void flash(const std::string& text, bool error);
     bool handleTrialEvents();  // true when something changed
@@ -177,6 +178,11 @@ class WindowSession {
     std::vector<std::string> pageText_;   // ... and its pages in the picture's place
     int panelLines_ = 1, pageLines_ = 1;  // what PgUp/PgDn move by
     std::set<std::string> drawnHere_;     // "tree/scene/stage" a renderer here built and drew
+    struct Deferred {  // programs adopted while a slot was not on screen: rebuilt when it is
+        std::set<std::string> folders;
+        bool force = false;
+    };
+    std::map<std::string, Deferred> deferred_;  // by slots_' key
 
     std::vector<std::string> reloadErrors_;  // the window's own rebuild of adopted programs
     std::string renderError_, printedRenderError_;

@@ -284,36 +284,44 @@ void WindowSession::drawPage(const Rect& area, const std::vector<HudLine>& lines
 // reflected eye' and at', and the reflected camera's frustum, x to the right and z down the page.
 void WindowSession::drawTopView(const Rect& area, const WindowLesson& lesson) {
     const MirrorTopView v = practiceTopView(lesson.p1, lesson.p2, lesson.eye, lesson.at);
-    drawPage(area, {}, glm::vec4(0.96f, 0.96f, 0.94f, 1), nullptr);
-    const float scale = textScale(width_, height_);
+    drawPage(area, {}, glm::vec4(0.96f, 0.96f, 0.94f, 1), nullptr);  // the paper
+    const float scale = std::max(1.0f, textScale(width_, height_) * 0.6f);
+    const glm::vec4 ink(0.1f, 0.1f, 0.1f, 1), mirror(0.1f, 0.35f, 0.9f, 1),
+        reflected(0.85f, 0.35f, 0.05f, 1);
+    HudBlock caption;  // what it shows, wrapped to the half
+    caption.panel = glm::vec4(0);
+    caption.lines = {{"the slides' exercise from above: the mirror p1-p2, eye and at, the "
+                      "reflected eye' and at' and the frustum",
+                      ink},
+                     {v.valid ? oneLine(describeTopView(v)) : v.reason, reflected}};
+    glViewport(area.x, area.y, area.width, area.height);
+    const auto panels = layoutHud({caption}, area.width, area.height, scale, HudRoom{0.4f, 0});
+    hud_.draw(hudShaders_, panels, area.width, area.height, scale);
+    const float top = hudBands(panels, area.height, scale).first;
     std::vector<glm::vec2> all = {v.p1, v.p2, v.eye, v.at};
     if (v.valid) all.insert(all.end(), {v.eyePrime, v.atPrime, v.far1, v.far2});
     glm::vec2 lo = all[0], hi = all[0];
     for (const glm::vec2& p : all) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    const float top = 3 * Hud::kLineHeight * scale;  // the caption
-    const float room = 2 * Hud::kLineHeight * scale;
+    const float room = 2 * Hud::kLineHeight * scale;  // for the labels
     const float w = area.width - 2 * room, h = area.height - top - 2 * room;
-    const float unit = std::min(w / std::max(hi.x - lo.x, 1e-3f), h / std::max(hi.y - lo.y, 1e-3f));
+    const float unit = std::max(
+        0.0f, std::min(w / std::max(hi.x - lo.x, 1e-3f), h / std::max(hi.y - lo.y, 1e-3f)));
     const glm::vec2 origin(room + (w - unit * (hi.x - lo.x)) / 2,
                            top + room + (h - unit * (hi.y - lo.y)) / 2);
     auto at = [&](glm::vec2 p) { return origin + unit * (p - lo); };  // z grows down the page
-    glViewport(area.x, area.y, area.width, area.height);
-    const glm::vec4 ink(0.1f, 0.1f, 0.1f, 1), mirror(0.1f, 0.35f, 0.9f, 1),
-        reflected(0.85f, 0.35f, 0.05f, 1);
+    glLineWidth(std::max(1.0f, scale / 2));  // a compatibility context: wide lines allowed
     hud_.drawLines(hudShaders_, {at(v.eye), at(v.at)}, ink, area.width, area.height);
-    if (v.valid) {
+    if (v.valid)
         hud_.drawLines(hudShaders_,
                        {at(v.eyePrime), at(v.atPrime), at(v.eyePrime), at(v.far1), at(v.eyePrime),
                         at(v.far2), at(v.far1), at(v.far2), at(v.eye), at(v.eyePrime)},
                        reflected, area.width, area.height);
-    }
-    for (int k = -2; k <= 2; ++k) {  // the mirror a few pixels thick
-        const glm::vec2 d(0, float(k) * 0.5f);
-        hud_.drawLines(hudShaders_, {at(v.p1) + d, at(v.p2) + d}, mirror, area.width, area.height);
-    }
+    glLineWidth(std::max(2.0f, scale * 1.5f));
+    hud_.drawLines(hudShaders_, {at(v.p1), at(v.p2)}, mirror, area.width, area.height);
+    glLineWidth(1);
     auto label = [&](const std::string& text, glm::vec2 p, const glm::vec4& colour) {
         hud_.drawLabel(hudShaders_, {text, colour}, at(p).x + 4, at(p).y + 4, area.width,
-                       area.height, std::max(1.0f, scale * 0.6f));
+                       area.height, scale);
     };
     label("p1", v.p1, mirror);
     label("p2", v.p2, mirror);
@@ -323,11 +331,6 @@ void WindowSession::drawTopView(const Rect& area, const WindowLesson& lesson) {
         label("eye'", v.eyePrime, reflected);
         label("at'", v.atPrime, reflected);
     }
-    hud_.drawLabel(hudShaders_, {"from above: the mirror p1-p2, eye and at, eye' and at'", ink},
-                   Hud::kPad * scale, Hud::kPad * scale, area.width, area.height, scale * 0.6f);
-    hud_.drawLabel(hudShaders_, {v.valid ? oneLine(describeTopView(v)) : v.reason, reflected},
-                   Hud::kPad * scale, (Hud::kPad + 1.2f * Hud::kLineHeight) * scale, area.width,
-                   area.height, scale * 0.5f);
     glViewport(0, 0, width_, height_);
 }
 

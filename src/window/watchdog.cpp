@@ -8,10 +8,11 @@ namespace sl {
 
 namespace {
 
-// Folders every stage's programs read: the shared include, the light view's and the map view's
-// programs, the window's text.
+// Folders every stage's programs read: the shared include and the map view's program
+// (common/), the light view's (phong/). (hud/ is not: the window's text is always drawn with
+// ours.)
 bool sharedFolder(const std::string& folder) {
-    return folder == "common" || folder == "phong" || folder == "hud";
+    return folder == "common" || folder == "phong";
 }
 
 double secondsOf(Watchdog::Clock::time_point t) {

@@ -1,6 +1,6 @@
 // What the window may draw, and what it tries next. Each stage of each tree has a record: the
-// fingerprint of its files (its own folder and the shared common/, phong/ and hud/, in our tree
-// and the student's folder) with a verdict, and the parameter values its programs drew with in
+// fingerprint of its files (its own folder and the shared common/ and phong/, in our tree and
+// the student's folder) with a verdict, and the parameter values its programs drew with in
 // the worker. A settled save makes only the stages whose files changed pending; a pending
 // stage, and values on screen that its programs have not drawn with yet, are tried in the
 // bounded worker one job at a time (the picture on screen first); nothing pending waits

@@ -50,7 +50,8 @@ struct WindowArgs {
 // The lessons of expectations.json and slides_examples/, in that order per stage.
 std::vector<WindowLesson> windowLessons();
 
-// Opens the window and runs it; the exit code.
+// Opens the window and runs it, then ends the process with its exit code (returns only by
+// throwing, before the window opens or while it does).
 int runWindow(const WindowArgs& args);
 
 }  // namespace sl

@@ -1,6 +1,7 @@
 // `shadowlab window`'s loop: the OS window's events handed to the session, the scripted input
 // of tests (--frames, --keys, --resize-test), --state, and the exit code.
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 
@@ -237,7 +238,8 @@ int WindowLoop::run() {
     session_ = std::make_unique<WindowSession>(args_);
     runWindowLoop(*this, kPollMs, args_.frames > 0);
     session_->finishShots();
-    session_.reset();  // the trial worker is killed with it
+    // The session is not taken down: the process ends (runWindow), and with it a trial worker
+    // (it dies with the window's thread that forked it, PR_SET_PDEATHSIG) and the context.
     return exitCode_;
 }
 
@@ -254,8 +256,14 @@ int runWindow(const WindowArgs& args) {
     // An unknown stage is a usage error before any display is opened (the session checks the
     // rest once it has a context: fixed runs legacy, mirror brings its scene).
     if (!findStage(args.request.stage)) validateRequest(args.request);
-    WindowLoop loop(args);
-    return loop.run();
+    const int code = WindowLoop(args).run();
+    // Everything of ours is done (shots written, the state file renamed into place); what is
+    // left is tearing down renderers, the driver and freeglut, and reaping a trial worker that
+    // may be freeing gigabytes: Esc ends the process now instead.
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    std::_Exit(code);
 }
 
 }  // namespace sl
