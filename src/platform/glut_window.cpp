@@ -150,5 +150,9 @@ void callLater(int ms, void (*what)(int), int value) {
 void resizeWindow(int width, int height) {
     glutReshapeWindow(width, height);
 }
+void screenSize(int& width, int& height) {
+    width = glutGet(GLUT_SCREEN_WIDTH);
+    height = glutGet(GLUT_SCREEN_HEIGHT);
+}
 
 }  // namespace sl

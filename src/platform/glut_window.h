@@ -39,5 +39,7 @@ void toggleFullScreen();
 void callLater(int ms, void (*what)(int), int value);
 // Asks freeglut to resize the window (tests).
 void resizeWindow(int width, int height);
+// The screen's size in pixels (what a full-screen window will be).
+void screenSize(int& width, int& height);
 
 }  // namespace sl

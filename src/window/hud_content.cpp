@@ -171,7 +171,8 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         const std::string lesson = lessonLine();
         if (!lesson.empty()) top.lines.push_back({lesson, kWhite});
         top.maxLines = 6;
-        top.keepLines = 2;      // the title line, wrapped on a small window
+        top.keepLines = 2;  // the title line, wrapped on a small window
+        top.more = "i: the lesson and the rest (N more lines)";
         if (!errors.empty()) {  // first: the first error's file, line and message, wrapped
             HudBlock e;
             e.lines = errorLines(false);

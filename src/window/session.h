@@ -29,6 +29,13 @@ class WindowSession {
     explicit WindowSession(const WindowArgs& args);
     ~WindowSession();
 
+    // The window's size before it draws at it (trials are drawn at it: a loop's cost grows
+    // with the pixels).
+    void resized(int width, int height) {
+        width_ = width;
+        height_ = height;
+    }
+
     // Input. Each returns true when the picture must be redrawn.
     bool key(unsigned char key, bool shift);
     bool special(SpecialKey key, bool shift);

@@ -36,6 +36,7 @@ class WindowLoop : public WindowEvents {
     void reshape(int w, int h) override {
         width_ = w;
         height_ = h;
+        if (w > 0 && h > 0) session_->resized(w, h);
         postRedisplay();
     }
     void key(unsigned char key, bool shift) override;
@@ -236,6 +237,11 @@ int WindowLoop::run() {
     width_ = args_.request.width;
     height_ = args_.request.height;
     session_ = std::make_unique<WindowSession>(args_);
+    if (args_.fullscreen) {  // the first trials are drawn at the size the picture will have
+        int w = 0, h = 0;
+        screenSize(w, h);
+        if (w > 0 && h > 0) session_->resized(w, h);
+    }
     runWindowLoop(*this, kPollMs, args_.frames > 0);
     session_->finishShots();
     // The session is not taken down: the process ends (runWindow), and with it a trial worker

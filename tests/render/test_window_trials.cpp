@@ -216,6 +216,7 @@ TEST(LiveWindowTrials, SaveTriedAtOnceAloneAndKeysAnsweredMeanwhile) {
         240))
         << w.state().dump() << w.err();
     const auto s = w.state();
+    std::cout << "refused: " << s["error"].get<std::string>() << "\n";
     EXPECT_EQ(s["picture"], "stage") << "the last good program draws";
     for (const auto& t : trialsSince(s, saved)) EXPECT_EQ(t["stage"], "margin") << t.dump();
     const auto last = trialsSince(s, saved).back();
@@ -324,4 +325,38 @@ TEST(LiveWindowTrials, LostWorkerIsNoticedAndSaid) {
     ASSERT_TRUE(w.keys("r"));
     EXPECT_TRUE(w.waitState([&](const auto& s) { return s["trial"]["count"] > count; }, 10));
     EXPECT_EQ(w.quit(), 0) << w.err();
+}
+
+// `r`, `p` and Esc at a projector's size with a student's folder, on the loaded machine: `r`
+// tries the stage on screen again and says so, `p` saves the picture and says where, Esc ends
+// the process. Their times are printed (the README quotes them); what is asserted is that each
+// happens.
+TEST(LiveWindowTrials, ReloadShotAndEscAnswer) {
+    BusyCores busy;
+    std::string dir = tempDir("live-trials-keys-rpe");
+    copyOurs(dir, "margin");
+    LiveWindow w("--fullscreen --shaders mine --stage margin --state state.json", dir, true,
+                 "1920x1080");
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return settled(s) && s["width"] == 1920; }, 180))
+        << w.state().dump() << w.err();
+    for (int k = 1; k <= 2; ++k) {
+        const int reloads = countLines(w.out(), "shadowlab: shaders reloaded");
+        auto pressed = Clock::now();
+        ASSERT_TRUE(w.keys("r"));
+        ASSERT_TRUE(waitUntil(
+            [&] { return countLines(w.out(), "shadowlab: shaders reloaded") > reloads; }, 120))
+            << w.out() << w.err();
+        std::cout << "r: reloaded after "
+                  << std::chrono::duration<double>(Clock::now() - pressed).count() << " s\n";
+        pressed = Clock::now();
+        ASSERT_TRUE(w.keys("p"));
+        ASSERT_TRUE(waitUntil([&] { return countLines(w.out(), "saved ") >= k; }, 60)) << w.out();
+        std::cout << "p: saved after "
+                  << std::chrono::duration<double>(Clock::now() - pressed).count() << " s\n";
+    }
+    const auto escape = Clock::now();
+    EXPECT_EQ(w.quit(), 0) << w.err();
+    std::cout << "Esc: the process ended after "
+              << std::chrono::duration<double>(Clock::now() - escape).count() << " s\n";
 }
