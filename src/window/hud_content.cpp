@@ -15,14 +15,6 @@ const glm::vec4 kWhite(1), kGrey(0.85f, 0.85f, 0.85f, 1), kYellow(1, 1, 0.6f, 1)
     kErrorTitle(1, 0.7f, 0.6f, 1);
 const glm::vec4 kErrorPanel(0.25f, 0.02f, 0.02f, 0.92f);
 
-std::vector<std::string> linesOf(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);)
-        if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
-    return lines;
-}
-
 }  // namespace
 
 const char* const WindowSession::kTryingLine =
@@ -101,7 +93,7 @@ std::vector<HudLine> WindowSession::errorLines(bool all) const {
     if (!all) return lines;
     lines.front().color = kErrorTitle;
     for (const auto& e : errors)
-        for (const auto& line : linesOf(e)) lines.push_back({line, kErrorText});
+        for (const auto& line : nonBlankLines(e)) lines.push_back({line, kErrorText});
     return lines;
 }
 
@@ -110,7 +102,7 @@ std::vector<HudLine> WindowSession::errorPage(const std::string& why) const {
     std::vector<HudLine> lines = {
         {"no good program for " + renderer().stage().id + " yet, so no picture:", kErrorTitle}};
     const std::string first = firstErrorLine(why);  // the line to read first, marked
-    for (const auto& line : linesOf(why))
+    for (const auto& line : nonBlankLines(why))
         lines.push_back({line, firstErrorLine(line) == first ? kYellow : kErrorText});
     lines.push_back({"save a repair: it is tried at once (r: try again now)", kGrey});
     return lines;
@@ -124,7 +116,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
     const std::string legend = viewLegend(s, r.view);
     const auto errors = shownErrors();
     std::size_t errorLinesTotal = 0;
-    for (const auto& e : errors) errorLinesTotal += linesOf(e).size();
+    for (const auto& e : errors) errorLinesTotal += nonBlankLines(e).size();
     auto addLegendAndFlash = [&] {  // at the bottom, in both modes
         if (!legend.empty()) {
             HudBlock b;

@@ -76,12 +76,17 @@ const std::vector<std::string>& windowHelp() {
     return help;
 }
 
-std::string firstErrorLine(const std::string& message) {
+std::vector<std::string> nonBlankLines(const std::string& message) {
+    std::vector<std::string> lines;
     std::istringstream in(message);
-    std::string line, first;
-    while (std::getline(in, line)) {
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        if (first.empty()) first = line;
+    for (std::string line; std::getline(in, line);)
+        if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
+    return lines;
+}
+
+std::string firstErrorLine(const std::string& message) {
+    const auto lines = nonBlankLines(message);
+    for (const std::string& line : lines) {
         // PATH:LINE: or PATH:LINE:COLUMN: with no space in PATH
         for (std::size_t colon = line.find(':'); colon != std::string::npos;
              colon = line.find(':', colon + 1)) {
@@ -105,16 +110,12 @@ std::string firstErrorLine(const std::string& message) {
             return place + ": " + (before.empty() ? "" : before + ": ") + after;
         }
     }
-    return first;
+    return lines.empty() ? "" : lines.front();
 }
 
 std::string oneLine(const std::string& message) {
-    std::istringstream in(message);
-    std::string line, out;
-    while (std::getline(in, line)) {
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        out += (out.empty() ? "" : " | ") + line;
-    }
+    std::string out;
+    for (const std::string& line : nonBlankLines(message)) out += (out.empty() ? "" : " | ") + line;
     return out;
 }
 

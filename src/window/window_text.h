@@ -22,6 +22,9 @@ std::string shotFileName(const std::string& stage, const std::string& tree, cons
 // Every key the window knows, one line each ("key: what it does").
 const std::vector<std::string>& windowHelp();
 
+// The lines of a message that hold more than blanks.
+std::vector<std::string> nonBlankLines(const std::string& message);
+
 // Joins a multi-line message into one line (" | " between its lines), for the terminal.
 std::string oneLine(const std::string& message);
 

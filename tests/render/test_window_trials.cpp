@@ -52,6 +52,20 @@ bool settled(const nlohmann::json& s) {
     return s["trying"] == false && s["tryingValues"] == false && s["picture"] == "stage";
 }
 
+// The window full screen on a 1920x1080 projector with the folder DIR/mine (margin's files, a
+// copy of ours unless the test wrote others), once its first trials are done.
+std::unique_ptr<LiveWindow> onTheProjector(const std::string& dir) {
+    if (!fs::exists(dir + "/mine/margin")) copyOurs(dir, "margin");
+    auto w = std::make_unique<LiveWindow>(
+        "--fullscreen --shaders mine --stage margin --state state.json", dir, true, "1920x1080");
+    EXPECT_TRUE(w->ready()) << w->err();
+    EXPECT_TRUE(w->waitState(
+        [](const auto& s) { return settled(s) && s["width"] == 1920 && s["trying"] == false; },
+        180))
+        << w->state().dump() << w->err();
+    return w;
+}
+
 // Every trial in the state that began at or after `since` (steady clock seconds).
 std::vector<nlohmann::json> trialsSince(const nlohmann::json& s, double since) {
     std::vector<nlohmann::json> out;
@@ -105,13 +119,9 @@ int textRowsOfColour(const Image& img, int from, int to, std::uint8_t r, std::ui
 TEST(LiveWindowTrials, LessonsAndSplitOfACopyOfOursDrawWithinTheBudget) {
     BusyCores busy;
     ASSERT_GT(busy.count(), 0u);
-    std::string dir = tempDir("live-trials-lessons");
-    copyOurs(dir, "margin");
-    LiveWindow w("--fullscreen --shaders mine --stage margin --state state.json", dir, true,
-                 "1920x1080");
-    ASSERT_TRUE(w.ready()) << w.err();
-    ASSERT_TRUE(w.waitState([](const auto& s) { return settled(s) && s["width"] == 1920; }, 180))
-        << w.state().dump() << w.err();
+    auto window = onTheProjector(tempDir("live-trials-lessons"));
+    LiveWindow& w = *window;
+    ASSERT_TRUE(w.ready());
     // The folder holds margin's files only: margin alone is tried.
     for (const auto& t : w.state()["trials"]) {
         EXPECT_EQ(t["stage"], "margin") << t.dump();
@@ -174,15 +184,9 @@ TEST(LiveWindowTrials, SaveTriedAtOnceAloneAndKeysAnsweredMeanwhile) {
     std::string dir = tempDir("live-trials-keys");
     copyOurs(dir, "margin");
     copyOurs(dir, "hardware");
-    LiveWindow w("--fullscreen --shaders mine --stage margin --state state.json", dir, true,
-                 "1920x1080");
-    ASSERT_TRUE(w.ready()) << w.err();
-    ASSERT_TRUE(w.waitState(
-        [](const auto& s) {
-            return settled(s) && s["width"] == 1920 && s["trial"]["count"] == 2 &&
-                   s["trying"] == false;
-        },
-        180))
+    auto window = onTheProjector(dir);
+    LiveWindow& w = *window;
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["trial"]["count"] == 2; }, 180))
         << w.state().dump() << w.err();
     std::vector<double> idle;
     for (int k = 0; k < 5; ++k) idle.push_back(answerSeconds(w, "Tab"));
@@ -232,17 +236,14 @@ TEST(LiveWindowTrials, SaveTriedAtOnceAloneAndKeysAnsweredMeanwhile) {
 TEST(LiveWindowTrials, CompileErrorReadableAtAGlance) {
     BusyCores busy;
     std::string dir = tempDir("live-trials-error");
-    copyOurs(dir, "margin");
     const std::string good = readText(kOurs + "margin/lit.frag");
     const std::string fine = "return margin;";
     const std::size_t at = good.find(fine);
     ASSERT_NE(at, std::string::npos);
     const long line = std::count(good.begin(), good.begin() + long(at), '\n') + 1;
-    LiveWindow w("--fullscreen --shaders mine --stage margin --state state.json", dir, true,
-                 "1920x1080");
-    ASSERT_TRUE(w.ready()) << w.err();
-    ASSERT_TRUE(w.waitState([](const auto& s) { return settled(s) && s["width"] == 1920; }, 180))
-        << w.state().dump() << w.err();
+    auto window = onTheProjector(dir);
+    LiveWindow& w = *window;
+    ASSERT_TRUE(w.ready());
     save(dir + "/mine/margin/lit.frag", replaced(good, fine, "return margin +;"));
     const std::string place = "mine/margin/lit.frag:" + std::to_string(line) + ":";
     auto shownLine = [&](const nlohmann::json& s) {
@@ -333,13 +334,9 @@ TEST(LiveWindowTrials, LostWorkerIsNoticedAndSaid) {
 // happens.
 TEST(LiveWindowTrials, ReloadShotAndEscAnswer) {
     BusyCores busy;
-    std::string dir = tempDir("live-trials-keys-rpe");
-    copyOurs(dir, "margin");
-    LiveWindow w("--fullscreen --shaders mine --stage margin --state state.json", dir, true,
-                 "1920x1080");
-    ASSERT_TRUE(w.ready()) << w.err();
-    ASSERT_TRUE(w.waitState([](const auto& s) { return settled(s) && s["width"] == 1920; }, 180))
-        << w.state().dump() << w.err();
+    auto window = onTheProjector(tempDir("live-trials-keys-rpe"));
+    LiveWindow& w = *window;
+    ASSERT_TRUE(w.ready());
     for (int k = 1; k <= 2; ++k) {
         const int reloads = countLines(w.out(), "shadowlab: shaders reloaded");
         auto pressed = Clock::now();
