@@ -130,6 +130,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
             b.bottom = true;
             b.lines = {{flash_, flashIsError_ ? kErrorText : kGreen}};
             b.maxLines = 3;
+            if (flashIsError_) b.more = "(N more lines: the terminal has all of it)";
             b.panel = flashIsError_ ? kErrorPanel : glm::vec4(0, 0, 0, 0.75f);
             blocks.push_back(b);
         }

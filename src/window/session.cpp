@@ -117,7 +117,7 @@ bool WindowSession::selectStage(std::size_t index, GlslTree sessionTree) {
         scene = sceneFor(s);
         next = &slotFor(tree, scene, s.id);
     } catch (const std::exception& e) {
-        flash(std::string("cannot show stage '") + s.id + "': " + e.what(), true);
+        complain(std::string("cannot show stage '") + s.id + "': " + e.what());
         return true;
     }
     Renderer& r = *next->renderer;
@@ -300,8 +300,7 @@ bool WindowSession::handleTrialEvents() {
                 break;
             }
             case Watchdog::Event::Kind::Lost:
-                say(std::cerr, "shadowlab: " + oneLine(e.what));
-                flash(e.what, true);
+                complain(e.what);
                 break;
             case Watchdog::Event::Kind::ValueRefused: {
                 std::string values;
@@ -311,8 +310,7 @@ bool WindowSession::handleTrialEvents() {
                                          (values.empty() ? std::string("the defaults") : values) +
                                          "): " + oneLine(e.what) +
                                          "; the last values that drew show";
-                say(std::cerr, "shadowlab: " + line);
-                flash(line, true);
+                complain(line);
                 // On screen, back to what drew (if the stage still shows these values).
                 Renderer& r = renderer();
                 if (shown && nonDefault(r.params()) == e.sets)
@@ -352,6 +350,11 @@ std::vector<std::string> WindowSession::shownErrors() const {
     }
     for (const auto& e : reloadErrors_) add(e);
     return errors;
+}
+
+void WindowSession::complain(const std::string& text) {
+    say(std::cerr, "shadowlab: " + oneLine(text));
+    flash(text, true);
 }
 
 void WindowSession::flash(const std::string& text, bool error) {

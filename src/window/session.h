@@ -80,7 +80,8 @@ class WindowSession {
     void rebuildShown();
     std::vector<std::string> shownErrors() const;  // the on-screen stage's first
     void flash(const std::string& text, bool error);
-    bool handleTrialEvents();  // true when something changed
+    void complain(const std::string& text);  // on the HUD and one line on stderr
+    bool handleTrialEvents();                // true when something changed
     static Sets nonDefault(const ParamSet& params);
     static void applySets(ParamSet& params, const Sets& sets);  // defaults, then these
     static bool offers(const StageInfo& stage, ViewMode view);

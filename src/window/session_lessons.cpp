@@ -54,7 +54,7 @@ void WindowSession::nextLesson() {
         if (!e.empty()) refused = e;
     }
     if (offers(r.stage(), l.view)) r.view = l.view;
-    if (!refused.empty()) flash("n: " + refused, true);  // else the HUD names the lesson
+    if (!refused.empty()) complain("n: " + refused);  // else the HUD names the lesson
 }
 
 std::string WindowSession::lessonLine() const {

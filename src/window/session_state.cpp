@@ -35,7 +35,7 @@ Image WindowSession::readPixels() const {
 void WindowSession::saveShot() {
     Renderer& r = renderer();
     if (width_ <= 0 || height_ <= 0) {
-        flash("p: the window has no pixels to save (minimised?)", true);
+        complain("p: the window has no pixels to save (minimised?)");
         return;
     }
     namespace fs = std::filesystem;
@@ -62,9 +62,7 @@ void WindowSession::saveShot() {
 
 void WindowSession::shotSaid(const std::string& path, const std::string& error) {
     if (!error.empty()) {  // shown and reported; the session goes on and its exit code stays
-        std::string line = "p: could not save into '" + args_.shots + "': " + error;
-        std::cerr << "shadowlab: " << line << std::endl;
-        flash(line, true);
+        complain("p: could not save into '" + args_.shots + "': " + error);
         return;
     }
     std::cout << "saved " << path << std::endl;
@@ -93,7 +91,7 @@ nlohmann::json WindowSession::state() const {
     const std::vector<std::string> errors = shownErrors();
     j["errors"] = errors.size();
     j["error"] = errors.empty() ? "" : oneLine(errors[0]);
-    j["trying"] = watchdog_->running();
+    j["trying"] = watchdog_->busy(onScreen(), tree_);  // a trial runs, or waits to start
     j["tryingValues"] = !valuesLine().empty();
     // "stage", "trying" (nothing of the files drew yet), "none" (no good program: the reason
     // shows), "help" (the keys in its place)
