@@ -21,6 +21,24 @@ float sceneFloorHeight(const Scene& scene) {
     return std::isfinite(lowest) ? lowest : 0.0f;
 }
 
+float sceneReceiverHeight(const Scene& scene) {
+    const Object* lowest = nullptr;
+    float bottom = std::numeric_limits<float>::infinity();
+    for (const Object& o : scene.objects) {
+        Scene one;
+        one.objects = {o};
+        const float b = sceneFloorHeight(one);
+        if (b < bottom) bottom = b, lowest = &o;
+    }
+    if (!lowest) return 0.0f;
+    const Object& o = *lowest;
+    if (o.kind == PrimitiveKind::Box && o.size.y * 4 <= std::min(o.size.x, o.size.z))
+        return o.center.y + 0.5f * o.size.y;  // a slab: its top
+    if (o.kind == PrimitiveKind::Quad && std::abs(glm::normalize(o.normal).y) > 0.99f)
+        return o.center.y;  // a horizontal quad
+    return bottom;
+}
+
 Camera orbitCamera(const Camera& c, float yaw, float pitch, float floorY, float clearance) {
     glm::vec3 d = c.eye - c.at;
     float radius = glm::length(d);

@@ -8,6 +8,10 @@ namespace sl {
 
 // The lowest point of the scene's objects (the floor's height in the lecture scenes).
 float sceneFloorHeight(const Scene& scene);
+// What an orbiting camera must stay above: the top of the floor when the lowest object is a
+// horizontal slab or quad (the lecture scenes' floor: its top at y = 0, its bottom at -0.1),
+// else the lowest point.
+float sceneReceiverHeight(const Scene& scene);
 
 // Turns the camera around `at` by yaw and pitch (radians); the eye stays at least `clearance`
 // above `floorY` and short of straight up, whatever the drag.

@@ -1,14 +1,15 @@
 #include "platform/glut_window.h"
 
+// clang-format off
+#include "gl/gl.h"  // glad's, before freeglut, which would pull in GL/gl.h
 #include <GL/freeglut.h>
+// clang-format on
 
 #include <cstdio>
-#include <fstream>
-#include <iostream>
+#include <stdexcept>
+#include <string>
 
-#include "gl/gl.h"  // before freeglut, which would pull in GL/gl.h
 #include "gl/loader.h"
-#include "platform/window_session.h"
 #include "platform/x11_keys.h"
 #include "platform/x11_window.h"
 
@@ -16,208 +17,67 @@ namespace sl {
 
 namespace {
 
-// The command line's exit codes (app/options.h names them; the platform does not include app/).
-constexpr int kOk = 0, kBadInput = 2, kGlFailure = 3;
+// freeglut's callbacks are plain functions: the events' receiver lives here while the loop runs.
+WindowEvents* events = nullptr;
+int pollMs = 100;
+bool closedSaid = false;
+bool leaving = false;  // the application ended the loop: freeglut's close is its own then
 
-constexpr int kPollMs = 125;  // shader files and on-screen messages, 8 times a second
-// Esc quits when it is released (or this long after the press, if no release comes): quitting
-// on the press destroyed the window before `xdotool key --window ID Escape` sent the release,
-// and xdotool failed with BadWindow.
-constexpr int kQuitAfterEscMs = 400;
-
-// freeglut's callbacks are plain functions, so the window's state lives here.
-struct WindowState {
-    WindowArgs args;
-    std::unique_ptr<WindowSession> session;
-    int width = 0, height = 0;
-    int startWidth = 0, startHeight = 0;  // --size
-    int frame = 0;
-    int exitCode = kOk;
-    int dragX = -1, dragY = -1;
-    bool resizeDone = false;  // --resize-test finished
-    int resizeFrames = 0;     // frames the resize script took
-    std::string writtenState;
-    bool quitting = false;  // Esc pressed, waiting for its release
-};
-WindowState* g = nullptr;
-
-void reshape(int w, int h) {
-    g->width = w;
-    g->height = h;
-    glutPostRedisplay();
-}
-
-void quitNow(int) {
+void closeOnce(const char* how) {
+    if (closedSaid || leaving || !events) return;
+    closedSaid = true;
+    events->closed(how);
     glutLeaveMainLoop();
 }
 
-// Every key, from X or from --keys: Esc quits, the rest is the session's.
-void pressKey(unsigned char key, bool shift) {
-    if (key == 27) {
-        if (!g->quitting) glutTimerFunc(kQuitAfterEscMs, quitNow, 0);
-        g->quitting = true;
-        return;
-    }
-    if (g->quitting) return;
-    if (key == 'f' || key == 'F') {  // full screen and back: the window's, not the session's
-        glutFullScreenToggle();
-        return;
-    }
-    if (g->session->key(key, shift)) glutPostRedisplay();
-}
-
-void keyboard(unsigned char key, int, int) {
-    pressKey(key, (glutGetModifiers() & GLUT_ACTIVE_SHIFT) != 0);
-}
-
-void keyboardUp(unsigned char key, int, int) {
-    if (key == 27 && g->quitting) glutLeaveMainLoop();
-}
-
-// The window was destroyed under us (freeglut would go on without it): end as Esc does.
+// The window was destroyed under us (freeglut would go on without it).
 bool windowGone() {
-    static bool said = false;
     if (windowStillExists()) return false;
-    if (!said) std::cerr << "shadowlab: the window was closed; quitting" << std::endl;
-    said = true;
-    glutLeaveMainLoop();
+    closeOnce("destroyed from outside");
     return true;
 }
 
-// --resize-test, one step at a time: each waits (a bounded number of frames) until the size it
-// asked for has arrived, so the test does not depend on how fast the X server answers.
-// A minimised window reports 0x0 through the reshape callback; X itself cannot make a 0x0
-// window, so those steps call the callback as freeglut would. The real X resizes go to 16x16:
-// under Xvfb (no window manager) a real 1x1 window stops freeglut's redisplays altogether, so
-// 1x1 is reached through the callback too.
-struct ResizeStep {
-    int width, height;
-    bool callbackOnly;
-};
-
-void runResizeScript() {
-    static std::size_t step = 0;
-    static int waited = 0;
-    const int w = g->startWidth, h = g->startHeight;
-    const ResizeStep steps[] = {{0, 0, true}, {w, h, true}, {16, 16, false},
-                                {0, 0, true}, {1, 1, true}, {w, h, false}};
-    const std::size_t count = sizeof(steps) / sizeof(steps[0]);
-    if (step > count) return;
-    if (step > 0) {  // wait for the previous step's size
-        const ResizeStep& s = steps[step - 1];
-        if ((g->width != s.width || g->height != s.height) && ++waited < 500) return;
-        if (waited >= 500) {
-            std::cerr << "shadowlab: --resize-test: the window never reached " << s.width << "x"
-                      << s.height << std::endl;
-            g->exitCode = kGlFailure;
-        }
-    }
-    waited = 0;
-    if (step < count) {
-        const ResizeStep& s = steps[step];
-        if (s.callbackOnly)
-            reshape(s.width, s.height);
-        else
-            glutReshapeWindow(s.width, s.height);
-    }
-    ++step;
-    g->resizeDone = step > count;
+void onDisplay() {
+    if (!windowGone()) events->display();
 }
-
-// The scripted input of --keys and --resize-test, applied after frame `frame` was drawn. A
-// scripted `+` or `_` is Shift with = or -, as on the keyboard.
-void runScript(int frame) {
-    const std::string& keys = g->args.keys;
-    if (frame >= 1 && std::size_t(frame) <= keys.size()) {
-        char k = keys[std::size_t(frame) - 1];
-        pressKey(static_cast<unsigned char>(k), k == '+' || k == '_');
-    }
-    if (g->args.resizeTest) runResizeScript();
+void onReshape(int w, int h) {
+    events->reshape(w, h);
 }
-
-// Counts a frame and says whether the loop ends after it (with --frames).
-bool finishFrame() {
-    ++g->frame;
-    if (g->args.resizeTest && !g->resizeDone) ++g->resizeFrames;
-    runScript(g->frame);
-    // The resize script's frames come on top of --frames: the last ones are drawn at full size.
-    return g->args.frames > 0 && g->frame >= g->args.frames + g->resizeFrames &&
-           (!g->args.resizeTest || g->resizeDone);
+void onKeyboard(unsigned char key, int, int) {
+    events->key(key, (glutGetModifiers() & GLUT_ACTIVE_SHIFT) != 0);
 }
-
-void writeState() {
-    if (g->args.stateFile.empty()) return;
-    std::string state = g->session->stateJson();
-    if (state == g->writtenState) return;
-    g->writtenState = state;
-    std::string tmp = g->args.stateFile + ".tmp";
-    { std::ofstream(tmp) << state << "\n"; }
-    std::rename(tmp.c_str(), g->args.stateFile.c_str());  // readers never see half a file
+void onKeyboardUp(unsigned char key, int, int) {
+    events->keyUp(key);
 }
-
-void display() {
-    if (windowGone()) return;
-    if (g->frame == 0) takeKeyboardFocusIfNobodyHasIt();
-    bool testRun = g->args.frames > 0;
-    if (g->width > 0 && g->height > 0) {  // minimised or 0x0: nothing to draw, time goes on
-        bool last = testRun && g->frame + 1 >= g->args.frames + g->resizeFrames &&
-                    (!g->args.resizeTest || g->resizeDone);
-        std::string shot = last ? g->args.screenshot : "";
-        std::string err = g->session->draw(g->width, g->height, shot, g->args.screenshotHud);
-        if (!err.empty()) {
-            std::cerr << "shadowlab: --screenshot: " << err << std::endl;
-            g->exitCode = kBadInput;
-        }
-        glutSwapBuffers();
-        if (testRun && g->session->shaderFailed()) g->exitCode = kBadInput;
-        if (testRun && glErrorCount() > 0) g->exitCode = kGlFailure;
-        writeState();
-    }
-    if (finishFrame()) {
-        glutLeaveMainLoop();
-        return;
-    }
-    // Idle costs nothing: the next frame comes from input, a reload, or a running animation
-    // (test runs draw continuously through the idle callback).
-    if (g->session->animating()) glutPostRedisplay();
+void onSpecial(int key, int, int) {
+    const SpecialKey k = key == GLUT_KEY_LEFT        ? SpecialKey::Left
+                         : key == GLUT_KEY_RIGHT     ? SpecialKey::Right
+                         : key == GLUT_KEY_UP        ? SpecialKey::Up
+                         : key == GLUT_KEY_DOWN      ? SpecialKey::Down
+                         : key == GLUT_KEY_PAGE_UP   ? SpecialKey::PageUp
+                         : key == GLUT_KEY_PAGE_DOWN ? SpecialKey::PageDown
+                         : key == GLUT_KEY_HOME      ? SpecialKey::Home
+                         : key == GLUT_KEY_END       ? SpecialKey::End
+                                                     : SpecialKey::Other;
+    events->special(k, (glutGetModifiers() & GLUT_ACTIVE_SHIFT) != 0);
 }
-
-void tick(int) {
+void onMouse(int button, int state, int x, int y) {
+    events->mouse(button, state == GLUT_DOWN, x, y);
+}
+void onMotion(int x, int y) {
+    events->motion(x, y);
+}
+void onTimer(int) {
     if (windowGone()) return;
     // Also later: a window that had the focus when this one opened may have closed since.
     takeKeyboardFocusIfNobodyHasIt();
-    if (g->session->tick(std::chrono::steady_clock::now())) glutPostRedisplay();
-    glutTimerFunc(kPollMs, tick, 0);
+    events->timer();
+    glutTimerFunc(unsigned(pollMs), onTimer, 0);
 }
-
-// Arrow keys orbit as a drag of 20 pixels does.
-void special(int key, int, int) {
-    if (g->quitting) return;
-    const int step = 20;
-    bool redraw = key == GLUT_KEY_LEFT    ? g->session->drag(-step, 0)
-                  : key == GLUT_KEY_RIGHT ? g->session->drag(step, 0)
-                  : key == GLUT_KEY_UP    ? g->session->drag(0, -step)
-                  : key == GLUT_KEY_DOWN  ? g->session->drag(0, step)
-                                          : false;
-    if (redraw) glutPostRedisplay();
-}
-
-void mouse(int button, int state, int x, int y) {
-    // The wheel: X buttons 4 and 5 (freeglut's 3 and 4), one notch a press.
-    if ((button == 3 || button == 4) && state == GLUT_DOWN) {
-        if (g->session->zoom(button == 3 ? 1 : -1)) glutPostRedisplay();
-        return;
-    }
-    if (button != GLUT_LEFT_BUTTON) return;
-    g->dragX = state == GLUT_DOWN ? x : -1;
-    g->dragY = y;
-}
-
-void motion(int x, int y) {  // orbit the camera around its target
-    if (g->dragX < 0) return;
-    if (g->session->drag(x - g->dragX, y - g->dragY)) glutPostRedisplay();
-    g->dragX = x;
-    g->dragY = y;
+// A window manager's close button (WM_DELETE_WINDOW): freeglut destroys the window and, as
+// asked below, returns from its loop; this says so first.
+void onClose() {
+    closeOnce("closed by the window manager");
 }
 
 // The window's context is a compatibility one (it runs both trees); the core tree needs 3.3.
@@ -232,60 +92,67 @@ void requireGl33() {
 
 }  // namespace
 
-int runWindow(const WindowArgs& args) {
-    WindowState state;
-    state.args = args;
-    const RenderRequest& request = args.request;
-    if (!args.screenshot.empty() && args.frames <= 0)
-        throw UsageError("--screenshot needs --frames N (the frame to save)");
-    if ((!args.keys.empty() || args.resizeTest) && args.frames <= 0)
-        throw UsageError("--keys and --resize-test need --frames N (scripted input is for tests)");
-    if (args.keys.find('\x1b') != std::string::npos)
-        throw UsageError("--keys: Esc would quit before the last frame; leave it out");
-    if (args.shots.empty()) throw UsageError("--shots: give a folder (it is created if missing)");
-    // An unknown stage is a usage error before any display is opened (the session checks the
-    // rest once it has a context: fixed runs legacy, mirror brings its scene).
-    if (!findStage(request.stage)) validateRequest(request);
-    g = &state;
-
+void openWindow(int width, int height, bool fullscreen) {
     int argc = 1;
     char name[] = "shadowlab";
     char* argv[] = {name, nullptr};
     glutInit(&argc, argv);
     glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
     glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL);
-    glutInitWindowSize(request.width, request.height);
+    glutInitWindowSize(width, height);
     // No profile asked for: Mesa then gives its newest compatibility context, which runs the
     // fixed-function stage and GLSL 1.20 as well as the 3.30 core shaders.
     glutCreateWindow("shadowlab");
     if (!loadGl(reinterpret_cast<GlProcLoader>(&glutGetProcAddress)))
         throw std::runtime_error("could not load GL entry points through glutGetProcAddress");
     requireGl33();
-    if (args.fullscreen) glutFullScreen();
+    if (fullscreen) glutFullScreen();
     passShiftTabAsTab();
     watchWindow();
-    // Before the session is built (compiling takes a while): keys typed meanwhile queue up for
-    // the window instead of going wherever the pointer is.
+    // Before the application is built (compiling takes a while): keys typed meanwhile queue up
+    // for the window instead of going wherever the pointer is.
     takeKeyboardFocusIfNobodyHasIt();
-    installGlDebugOutput();
-    state.width = state.startWidth = request.width;
-    state.height = state.startHeight = request.height;
-    state.session = std::make_unique<WindowSession>(args);
+}
 
-    glutDisplayFunc(display);
-    glutReshapeFunc(reshape);
-    glutKeyboardFunc(keyboard);
-    glutKeyboardUpFunc(keyboardUp);
-    glutMouseFunc(mouse);
-    glutSpecialFunc(special);
-    glutMotionFunc(motion);
-    glutTimerFunc(kPollMs, tick, 0);
-    if (args.frames > 0) glutIdleFunc(glutPostRedisplay);  // --frames: frame after frame
+void runWindowLoop(WindowEvents& receiver, int ms, bool continuous) {
+    events = &receiver;
+    pollMs = ms;
+    glutDisplayFunc(onDisplay);
+    glutReshapeFunc(onReshape);
+    glutKeyboardFunc(onKeyboard);
+    glutKeyboardUpFunc(onKeyboardUp);
+    glutMouseFunc(onMouse);
+    glutSpecialFunc(onSpecial);
+    glutMotionFunc(onMotion);
+    glutCloseFunc(onClose);
+    glutTimerFunc(unsigned(pollMs), onTimer, 0);
+    if (continuous) glutIdleFunc(glutPostRedisplay);
     glutMainLoop();
-    int code = state.exitCode;
-    state.session.reset();
-    g = nullptr;
-    return code;
+    events = nullptr;
+}
+
+void leaveWindowLoop() {
+    leaving = true;
+    glutLeaveMainLoop();
+}
+void postRedisplay() {
+    glutPostRedisplay();
+}
+void swapWindowBuffers() {
+    glutSwapBuffers();
+}
+void toggleFullScreen() {
+    glutFullScreenToggle();
+}
+void callLater(int ms, void (*what)(int), int value) {
+    glutTimerFunc(unsigned(ms), what, value);
+}
+void resizeWindow(int width, int height) {
+    glutReshapeWindow(width, height);
+}
+void screenSize(int& width, int& height) {
+    width = glutGet(GLUT_SCREEN_WIDTH);
+    height = glutGet(GLUT_SCREEN_HEIGHT);
 }
 
 }  // namespace sl

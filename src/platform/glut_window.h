@@ -1,48 +1,45 @@
-// The interactive window (freeglut). It owns the context and turns input into actions on the
-// renderers; all drawing is theirs. One compatibility-profile context runs both shader trees,
-// so every stage is one key away in one session.
+// The OS window (freeglut): one double-buffered window with a compatibility-profile context
+// (Mesa's runs GLSL 3.30 core shaders as well as 1.20 and the fixed-function pipeline), its
+// events handed to whoever runs it. What the window shows and does is src/window/'s.
 #pragma once
-
-#include <memory>
-#include <string>
-#include <utility>
-#include <vector>
-
-#include "platform/program_trial.h"
-#include "render/request.h"
 
 namespace sl {
 
-// A lesson the window steps through with `n`: an entry of expectations.json or a lecture figure
-// of slides_examples/, with its settings and what to look for on screen.
-struct WindowLesson {
-    std::string stage;
-    std::string scene;               // "": the stage's own
-    std::vector<std::string> trees;  // empty: every tree the stage runs in
-    std::vector<std::pair<std::string, std::string>> sets;
-    std::string name;  // "margin margin-kind=slope: almost no acne"
-    std::string look;  // what to look for, one short line
-    ViewMode view = ViewMode::Final;
+// Keys freeglut reports apart from characters.
+enum class SpecialKey { Left, Right, Up, Down, PageUp, PageDown, Home, End, Other };
+
+// What the application does with the window's events (all on the one thread).
+class WindowEvents {
+  public:
+    virtual ~WindowEvents() = default;
+    virtual void display() = 0;
+    virtual void reshape(int width, int height) = 0;
+    virtual void key(unsigned char key, bool shift) = 0;
+    virtual void keyUp(unsigned char key) = 0;
+    virtual void special(SpecialKey key, bool shift) = 0;
+    virtual void mouse(int button, bool down, int x, int y) = 0;  // 3, 4: the wheel
+    virtual void motion(int x, int y) = 0;
+    virtual void timer() = 0;  // every pollMs of runWindowLoop
+    // The window was closed from outside: `how` says by what ("the window manager's close",
+    // "destroyed"). The loop ends after this.
+    virtual void closed(const char* how) = 0;
 };
 
-struct WindowArgs {
-    RenderRequest request;
-    std::shared_ptr<ProgramTrial> trial;  // where changed shaders are tried ("": adopted at once)
-    bool fullscreen = false;
-    float hudScale = 1;  // times the text size that suits the window
-    std::vector<WindowLesson> lessons;
-    int frames = 0;              // > 0: render this many frames, then exit (tests)
-    std::string screenshot;      // with frames: save the last frame here
-    bool screenshotHud = false;  // the screenshot includes the HUD (for the README)
-    // Scripted input for tests: keys[k] is pressed after frame k + 1 (Esc is not allowed), and
-    // resizeTest drives the window through 0x0, 1x1 and back to its size first (those frames
-    // come on top of --frames).
-    std::string keys;
-    bool resizeTest = false;
-    std::string shots = "shots";  // where `p` saves
-    std::string stateFile;        // "": none; else the HUD's state as JSON, rewritten on change
-};
-
-int runWindow(const WindowArgs& args);
+// Opens the window (width x height, full screen if asked) with its context current and GL's
+// entry points loaded; throws std::runtime_error when the context is older than 3.3.
+void openWindow(int width, int height, bool fullscreen);
+// Runs the event loop until leaveWindowLoop() or a close; `continuous`: a frame after every
+// frame (scripted runs), else frames come from postRedisplay().
+void runWindowLoop(WindowEvents& events, int pollMs, bool continuous);
+void leaveWindowLoop();
+void postRedisplay();
+void swapWindowBuffers();
+void toggleFullScreen();
+// Calls `what(value)` once, `ms` from now, on the loop's thread.
+void callLater(int ms, void (*what)(int), int value);
+// Asks freeglut to resize the window (tests).
+void resizeWindow(int width, int height);
+// The screen's size in pixels (what a full-screen window will be).
+void screenSize(int& width, int& height);
 
 }  // namespace sl

@@ -44,15 +44,28 @@ std::vector<HudLine> wrapHudLines(const std::vector<HudLine>& lines, float maxPi
     return out;
 }
 
-std::vector<HudLine> layoutHudBlock(const HudBlock& block, float maxPixels) {
+std::vector<HudLine> layoutHudBlock(const HudBlock& block, float maxPixels, int maxLines) {
     std::vector<HudLine> lines = wrapHudLines(block.lines, maxPixels);
-    if (block.maxLines > 0 && static_cast<int>(lines.size()) > block.maxLines) {
-        std::size_t keep = static_cast<std::size_t>(std::max(block.maxLines - 1, 0));
-        std::size_t more = lines.size() - keep;
-        glm::vec4 colour = lines[keep].color;
-        lines.resize(keep);
-        lines.push_back({"(" + std::to_string(more) + " more lines)", colour});
+    const int most = maxLines > 0 ? maxLines : block.maxLines;
+    const int total = static_cast<int>(lines.size());
+    if (most <= 0 || total <= most) return lines;
+    if (most == 1) return {lines.front()};  // a count alone would say nothing
+    const int keep = most - 1;
+    if (block.scrollable) {  // lines first .. first + keep - 1 of total, and where they are
+        const int first = std::clamp(block.firstLine, 0, total - keep);
+        std::vector<HudLine> shown(lines.begin() + first, lines.begin() + first + keep);
+        shown.push_back({"PgUp/PgDn: lines " + std::to_string(first + 1) + "-" +
+                             std::to_string(first + keep) + " of " + std::to_string(total),
+                         glm::vec4(0.85f, 0.85f, 0.85f, 1)});
+        return shown;
     }
+    const std::size_t more = static_cast<std::size_t>(total - keep);
+    glm::vec4 colour = lines[std::size_t(keep)].color;
+    lines.resize(std::size_t(keep));
+    std::string text = block.more.empty() ? "(N more lines)" : block.more;
+    const std::size_t n = text.find('N');
+    if (n != std::string::npos) text.replace(n, 1, std::to_string(more));
+    lines.push_back({text, colour});
     return lines;
 }
 
@@ -86,18 +99,54 @@ void Hud::drawText(Program& program, const HudLine& line, float x, float y) {
 }
 
 std::vector<HudPanel> layoutHud(const std::vector<HudBlock>& blocks, int width, int height,
-                                float scale) {
+                                float scale, HudRoom room) {
     std::vector<HudPanel> panels;
     if (width <= 0 || height <= 0) return panels;
-    const float w = width / scale, h = height / scale;  // the HUD's own (unscaled) pixels
+    const float w = width / scale, h = height / scale;      // the HUD's own (unscaled) pixels
+    const float overhead = 2 * Hud::kPad - 3 + kHudMargin;  // a panel's own pixels
+    // Each side (top, bottom) of each column has room for so many lines: every block first
+    // gets its keepLines, in order, then what more it wants, in order.
+    std::vector<int> wanted(blocks.size()), given(blocks.size(), 0);
+    std::vector<std::vector<HudLine>> wrapped(blocks.size());
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+        const HudBlock& b = blocks[k];
+        const float span = b.column == 1 || b.half ? w / 2 : w;
+        wrapped[k] = wrapHudLines(b.lines, std::max(span - 2 * (kHudMargin + Hud::kPad), 8.0f));
+        wanted[k] = static_cast<int>(wrapped[k].size());
+        if (b.maxLines > 0) wanted[k] = std::min(wanted[k], b.maxLines);
+    }
+    for (int side = 0; side < 4; ++side) {
+        const bool bottom = side >= 2;
+        const int column = side % 2;
+        float left = (bottom ? h * room.bottom : h * room.top) - kHudMargin;
+        std::vector<std::size_t> here;
+        for (std::size_t k = 0; k < blocks.size(); ++k)
+            if (blocks[k].bottom == bottom && (blocks[k].column == 1 ? 1 : 0) == column &&
+                wanted[k] > 0)
+                here.push_back(k);
+        for (int pass = 0; pass < 2; ++pass)
+            for (std::size_t k : here) {
+                const int goal =
+                    pass == 0 ? std::min(wanted[k], std::max(1, blocks[k].keepLines)) : wanted[k];
+                const float cost = given[k] == 0 ? overhead : 0;
+                const int fit = static_cast<int>((left - cost) / Hud::kLineHeight);
+                const int more = std::min(goal - given[k], fit);
+                if (more <= 0) continue;
+                left -= cost + more * Hud::kLineHeight;
+                given[k] += more;
+            }
+    }
     float top[2] = {kHudMargin, kHudMargin}, bottom[2] = {h - kHudMargin, h - kHudMargin};
-    for (const HudBlock& block : blocks) {
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+        if (given[k] <= 0) continue;  // no room left for it
+        const HudBlock& block = blocks[k];
         const int c = block.column == 1 ? 1 : 0;
         const float span = c == 1 || block.half ? w / 2 : w;
         HudPanel p;
-        p.lines = layoutHudBlock(block, std::max(span - 2 * (kHudMargin + Hud::kPad), 8.0f));
+        p.wrappedLines = static_cast<int>(wrapped[k].size());
+        p.lines =
+            layoutHudBlock(block, std::max(span - 2 * (kHudMargin + Hud::kPad), 8.0f), given[k]);
         p.x = c * w / 2 + kHudMargin;
-        if (p.lines.empty()) continue;
         p.width = 0;
         for (const auto& l : p.lines)
             p.width = std::max(p.width, textWidth(l.text) + 2 * Hud::kPad);
@@ -126,22 +175,31 @@ std::pair<int, int> hudBands(const std::vector<HudPanel>& panels, int height, fl
     return {static_cast<int>(std::ceil(top * scale)), static_cast<int>(std::ceil(bottom * scale))};
 }
 
-void Hud::draw(ShaderLibrary& shaders, const std::vector<HudBlock>& blocks, int width, int height,
-               float scale) {
-    if (width <= 0 || height <= 0) return;
+Program& Hud::begin(ShaderLibrary& shaders, float w, float h) {
     Program& program = shaders.program("hud", "text");
-    ScopedEnable noDepth(GL_DEPTH_TEST, false);
-    ScopedEnable blend(GL_BLEND, true);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     program.use();
-    const float w = width / scale, h = height / scale;  // the HUD's own (unscaled) pixels
     program.set("projection", glm::ortho(0.0f, w, h, 0.0f));
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_ARRAY_BUFFER, buffer_.id());
     glEnableVertexAttribArray(kPositionAttribute);
     // stb_easy_font writes 16-byte vertices: x, y, z as floats, then 4 colour bytes.
     glVertexAttribPointer(kPositionAttribute, 3, GL_FLOAT, GL_FALSE, 16, nullptr);
-    for (const HudPanel& p : layoutHud(blocks, width, height, scale)) {
+    return program;
+}
+
+void Hud::end() {
+    glDisableVertexAttribArray(kPositionAttribute);
+    glBindVertexArray(0);
+}
+
+void Hud::draw(ShaderLibrary& shaders, const std::vector<HudPanel>& panels, int width, int height,
+               float scale) {
+    if (width <= 0 || height <= 0 || panels.empty()) return;
+    ScopedEnable noDepth(GL_DEPTH_TEST, false);
+    ScopedEnable blend(GL_BLEND, true);
+    Program& program = begin(shaders, width / scale, height / scale);  // the HUD's own pixels
+    for (const HudPanel& p : panels) {
         drawRect(program, p.x, p.y, p.x + p.width, p.y + p.height, p.color);
         float y = p.y + kPad;
         for (const HudLine& line : p.lines) {
@@ -149,8 +207,31 @@ void Hud::draw(ShaderLibrary& shaders, const std::vector<HudBlock>& blocks, int 
             y += kLineHeight;
         }
     }
-    glDisableVertexAttribArray(kPositionAttribute);
-    glBindVertexArray(0);
+    end();
+}
+
+void Hud::drawLines(ShaderLibrary& shaders, const std::vector<glm::vec2>& ends,
+                    const glm::vec4& color, int width, int height) {
+    if (width <= 0 || height <= 0 || ends.size() < 2) return;
+    ScopedEnable noDepth(GL_DEPTH_TEST, false);
+    ScopedEnable blend(GL_BLEND, true);
+    Program& program = begin(shaders, float(width), float(height));
+    std::vector<float> v;
+    for (const glm::vec2& p : ends) v.insert(v.end(), {p.x, p.y, 0.0f, 0.0f});
+    glBufferData(GL_ARRAY_BUFFER, v.size() * sizeof(float), v.data(), GL_STREAM_DRAW);
+    program.set("textColor", color);
+    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(ends.size() / 2 * 2));
+    end();
+}
+
+void Hud::drawLabel(ShaderLibrary& shaders, const HudLine& line, float x, float y, int width,
+                    int height, float scale) {
+    if (width <= 0 || height <= 0) return;
+    ScopedEnable noDepth(GL_DEPTH_TEST, false);
+    ScopedEnable blend(GL_BLEND, true);
+    Program& program = begin(shaders, width / scale, height / scale);
+    drawText(program, line, x / scale, y / scale);
+    end();
 }
 
 }  // namespace sl

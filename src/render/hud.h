@@ -1,5 +1,6 @@
 // On-screen text for the window (stage, parameters, notes, legends, errors), drawn with
-// stb_easy_font's quads on translucent panels so it stays readable over any picture.
+// stb_easy_font's quads on translucent panels so it stays readable over any picture, and the
+// lines of a diagram (the mirror seen from above).
 #pragma once
 
 #include <string>
@@ -19,7 +20,14 @@ struct HudLine {
 struct HudBlock {
     std::vector<HudLine> lines;
     bool bottom = false;
-    int maxLines = 0;  // wrapped lines beyond this become one "(N more lines)" line; 0: no limit
+    // Wrapped lines beyond this (or beyond the room the panels have) are cut: the last line
+    // shown says how many more there are (`more`, with "N" for the count, else "(N more
+    // lines)"); a scrollable block starts at `firstLine` and says which lines show instead.
+    int maxLines = 0;   // 0: as many as there is room for
+    int keepLines = 1;  // lines it gets before the blocks after it get more than theirs
+    std::string more;
+    bool scrollable = false;
+    int firstLine = 0;
     glm::vec4 panel{0.0f, 0.0f, 0.0f, 0.78f};  // white text stays readable on a white view
     // The split view's halves: 0 from the left edge, 1 from the middle; `half`: wrapped to half
     // the window (column 1 always is).
@@ -35,9 +43,14 @@ float hudScale(int width, int height);
 // in a word longer than a line). Colours carry over to the pieces.
 std::vector<HudLine> wrapHudLines(const std::vector<HudLine>& lines, float maxPixels);
 
-// Wraps a block's lines for `maxPixels` and cuts them to its maxLines, the last line saying
-// how many more there are.
-std::vector<HudLine> layoutHudBlock(const HudBlock& block, float maxPixels);
+// Wraps a block's lines for `maxPixels` and cuts them to `maxLines` (the block's own when 0),
+// the last line saying how many more there are or, scrollable, which ones show.
+std::vector<HudLine> layoutHudBlock(const HudBlock& block, float maxPixels, int maxLines = 0);
+
+// The most of the window's height the top and the bottom panels may take together, each side.
+struct HudRoom {
+    float top = 1, bottom = 1;
+};
 
 // Where a block's panel goes, in the HUD's unscaled pixels (y down from the top).
 struct HudPanel {
@@ -45,12 +58,15 @@ struct HudPanel {
     float x = 0, y = 0, width = 0, height = 0;
     bool bottom = false;
     glm::vec4 color{0.0f};
+    int wrappedLines = 0;  // before the cut
 };
 constexpr float kHudMargin = 3;  // between panels and from the window's edge
 
-// The panels of `blocks` on a width x height window: top blocks downward, bottom ones upward.
+// The panels of `blocks` on a width x height window: top blocks downward, bottom ones upward,
+// each side within its room: every block gets its keepLines first, in order, then the lines it
+// wants, in order (a block with no room left is left out).
 std::vector<HudPanel> layoutHud(const std::vector<HudBlock>& blocks, int width, int height,
-                                float scale);
+                                float scale, HudRoom room = {});
 // The window pixels the panels take at the top and at the bottom (margins included): the window
 // draws the picture between them, so that no panel covers it.
 std::pair<int, int> hudBands(const std::vector<HudPanel>& panels, int height, float scale);
@@ -58,14 +74,22 @@ std::pair<int, int> hudBands(const std::vector<HudPanel>& panels, int height, fl
 class Hud {
   public:
     Hud();
-    // Draws the blocks on a width x height framebuffer (top blocks downward, bottom ones upward).
-    void draw(ShaderLibrary& shaders, const std::vector<HudBlock>& blocks, int width, int height,
+    // Draws the panels on a width x height viewport (top blocks downward, bottom ones upward).
+    void draw(ShaderLibrary& shaders, const std::vector<HudPanel>& panels, int width, int height,
               float scale);
+    // Lines from a[k] to b[k] (pixels of the width x height viewport, y down) in `color`.
+    void drawLines(ShaderLibrary& shaders, const std::vector<glm::vec2>& ends,
+                   const glm::vec4& color, int width, int height);
+    // One line of text with its top-left corner at (x, y) (viewport pixels, y down).
+    void drawLabel(ShaderLibrary& shaders, const HudLine& line, float x, float y, int width,
+                   int height, float scale);
 
     static constexpr float kLineHeight = 11;  // stb_easy_font's glyphs are 7 high, plus spacing
     static constexpr float kPad = 4;
 
   private:
+    Program& begin(ShaderLibrary& shaders, float w, float h);
+    void end();
     void drawRect(Program& program, float x0, float y0, float x1, float y1, const glm::vec4& color);
     void drawText(Program& program, const HudLine& line, float x, float y);
     VertexArray vao_;

@@ -68,8 +68,13 @@ void ShadowStage::render(FrameContext& f) {
         showMap(f);
     } else if (f.view == ViewMode::Light) {  // the scene as the light sees it
         const LightFrustum& lf = map_.frustum();
+        // Square and centred, as the map is: the light's frustum is as wide as it is high (a
+        // full 16:9 viewport drew the sphere as an ellipse).
+        int side = std::min(f.width, f.height);
+        glViewport((f.width - side) / 2, (f.height - side) / 2, side, side);
         drawSceneLit(f.shaders.program("phong", "lit"), f,
                      Viewer{lf.view, lf.projection, f.lightPosition}, 0);
+        glViewport(0, 0, f.width, f.height);
     } else {
         Program& lit = f.shaders.program(id_, litPass(f.params));
         lit.use();

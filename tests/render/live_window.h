@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fcntl.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -16,6 +17,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "metrics/image.h"
 
@@ -133,6 +135,7 @@ class LiveWindow {
 
   public:
     bool ready() const { return !id_.empty(); }
+    pid_t pid() const { return window_; }
     const std::string& id() const { return id_; }
     bool alive() {
         if (window_ <= 0 || reaped_) return false;
@@ -250,6 +253,45 @@ class LiveWindow {
     int exitStatus_ = 0;
     bool reaped_ = false;
 };
+
+// A busy loop on every core this process may use (`taskset -c N sh -c 'while :; do :; done'`),
+// for as long as it lives: the window must answer and its trials finish on a loaded machine.
+// Each loop is killed by its pid at the end.
+class BusyCores {
+  public:
+    BusyCores() {
+        cpu_set_t set;
+        CPU_ZERO(&set);
+        if (::sched_getaffinity(0, sizeof set, &set) != 0) return;
+        for (int core = 0; core < CPU_SETSIZE; ++core) {
+            if (!CPU_ISSET(core, &set)) continue;
+            pid_t pid = ::fork();
+            if (pid == 0) {
+                const std::string c = std::to_string(core);
+                ::execlp("taskset", "taskset", "-c", c.c_str(), "sh", "-c", "while :; do :; done",
+                         static_cast<char*>(nullptr));
+                ::_exit(127);
+            }
+            if (pid > 0) pids_.push_back(pid);
+        }
+    }
+    ~BusyCores() {
+        for (pid_t pid : pids_) {
+            ::kill(pid, SIGKILL);
+            ::waitpid(pid, nullptr, 0);
+        }
+    }
+    std::size_t count() const { return pids_.size(); }
+
+  private:
+    std::vector<pid_t> pids_;
+};
+
+// Seconds on the steady clock, the one the window's --state reports use (CLOCK_MONOTONIC,
+// shared by every process of the machine).
+inline double steadyNow() {
+    return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
 
 inline int countLines(const std::string& text, const std::string& start) {
     int n = 0;

@@ -210,6 +210,12 @@ TEST(LiveWindowProjector, SplitShowsFailureBesideFix) {
     r.stage = "bias";
     r.width = 512;
     r.height = height;
+    // A half narrower than 4:3 (the scenes' cameras are framed for it) widens its field of view
+    // so that the scene's width fits: the slides' 45 degrees, so widened.
+    const float aspect = 512.0f / float(height);
+    if (aspect < 4.0f / 3.0f)
+        r.fovy =
+            glm::degrees(2 * std::atan(std::tan(glm::radians(45.0f) / 2) * (4.0f / 3.0f) / aspect));
     expectWholePicture(shot, 0, top, r, "left half: bias defaults");
     r.sets = {{"light-z", "flipped"}};
     expectWholePicture(shot, 512, top, r, "right half: the flipped light");
@@ -236,6 +242,14 @@ TEST(LiveWindowProjector, ArrowsWheelAndConfirmations) {
     ASSERT_TRUE(w.keys("Left Up"));
     EXPECT_TRUE(w.waitState([&](const auto& s) { return s["eye"] != eye; }, 10));
     EXPECT_NEAR(w.state()["eyeDistance"].get<double>(), distance, 1e-3) << "orbit keeps distance";
+    // Orbiting down stops above the floor's top (y = 0), not its bottom (-0.1).
+    std::string down;
+    for (int k = 0; k < 40; ++k) down += " Up";
+    ASSERT_TRUE(w.keys(down));
+    EXPECT_TRUE(w.waitState([&](const auto& s) { return s["keys"]["received"] >= 42; }, 30));
+    EXPECT_GE(w.state()["eye"][1].get<double>(), 0.05 - 1e-3) << w.state().dump();
+    ASSERT_TRUE(w.keys("c"));
+    ASSERT_TRUE(w.waitState([&](const auto& s) { return s["eye"] == eye; }, 10));
     ASSERT_EQ(w.xdo("mousemove --window " + w.id() + " 300 200"), 0);
     ASSERT_EQ(w.xdo("click 4"), 0);  // the wheel up: closer
     EXPECT_TRUE(w.waitState(

@@ -55,7 +55,7 @@ Breakage loop() {
             replaced(readText(kOurs), "    if (marginKind == 0) return margin;",
                      "    float m = 0.0;\n    for (int i = 0; i < 10; i--) m += margin;\n"
                      "    if (marginKind == 0) return m;"),
-            "no result within the time limit of 3 s", true};
+            "no result within its time limit", true};
 }
 // 50,000 chained statements: Mesa's compiler dies of SIGSEGV (Debian 12's Mesa 22.3).
 Breakage crash() {
@@ -75,7 +75,7 @@ Breakage memory() {
             // The driver decides how the blow-up ends: an allocation refused or a signal under
             // the memory limit (Mesa 22), or a compile that runs past the time limit (Mesa 25,
             // Debian 13). Either way the panel names the limit that ended it.
-            "1536 MB (--memory-limit)|60 s (--time-limit)", true};
+            "1536 MB (--memory-limit)|time limit of 60 s", true};
 }
 Breakage uniformType() {
     return {"uniform type",
@@ -153,7 +153,7 @@ void breakWhileLive(const std::string& limits, const std::vector<Breakage>& brea
                 return s["trying"] == false && s["errors"].template get<int>() > 0 &&
                        e.find("mine/margin/" + b.file) != std::string::npos && saysOneOf(e, b.said);
             },
-            120))
+            300))  // a minute of CPU time (--time-limit 60) takes longer on a loaded machine
             << b.name << " " << w.state().dump() << "\n"
             << w.err();
         EXPECT_EQ(w.state()["picture"], "stage") << b.name;
@@ -314,12 +314,13 @@ TEST(LiveWindowWatchdog, OtherTreesChangedFilesAreTriedOnSwitching) {
                  "    float m = 0.0;\n"
                  "    for (int i = 0; i < 10; i--) m += margin;\n"
                  "    if (marginKind == 0) return m;");
+    const int tried = w.state()["trial"]["count"];
     std::ofstream(legacy + ".tmp") << looping;
     fs::rename(legacy + ".tmp", legacy);
-    // The core tree's trial of the change passes (the change is not in it).
-    ASSERT_TRUE(w.waitState([](const auto& s) { return s["message"] != ""; }, 30))
-        << w.state().dump();
-    ASSERT_TRUE(w.waitState([](const auto& s) { return s["trying"] == false; }, 30));
+    // The change is not in the core tree: nothing of it is tried (a settled save is seen within
+    // half a second; two seconds give a loaded machine room).
+    std::this_thread::sleep_for(std::chrono::seconds(2));
+    EXPECT_EQ(w.state()["trial"]["count"], tried) << w.state().dump();
     ASSERT_TRUE(w.keys("g"));
     ASSERT_TRUE(w.waitState(
         [](const auto& s) { return s["tree"] == "legacy" && s["picture"] == "trying"; }, 10))

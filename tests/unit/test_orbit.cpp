@@ -24,6 +24,35 @@ TEST(Orbit, FloorHeightIsTheLowestPoint) {
     EXPECT_NEAR(sceneFloorHeight(s), 0.0f, 1e-6);
 }
 
+// The lecture scenes' floor is a 0.1-thick box with its top at y = 0: the orbit stays above its
+// top (it used to reach eye y = -0.05, its bottom plus the clearance); a scene whose lowest
+// object is no floor keeps the lowest point.
+TEST(Orbit, ReceiverIsTheFloorsTop) {
+    Scene s;
+    Object floor;
+    floor.kind = PrimitiveKind::Box;
+    floor.center = {0, -0.05f, 0};
+    floor.size = {3, 0.1f, 3};
+    Object cube;
+    cube.kind = PrimitiveKind::Box;
+    cube.center = {0, 0.25f, 0};
+    cube.size = {0.5f, 0.5f, 0.5f};
+    s.objects = {cube, floor};
+    EXPECT_NEAR(sceneReceiverHeight(s), 0.0f, 1e-6);
+    Object ball;
+    ball.kind = PrimitiveKind::Sphere;
+    ball.center = {0, 0, 0};
+    ball.radius = 1;
+    s.objects = {ball};
+    EXPECT_NEAR(sceneReceiverHeight(s), -1.0f, 1e-6);
+    Camera c;
+    c.eye = {0, 2, 4};
+    c.at = {-0.25f, 0, 0};
+    s.objects = {cube, floor};
+    for (int k = 0; k < 50; ++k) c = orbitCamera(c, 0.0f, -0.2f, sceneReceiverHeight(s));
+    EXPECT_GE(c.eye.y, 0.05f - 1e-4f);
+}
+
 TEST(Orbit, DraggingDownStopsAboveTheFloor) {
     Camera c;
     c.eye = {0, 2, 4};

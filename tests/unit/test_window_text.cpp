@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
-#include "platform/window_text.h"
 #include "render/hud.h"
+#include "window/window_text.h"
 
 using namespace sl;
 
@@ -85,4 +85,18 @@ TEST(WindowText, HelpListsEveryKey) {
 TEST(WindowText, OneLinePerEvent) {
     EXPECT_EQ(oneLine("a.frag: did not compile:\na.frag:3:1: error\n\n"),
               "a.frag: did not compile: | a.frag:3:1: error");
+}
+
+// The line a student reads first: the first that names a file and a line, its place first.
+TEST(WindowText, FirstErrorLineNamesFileAndLine) {
+    EXPECT_EQ(firstErrorLine("mine/margin/lit.frag: fragment shader did not compile:\n"
+                             "mine/margin/lit.frag:21:38: error: syntax error, unexpected ';'\n"),
+              "mine/margin/lit.frag:21:38: error: syntax error, unexpected ';'");
+    EXPECT_EQ(firstErrorLine("ERROR: mine/x.frag:3: 'in' : not allowed"),
+              "mine/x.frag:3: ERROR: 'in' : not allowed");
+    EXPECT_EQ(firstErrorLine("mine/margin/lit.frag (changed): stage margin (core) in the trial "
+                             "worker: no result within its time limit of 2 s of CPU time"),
+              "mine/margin/lit.frag (changed): stage margin (core) in the trial worker: no result "
+              "within its time limit of 2 s of CPU time");
+    EXPECT_EQ(firstErrorLine(""), "");
 }

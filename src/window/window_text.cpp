@@ -1,5 +1,6 @@
-#include "platform/window_text.h"
+#include "window/window_text.h"
 
+#include <cctype>
 #include <cstdio>
 #include <sstream>
 
@@ -68,19 +69,53 @@ const std::vector<std::string>& windowHelp() {
         "x: reset this stage's parameters    c: reset camera and light",
         "v: next debug view    l: animate the light    left drag, arrows: orbit",
         "mouse wheel: zoom    f: full screen",
-        "r: reload shaders now    p: save a PNG (./shots or --shots DIR)",
-        "i: HUD compact / full / hidden    h: this help    Esc: quit",
+        "r: try the shaders on disk again now    p: save a PNG (./shots or --shots DIR)",
+        "i: HUD compact / full / hidden    PgUp/PgDn: the full HUD or a page, scrolled",
+        "h: these keys, in the picture's place    Esc: quit",
     };
     return help;
 }
 
-std::string oneLine(const std::string& message) {
+std::vector<std::string> nonBlankLines(const std::string& message) {
+    std::vector<std::string> lines;
     std::istringstream in(message);
-    std::string line, out;
-    while (std::getline(in, line)) {
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        out += (out.empty() ? "" : " | ") + line;
+    for (std::string line; std::getline(in, line);)
+        if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
+    return lines;
+}
+
+std::string firstErrorLine(const std::string& message) {
+    const auto lines = nonBlankLines(message);
+    for (const std::string& line : lines) {
+        // PATH:LINE: or PATH:LINE:COLUMN: with no space in PATH
+        for (std::size_t colon = line.find(':'); colon != std::string::npos;
+             colon = line.find(':', colon + 1)) {
+            std::size_t digits = colon + 1;
+            while (digits < line.size() && std::isdigit(static_cast<unsigned char>(line[digits])))
+                ++digits;
+            if (digits == colon + 1 || digits >= line.size() || line[digits] != ':') continue;
+            std::size_t start = line.rfind(' ', colon);
+            start = start == std::string::npos ? 0 : start + 1;
+            if (start == colon) continue;
+            std::size_t end = digits;  // past a column too
+            std::size_t column = end + 1;
+            while (column < line.size() && std::isdigit(static_cast<unsigned char>(line[column])))
+                ++column;
+            if (column > end + 1 && column < line.size() && line[column] == ':') end = column;
+            std::string place = line.substr(start, end - start);
+            std::string before = line.substr(0, start), after = line.substr(end + 1);
+            while (!before.empty() && (before.back() == ' ' || before.back() == ':'))
+                before.pop_back();
+            while (!after.empty() && after.front() == ' ') after.erase(0, 1);
+            return place + ": " + (before.empty() ? "" : before + ": ") + after;
+        }
     }
+    return lines.empty() ? "" : lines.front();
+}
+
+std::string oneLine(const std::string& message) {
+    std::string out;
+    for (const std::string& line : nonBlankLines(message)) out += (out.empty() ? "" : " | ") + line;
     return out;
 }
 

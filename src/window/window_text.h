@@ -22,7 +22,16 @@ std::string shotFileName(const std::string& stage, const std::string& tree, cons
 // Every key the window knows, one line each ("key: what it does").
 const std::vector<std::string>& windowHelp();
 
+// The lines of a message that hold more than blanks.
+std::vector<std::string> nonBlankLines(const std::string& message);
+
 // Joins a multi-line message into one line (" | " between its lines), for the terminal.
 std::string oneLine(const std::string& message);
+
+// The line of a shader message a student reads first: the first that names a file and a line
+// ("mine/margin/lit.frag:12:5: error: syntax error, unexpected '+'"), its place put first when
+// a driver writes it later in the line ("ERROR: mine/x.frag:3: ..."); else the message's first
+// line (a loop refused names its file there).
+std::string firstErrorLine(const std::string& message);
 
 }  // namespace sl

@@ -1,0 +1,229 @@
+// What the panels say. Compact (the default, for a projector): the stage, its tree, the
+// student's folder, the selected parameter, the lesson, and the first error's file, line and
+// message; full (`i`): everything, a page at a time; the keys (`h`) in the picture's place.
+#include <sstream>
+
+#include "window/session.h"
+#include "window/window_text.h"
+
+namespace sl {
+
+namespace {
+
+const glm::vec4 kWhite(1), kGrey(0.85f, 0.85f, 0.85f, 1), kYellow(1, 1, 0.6f, 1),
+    kGreen(0.6f, 1, 0.6f, 1), kBlue(0.75f, 0.85f, 1, 1), kErrorText(1, 0.85f, 0.8f, 1),
+    kErrorTitle(1, 0.7f, 0.6f, 1);
+const glm::vec4 kErrorPanel(0.25f, 0.02f, 0.02f, 0.92f);
+
+}  // namespace
+
+const char* const WindowSession::kTryingLine =
+    "trying your shaders in a bounded worker first: a loop or a crash cannot freeze this window";
+
+std::string WindowSession::title() const {
+    return std::to_string(renderer().stageIndex()) + " " + renderer().stage().id;
+}
+
+std::string WindowSession::treeText() const {
+    std::string t = std::string("tree ") + treeName(shownTree());
+    if (renderer().stage().legacyOnly && tree_ == GlslTree::Core) t += " (fixed-function needs it)";
+    return t;
+}
+
+// The student's folder as the compact HUD names it: over ours in this tree, or not used here.
+std::string WindowSession::folderText() const {
+    if (request_.overlay.empty()) return "";
+    if (!renderer().shaders().overlay().empty()) return "your shaders: " + request_.overlay;
+    return "your shaders (" + request_.overlay + ") are for the " + treeName(request_.tree) +
+           " tree: ours here";
+}
+
+// A parameter's uniform is its name in camelCase (margin-kind: marginKind); a student's program
+// that does not read it gets the parameter marked, so a change that does nothing says why.
+std::string WindowSession::ignoredMark(const std::string& param) const {
+    std::string uniform;
+    for (std::size_t i = 0; i < param.size(); ++i)
+        if (param[i] == '-' && i + 1 < param.size())
+            uniform += char(std::toupper(static_cast<unsigned char>(param[++i])));
+        else
+            uniform += param[i];
+    Renderer& r = renderer();
+    return r.shaders().ignoredUniforms(r.stage().id).count(uniform)
+               ? " (your shader does not read it)"
+               : "";
+}
+
+// What the values on screen (or the split view's halves) wait for: "" when they drew.
+std::string WindowSession::valuesLine() const {
+    const auto screen = onScreen();
+    for (const Sets& sets : screen.sets)
+        if (watchdog_->valuePending(screen.tree, screen.stage, sets))
+            return "trying these values with your shaders in the worker first: the last ones "
+                   "that drew show meanwhile";
+    return "";
+}
+
+// The lines saying what is being tried, if anything concerns the picture.
+std::vector<HudLine> WindowSession::tryingLines() const {
+    std::vector<HudLine> lines;
+    const GlslTree tree = shownTree();
+    const std::string& stage = renderer().stage().id;
+    if (watchdog_->filesPending(tree, stage) && watchdog_->adopted(tree, stage))
+        lines.push_back(
+            {"trying your saved files in the worker first: the last good program "
+             "draws meanwhile",
+             kGreen});
+    const std::string values = valuesLine();
+    if (!values.empty()) lines.push_back({values, kGreen});
+    return lines;
+}
+
+std::vector<HudLine> WindowSession::helpLines() const {
+    std::vector<HudLine> lines = {{"the keys (h: back to the picture)", kYellow}};
+    for (const auto& h : windowHelp()) lines.push_back({h, kWhite});
+    return lines;
+}
+
+// The errors: the first one's file, line and message first, then (all) every line of each.
+std::vector<HudLine> WindowSession::errorLines(bool all) const {
+    std::vector<HudLine> lines;
+    const auto errors = shownErrors();
+    if (errors.empty()) return lines;
+    lines.push_back({firstErrorLine(errors[0]), kErrorText});
+    if (!all) return lines;
+    lines.front().color = kErrorTitle;
+    for (const auto& e : errors)
+        for (const auto& line : nonBlankLines(e)) lines.push_back({line, kErrorText});
+    return lines;
+}
+
+// A page in the picture's place for a stage with no good program: why, in full.
+std::vector<HudLine> WindowSession::errorPage(const std::string& why) const {
+    std::vector<HudLine> lines = {
+        {"no good program for " + renderer().stage().id + " yet, so no picture:", kErrorTitle}};
+    const std::string first = firstErrorLine(why);  // the line to read first, marked
+    for (const auto& line : nonBlankLines(why))
+        lines.push_back({line, firstErrorLine(line) == first ? kYellow : kErrorText});
+    lines.push_back({"save a repair: it is tried at once (r: try again now)", kGrey});
+    return lines;
+}
+
+std::vector<HudBlock> WindowSession::hudBlocks() const {
+    Renderer& r = renderer();
+    const StageInfo& s = r.stage();
+    std::vector<HudBlock> blocks;
+    const std::string view = viewLabel(s, r.view);
+    const std::string legend = viewLegend(s, r.view);
+    const auto errors = shownErrors();
+    std::size_t errorLinesTotal = 0;
+    for (const auto& e : errors) errorLinesTotal += nonBlankLines(e).size();
+    auto addLegendAndFlash = [&] {  // at the bottom, in both modes
+        if (!legend.empty()) {
+            HudBlock b;
+            b.bottom = true;
+            b.lines = {{legend, kWhite}};
+            b.maxLines = 2;
+            blocks.push_back(b);
+        }
+        if (!flash_.empty()) {
+            HudBlock b;
+            b.bottom = true;
+            b.lines = {{flash_, flashIsError_ ? kErrorText : kGreen}};
+            b.maxLines = 3;
+            if (flashIsError_) b.more = "(N more lines: the terminal has all of it)";
+            b.panel = flashIsError_ ? kErrorPanel : glm::vec4(0, 0, 0, 0.75f);
+            blocks.push_back(b);
+        }
+    };
+    if (split_ || !halfAreas_.empty()) {
+        const auto halves = splitHalves();
+        for (std::size_t k = 0; split_ && k < halves.size() && k < 2; ++k) {
+            HudBlock b;
+            b.bottom = true;
+            b.column = int(k);
+            b.half = true;
+            b.lines = {{(k == 0 ? "left: " : "right: ") + halves[k].name, kWhite}};
+            b.maxLines = 3;
+            blocks.push_back(b);
+        }
+    }
+    const auto& specs = r.params().specs();
+    if (hudMode_ == HudMode::Compact) {  // for a projector: what the picture is, how to read it
+        HudBlock top;
+        std::string line = title() + " | " + treeName(r.shaders().tree());
+        if (!request_.overlay.empty())
+            line += r.shaders().overlay().empty()
+                        ? " (your folder is " + std::string(treeName(request_.tree)) + ")"
+                        : ", " + request_.overlay + " over ours";
+        if (!specs.empty()) {
+            const std::string& name = specs[selectedParam_ % specs.size()].name;
+            line += " | " + name + " = " + r.params().text(name) + ignoredMark(name);
+        }
+        top.lines.push_back({line + " | h: keys", kYellow});
+        for (const HudLine& l : tryingLines()) top.lines.push_back(l);
+        const std::string lesson = lessonLine();
+        if (!lesson.empty()) top.lines.push_back({lesson, kWhite});
+        top.maxLines = 6;
+        top.keepLines = 2;  // the title line, wrapped on a small window
+        top.more = "i: the lesson and the rest (N more lines)";
+        if (!errors.empty()) {  // first: the first error's file, line and message, wrapped
+            HudBlock e;
+            e.lines = errorLines(false);
+            const std::size_t more = errorLinesTotal + (errors.size() > 1 ? 1 : 0);
+            e.lines.push_back(
+                {"i: the whole text (" + std::to_string(more) + " lines" +
+                     (errors.size() > 1 ? ", " + std::to_string(errors.size()) + " errors)" : ")"),
+                 kGrey});
+            e.more = "i: the rest of it (N more lines)";
+            e.keepLines = 1000;  // before any line of the panel under it
+            e.panel = kErrorPanel;
+            blocks.push_back(e);
+        }
+        blocks.push_back(top);
+        addLegendAndFlash();
+        return blocks;
+    }
+
+    HudBlock top;  // the full panel, a page at a time: the errors first, in full
+    top.scrollable = true;
+    top.firstLine = hudScroll_;
+    if (!errors.empty()) {
+        top.lines.push_back({renderError_.empty()
+                                 ? "shader error (the last good program keeps drawing):"
+                                 : "shader error (no good program for this stage yet):",
+                             kErrorTitle});
+        for (const HudLine& l : errorLines(true)) top.lines.push_back(l);
+    }
+    top.lines.push_back({title() + ": " + s.title, kYellow});
+    std::ostringstream status;
+    status << treeText() << " | scene " << scene_ << " | view " << view << " | ";
+    if (drawnFrames_ == 0)  // the time is known once the frame is done: the first one has none
+        status << "first frame";
+    else
+        status << static_cast<int>(drawMs_ * 10) / 10.0 << " ms to draw";
+    top.lines.push_back({status.str(), kWhite});
+    for (const HudLine& l : tryingLines()) top.lines.push_back(l);
+    if (scene_ != startScene_)
+        top.lines.push_back({"scene " + scene_ + ": the " + s.id +
+                                 " stage brings its own (back to " + startScene_ +
+                                 " when you leave it)",
+                             kBlue});
+    if (!request_.overlay.empty())
+        top.lines.push_back({folderText() + (r.shaders().overlay().empty() ? "" : " (over ours)"),
+                             r.shaders().overlay().empty() ? kGrey : kGreen});
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        bool selected = i == selectedParam_ % specs.size();
+        top.lines.push_back({std::string(selected ? "> " : "  ") + specs[i].name + " = " +
+                                 r.params().text(specs[i].name) + ignoredMark(specs[i].name),
+                             selected ? kGreen : kGrey});
+    }
+    const std::string lesson = lessonLine();
+    if (!lesson.empty()) top.lines.push_back({lesson, kWhite});
+    for (const auto& n : r.stats.notes) top.lines.push_back({n, kBlue});
+    top.lines.push_back({"h: the keys    PgUp/PgDn: this panel a page at a time", kGrey});
+    blocks.push_back(top);
+    addLegendAndFlash();
+    return blocks;
+}
+
+}  // namespace sl

@@ -1,0 +1,355 @@
+// Drawing a frame: the panels' bands, the picture between them (the stage, the split view's
+// halves, the mirror seen from above, or a page of text in the picture's place: the keys, why
+// there is no picture), then the panels.
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "math/mirror_topview.h"
+#include "math/orbit.h"
+#include "metrics/image.h"
+#include "metrics/mirror_figure.h"
+#include "window/session.h"
+#include "window/window_text.h"
+
+namespace sl {
+
+namespace {
+
+constexpr float kLightRadiansPerSecond = 0.6f;
+constexpr float kFramedAspect = 4.0f / 3.0f;
+const glm::vec4 kBackground(0.1f, 0.1f, 0.12f, 1);
+const glm::vec4 kErrorBackground(0.16f, 0.03f, 0.03f, 1);
+
+std::string setsText(const Sets& sets) {
+    std::string text;
+    for (const auto& [name, value] : sets)
+        text += (text.empty() ? "" : ", ") + name + " = " + value;
+    return text.empty() ? "the defaults" : text;
+}
+
+}  // namespace
+
+float WindowSession::textScale(int width, int height) const {
+    return std::max(0.5f, hudScale(width, height) * args_.hudScale);
+}
+
+HudRoom WindowSession::hudRoom() const {
+    // The picture keeps at least 45 % of the window: the full panel scrolls, the compact one
+    // cuts (its first error's file, line and message come first).
+    return hudMode_ == HudMode::Full ? HudRoom{0.40f, 0.15f} : HudRoom{0.35f, 0.20f};
+}
+
+void WindowSession::layOut(int width, int height) {
+    bands_ = {0, 0};
+    hudText_.clear();
+    pageText_.clear();
+    panels_.clear();
+    if (hudMode_ != HudMode::Hidden) {
+        const float scale = textScale(width, height);
+        panels_ = layoutHud(hudBlocks(), width, height, scale, hudRoom());
+        bands_ = hudBands(panels_, height, scale);
+        for (const HudPanel& p : panels_) {
+            for (const HudLine& l : p.lines) hudText_.push_back(l.text);
+            if (!p.bottom && hudMode_ == HudMode::Full) {  // PgUp/PgDn: a page of the panel
+                panelLines_ = int(p.lines.size());
+                hudScroll_ = std::clamp(hudScroll_, 0, std::max(0, p.wrappedLines - 1));
+            }
+        }
+    }
+    pictureArea_ = {0, bands_.second, width, std::max(1, height - bands_.first - bands_.second)};
+}
+
+std::string WindowSession::draw(int width, int height, const std::string& saveTo, bool withHud) {
+    width_ = width;
+    height_ = height;
+    Renderer& r = renderer();
+    auto start = Clock::now();
+    if (animateLight_) {  // radians per second, whatever the frame rate (down to 1 frame a second;
+                          // a longer gap is a pause, not a frame, and does not jump the light)
+        double dt = std::min(std::chrono::duration<double>(start - lastAnimation_).count(), 1.0);
+        r.lightPosition = circlingLight(r.lightPosition, kLightRadiansPerSecond, dt);
+    }
+    lastAnimation_ = start;
+    std::string saved;
+    if (!saveTo.empty() && !withHud) saved = writePng(saveTo, pictureAlone(width, height));
+    layOut(width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    glClearColor(kBackground.r, kBackground.g, kBackground.b, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    drawPicture(pictureArea_);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);  // the stage's passes leave theirs
+    hud_.draw(hudShaders_, panels_, width, height, textScale(width, height));
+    if (!saveTo.empty() && withHud) saved = writePng(saveTo, readPixels());
+    glFinish();
+    drawMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    if (!watchdog_->running()) idleDrawMs_ = drawMs_;
+    ++drawnFrames_;
+    return saved;
+}
+
+Image WindowSession::pictureAlone(int width, int height) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    glClearColor(kBackground.r, kBackground.g, kBackground.b, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    drawPicture({0, 0, width, height});
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    return readPixels();
+}
+
+void WindowSession::drawPicture(const Rect& area) {
+    halfAreas_.clear();
+    halvesShow_.clear();
+    if (showHelp_) {  // asked for: the keys in the picture's place, in every HUD mode
+        drawPage(area, helpLines(), kBackground, &pageScroll_);
+        pictureShows_ = "help";
+        return;
+    }
+    if (split_ && splitHalves().empty()) split_ = false;  // another stage, or its only lesson
+    if (split_) {
+        drawSplit(area);
+        return;
+    }
+    const Sets onScreen = nonDefault(renderer().params());
+    if (const WindowLesson* lesson = topViewLesson()) {  // the mirror from above, beside it
+        const Rect left{area.x, area.y, area.width / 2, area.height};
+        const Rect right{area.x + left.width, area.y, area.width - left.width, area.height};
+        drawTopView(left, *lesson);
+        pictureShows_ = drawStageIn(right, onScreen, true);
+        halfAreas_ = {left, right};
+        halvesShow_ = {"top-view", pictureShows_};
+        return;
+    }
+    pictureShows_ = drawStageIn(area, onScreen, true);
+}
+
+// Both halves with the renderer's own camera and light, each with its settings (the stage's
+// defaults and the lesson's), side by side in the picture's area.
+void WindowSession::drawSplit(const Rect& area) {
+    const auto halves = splitHalves();
+    const int half = area.width / 2;
+    pictureShows_ = "stage";
+    for (std::size_t k = 0; k < halves.size() && k < 2; ++k) {
+        const Rect part{area.x + int(k) * half, area.y, k == 0 ? half : area.width - half,
+                        area.height};
+        ParamSet values = renderer().params();
+        applySets(values, halves[k].sets);
+        const std::string shows = drawStageIn(part, nonDefault(values), false);
+        if (shows != "stage") pictureShows_ = shows;
+        halfAreas_.push_back(part);
+        halvesShow_.push_back(shows);
+    }
+}
+
+void WindowSession::noteRenderError(const std::string& why) {
+    renderError_ = why;
+    if (printedRenderError_ != why && saidErrors_.insert(why).second)
+        std::cerr << "shadowlab: shader error (no good program for " << renderer().stage().id
+                  << " yet): " << oneLine(why) << std::endl;
+    printedRenderError_ = why;
+}
+
+std::string WindowSession::drawStageIn(const Rect& area, const Sets& sets, bool onScreen) {
+    Renderer& r = renderer();
+    const GlslTree tree = shownTree();
+    const std::string& stage = r.stage().id;
+    if (onScreen) renderError_.clear();
+    // Built here from the files on disk only when those drew in the worker; while others are
+    // tried (or were refused), what this renderer built before keeps drawing.
+    const std::string here = std::string(treeName(tree)) + "/" + scene_ + "/" + stage;
+    const bool held = watchdog_->adopted(tree, stage) && drawnHere_.count(here);
+    if (!held && !watchdog_->diskIsGood(tree, stage)) {
+        if (watchdog_->filesPending(tree, stage)) {
+            const std::string who =
+                request_.overlay.empty() ? "the changed files of " : folderText() + ", stage ";
+            drawPage(area,
+                     {{kTryingLine, glm::vec4(0.6f, 1, 0.6f, 1)},
+                      {"(" + who + stage + ")", glm::vec4(0.85f)}},
+                     kBackground, nullptr);
+            return "trying";
+        }
+        std::string why = watchdog_->refused(tree, stage);
+        if (why.empty()) why = watchdog_->lost(tree, stage);
+        if (onScreen) noteRenderError(why);
+        drawPage(area, errorPage(why), kErrorBackground, &pageScroll_);
+        return "none";
+    }
+    const Sets use = watchdog_->drawable(tree, stage, sets);
+    if (!onScreen && use != sets) {  // a half's values: its lesson is drawn, or said why not
+        const std::string refused = watchdog_->valueRefused(tree, stage, sets);
+        std::vector<HudLine> lines;
+        if (refused.empty())
+            lines = {{"trying " + setsText(sets) + " with your shaders in the worker first",
+                      glm::vec4(0.6f, 1, 0.6f, 1)}};
+        else
+            lines = {{"these values did not draw in the trial worker (" + setsText(sets) + "):",
+                      glm::vec4(1, 0.7f, 0.6f, 1)},
+                     {refused, glm::vec4(1, 0.85f, 0.8f, 1)}};
+        drawPage(area, lines, refused.empty() ? kBackground : kErrorBackground, nullptr);
+        return refused.empty() ? "trying" : "none";
+    }
+    const ParamSet kept = r.params();
+    const bool other = nonDefault(kept) != use;
+    const Camera camera = r.camera;
+    try {
+        if (other) {
+            applySets(r.params(), use);
+            r.sceneChanged();  // another shadow map: no cached one carries over
+        }
+        // A picture narrower than the scenes' cameras were framed for (4:3, the default
+        // 640x480: a split half, a tall window) widens its field of view so that the scene's
+        // width still fits.
+        const float framed = kFramedAspect;
+        const float aspect = float(area.width) / float(area.height);
+        if (aspect < framed) {
+            const float half = glm::radians(r.camera.fovyDegrees) / 2;
+            r.camera.fovyDegrees =
+                std::min(150.0f, glm::degrees(2 * std::atan(std::tan(half) * framed / aspect)));
+        }
+        const bool whole =
+            area.x == 0 && area.y == 0 && area.width == width_ && area.height == height_;
+        if (whole) {
+            r.render(0, area.width, area.height);
+        } else {
+            picture_.resize(area.width, area.height);
+            r.render(picture_.framebuffer(), area.width, area.height);
+            blit(picture_.framebuffer(), area);
+        }
+        drawnHere_.insert(here);
+        if (onScreen) drawnWith_ = use;
+    } catch (const ShaderError& e) {  // built here for the first time and failed
+        if (onScreen) noteRenderError(e.what());
+        drawPage(area, errorPage(e.what()), kErrorBackground, &pageScroll_);
+        r.camera = camera;
+        if (other) r.params() = kept, r.sceneChanged();
+        return "none";
+    }
+    r.camera = camera;
+    if (other) r.params() = kept, r.sceneChanged();
+    return "stage";
+}
+
+void WindowSession::blit(GLuint from, const Rect& to) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, to.width, to.height, to.x, to.y, to.x + to.width, to.y + to.height,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// Lines of text in the picture's place, as large as the window's text when they fit, smaller
+// (down to 7-pixel glyphs) when not, then a page at a time (PgUp/PgDn) with `scroll`.
+void WindowSession::drawPage(const Rect& area, const std::vector<HudLine>& lines,
+                             const glm::vec4& background, int* scroll) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(area.x, area.y, area.width, area.height);
+    glClearColor(background.r, background.g, background.b, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    const float most = textScale(width_, height_);
+    float scale = most;
+    std::vector<HudLine> wrapped;
+    int rows = 0;
+    for (;;) {
+        const float wrapAt = area.width / scale - 2 * (kHudMargin + Hud::kPad);
+        wrapped = wrapHudLines(lines, std::max(wrapAt, 8.0f));
+        rows = int((area.height / scale - 2 * (kHudMargin + Hud::kPad) + 3) / Hud::kLineHeight);
+        if (int(wrapped.size()) <= rows || scale <= std::min(1.0f, most)) break;
+        scale = std::max(std::min(1.0f, most), scale * 0.85f);
+    }
+    HudBlock page;
+    page.lines = lines;
+    page.panel = glm::vec4(0);
+    page.scrollable = scroll != nullptr;
+    page.firstLine = scroll ? *scroll : 0;
+    page.more = "(N more lines: a larger window shows them)";
+    glViewport(area.x, area.y, area.width, area.height);
+    const auto panels = layoutHud({page}, area.width, area.height, scale);
+    hud_.draw(hudShaders_, panels, area.width, area.height, scale);
+    glViewport(0, 0, width_, height_);
+    for (const HudPanel& p : panels)
+        for (const HudLine& l : p.lines) pageText_.push_back(l.text);
+    if (scroll) {
+        *scroll = std::clamp(*scroll, 0, std::max(0, int(wrapped.size()) - 1));
+        pageLines_ = std::max(1, rows - 1);
+    }
+}
+
+// The lecture's practice exercise from above: the mirror p1-p2, the viewer's eye and at, the
+// reflected eye' and at', and the reflected camera's frustum, x to the right and z down the page.
+void WindowSession::drawTopView(const Rect& area, const WindowLesson& lesson) {
+    const MirrorTopView v = practiceTopView(lesson.p1, lesson.p2, lesson.eye, lesson.at);
+    drawPage(area, {}, glm::vec4(0.96f, 0.96f, 0.94f, 1), nullptr);  // the paper
+    const float scale = std::max(1.0f, textScale(width_, height_) * 0.6f);
+    const glm::vec4 ink(0.1f, 0.1f, 0.1f, 1), mirror(0.1f, 0.35f, 0.9f, 1),
+        reflected(0.85f, 0.35f, 0.05f, 1);
+    HudBlock caption;  // what it shows, wrapped to the half
+    caption.panel = glm::vec4(0);
+    caption.lines = {{"the slides' exercise from above: the mirror p1-p2, eye and at, the "
+                      "reflected eye' and at' and the frustum",
+                      ink},
+                     {v.valid ? oneLine(describeTopView(v)) : v.reason, reflected}};
+    glViewport(area.x, area.y, area.width, area.height);
+    const auto panels = layoutHud({caption}, area.width, area.height, scale, HudRoom{0.4f, 0});
+    hud_.draw(hudShaders_, panels, area.width, area.height, scale);
+    const float top = hudBands(panels, area.height, scale).first;
+    std::vector<glm::vec2> all = {v.p1, v.p2, v.eye, v.at};
+    if (v.valid) all.insert(all.end(), {v.eyePrime, v.atPrime, v.far1, v.far2});
+    glm::vec2 lo = all[0], hi = all[0];
+    for (const glm::vec2& p : all) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const float room = 2 * Hud::kLineHeight * scale;  // for the labels
+    const float w = area.width - 2 * room, h = area.height - top - 2 * room;
+    const float unit = std::max(
+        0.0f, std::min(w / std::max(hi.x - lo.x, 1e-3f), h / std::max(hi.y - lo.y, 1e-3f)));
+    const glm::vec2 origin(room + (w - unit * (hi.x - lo.x)) / 2,
+                           top + room + (h - unit * (hi.y - lo.y)) / 2);
+    auto at = [&](glm::vec2 p) { return origin + unit * (p - lo); };  // z grows down the page
+    glLineWidth(std::max(1.0f, scale / 2));  // a compatibility context: wide lines allowed
+    hud_.drawLines(hudShaders_, {at(v.eye), at(v.at)}, ink, area.width, area.height);
+    if (v.valid)
+        hud_.drawLines(hudShaders_,
+                       {at(v.eyePrime), at(v.atPrime), at(v.eyePrime), at(v.far1), at(v.eyePrime),
+                        at(v.far2), at(v.far1), at(v.far2), at(v.eye), at(v.eyePrime)},
+                       reflected, area.width, area.height);
+    glLineWidth(std::max(2.0f, scale * 1.5f));
+    hud_.drawLines(hudShaders_, {at(v.p1), at(v.p2)}, mirror, area.width, area.height);
+    glLineWidth(1);
+    auto label = [&](const std::string& text, glm::vec2 p, const glm::vec4& colour) {
+        hud_.drawLabel(hudShaders_, {text, colour}, at(p).x + 4, at(p).y + 4, area.width,
+                       area.height, scale);
+    };
+    label("p1", v.p1, mirror);
+    label("p2", v.p2, mirror);
+    label("eye", v.eye, ink);
+    label("at", v.at, ink);
+    if (v.valid) {
+        label("eye'", v.eyePrime, reflected);
+        label("at'", v.atPrime, reflected);
+    }
+    glViewport(0, 0, width_, height_);
+}
+
+void WindowSession::PictureTarget::resize(int width, int height) {
+    if (width == width_ && height == height_) return;
+    width_ = width;
+    height_ = height;
+    colour_ = Renderbuffer::create();
+    glBindRenderbuffer(GL_RENDERBUFFER, colour_.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    depthStencil_ = Renderbuffer::create();
+    glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+    fbo_ = Framebuffer::create();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              depthStencil_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace sl
