@@ -33,7 +33,9 @@ struct RenderRequest {
     std::optional<std::uint64_t> displaceSeed;
 };
 
-// The folder of our shaders for a tree.
+// The folder of our shaders for a tree: <data>/shaders_core (or _legacy), or where an install
+// has the `solutions` component, <data>/solutions/shaders_core (the marked trees beside the
+// student edition's stubs).
 std::string shaderTreeRoot(GlslTree tree);
 
 // Checks the request against the stage (exists, tree allowed, view offered, parameters) before

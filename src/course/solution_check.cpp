@@ -1,0 +1,114 @@
+#include "course/solution_check.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "grade/private_dir.h"
+#include "io/files.h"
+
+namespace sl {
+
+using nlohmann::json;
+
+namespace {
+
+std::string pointsText(double v) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%.2f", v);
+    return s;
+}
+
+// The solution handed in as a student would: the due stages' files, copied from `trees`.
+StudentWork solutionWork(const Assignment& a, const SolutionTrees& trees, const std::string& dir) {
+    StudentWork work;
+    work.name = "solution";
+    work.overlay = dir;
+    for (std::size_t k = 0; k < a.stages.size(); ++k) {
+        const AssignmentStage& s = a.stages[k];
+        if (!s.due) continue;
+        for (const std::string& f : s.files) {
+            std::string source = trees.root(s.tree) + "/" + f, text;
+            std::string err = readRegularFile(source, 1u << 20, text);
+            if (!err.empty())
+                throw UsageError(printableName(source) + " (" +
+                                 a.at("/stages/" + std::to_string(k) + "/files") + ", from " +
+                                 trees.describe() + "): " + err);
+            std::error_code ec;
+            std::filesystem::create_directories(std::filesystem::path(dir + "/" + f).parent_path(),
+                                                ec);
+            err = writeFileAtomically(dir + "/" + f, text.data(), text.size());
+            if (!err.empty()) throw std::runtime_error("the solution's copy: " + err);
+            work.files.push_back(f);
+        }
+    }
+    return work;
+}
+
+// The assignment entry that made a row: its extra view, else its stage (and the view's or the
+// lesson's own weight when the assignment gives one).
+std::string entryOf(const Assignment& a, const json& stage, const json& row) {
+    std::string view = row.value("view", ""), lesson = row.value("lesson", "");
+    if (row.value("extra_view", false))
+        for (std::size_t k = 0; k < a.extraViews.size(); ++k)
+            if (a.extraViews[k].name == view) return "/extra_views/" + std::to_string(k);
+    for (std::size_t k = 0; k < a.stages.size(); ++k) {
+        const AssignmentStage& s = a.stages[k];
+        if (!s.due || s.stage != stage["stage"] || s.tree != stage["tree"]) continue;
+        std::string path = "/stages/" + std::to_string(k);
+        if (s.views.count(view)) return path + "/views/" + view;
+        if (s.lessons.count(lesson)) return path + "/lessons/" + lesson;
+        return path;
+    }
+    return "";
+}
+
+}  // namespace
+
+json verifySolution(const Assignment& a, const SolutionTrees& trees,
+                    const GradeSettings& settings) {
+    PrivateDir dir("shadowlab-solution");
+    StudentWork solution = solutionWork(a, trees, dir.path());
+    GradeSettings quiet = settings;
+    quiet.pictures = false;
+    quiet.imageDir = nullptr;
+    json record;
+    if (gradeStudents(a, {solution}, quiet, [&](std::size_t, const json& r) { record = r; }))
+        throw std::runtime_error("the solution (" + trees.describe() + ") could not be graded by " +
+                                 a.origin + ": rerun");
+    double lost = 0;
+    int rowsLost = 0;
+    std::string first;
+    for (const json& st : record["stages"]) {
+        std::string id = st["stage"].get<std::string>() + "/" + st["tree"].get<std::string>();
+        std::string status = st["status"], message = printable(st.value("message", ""));
+        if (status == "TIMEOUT" || status == "CRASH")
+            throw std::runtime_error("the solution's " + id + " (" + trees.describe() +
+                                     ") did not finish grading (" + status + ": " +
+                                     message.substr(0, 200) +
+                                     "): rerun on a quieter machine or raise --time-limit");
+        if (status != "graded")
+            throw AssignmentError(a.at(entryOf(a, st, json::object())) + ": the solution's " + id +
+                                  " (" + trees.describe() + ") is " + status + ": " +
+                                  message.substr(0, 300));
+        for (const json& row : st["rows"]) {
+            double missed = row.value("max_points", 0.0) - row.value("points", 0.0);
+            if (missed <= 1e-9) continue;
+            lost += missed;
+            ++rowsLost;
+            if (first.empty())
+                first = a.at(entryOf(a, st, row)) + ": " + id + " view " + row.value("view", "") +
+                        " lesson '" + row.value("lesson", "") + "' is " + row.value("verdict", "") +
+                        " (" + printable(row.value("message", "")).substr(0, 300) + ")";
+        }
+    }
+    if (rowsLost > 0)
+        throw AssignmentError(first + ": the solution (" + trees.describe() + ") loses " +
+                              pointsText(lost) + " of " + pointsText(a.maxPoints()) +
+                              " points in " + std::to_string(rowsLost) +
+                              (rowsLost == 1 ? " row" : " rows") +
+                              ", so every correct student would; change or drop the row");
+    return record;
+}
+
+}  // namespace sl
