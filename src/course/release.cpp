@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "io/files.h"
+#include "render/request.h"
 
 namespace sl {
 
@@ -66,10 +67,6 @@ std::string studentReadme(const Assignment& a) {
     return r.str();
 }
 
-}  // namespace
-
-namespace {
-
 // The exact marker lines (trimmed) and the STUB prefix.
 const char* const kBegin = "// BEGIN SOLUTION";
 const char* const kEnd = "// END SOLUTION";
@@ -96,6 +93,16 @@ Marker markerOf(const std::string& line, const std::function<AssignmentError(std
                  "', '" + kEnd + "' or '" + kStub + " code' on a line of its own");
     }
     return Marker::None;
+}
+
+std::string studentEditionNote() {
+    return "# The student edition\n\n"
+           "In these shaders every part a lab asks you to write is a stub: it builds, draws a\n"
+           "\"not done yet\" picture (no shadows, a grey mirror) and says in a TODO what to "
+           "write.\n"
+           "Write your work in a folder of your own, laid out like this one (`margin/lit.frag`),\n"
+           "and run `shadowlab window --shaders DIR` or `shadowlab check --assignment A.json\n"
+           "--shaders DIR`.\n";
 }
 
 }  // namespace
@@ -282,6 +289,7 @@ int writeStudentEdition(const SolutionTrees& trees, const std::string& outDir) {
             files.push_back({top + "/" + fs::relative(it->path(), root).string(), stripped});
         }
         if (ec) throw UsageError("release --student-edition: cannot list " + printableName(root));
+        files.push_back({top + "/" + kStudentEditionNote, studentEditionNote()});
     }
     for (const StudentFile& f : files) writeText(outDir + "/" + f.rel, f.text);
     return regions;

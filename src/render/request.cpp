@@ -19,6 +19,12 @@ std::string shaderTreeRoot(GlslTree tree) {
     return dataDir() + name;
 }
 
+bool isStudentEdition(GlslTree tree) {
+    struct stat st;
+    std::string note = shaderTreeRoot(tree) + "/" + kStudentEditionNote;
+    return ::stat(note.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
 void validateRequest(const RenderRequest& r) {
     const StageInfo* info = findStage(r.stage);
     if (!info) {

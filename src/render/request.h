@@ -38,6 +38,11 @@ struct RenderRequest {
 // student edition's stubs).
 std::string shaderTreeRoot(GlslTree tree);
 
+// The note `release --student-edition` leaves at the root of each tree it writes (every marked
+// solution region there is a stub), and whether our tree for `tree` carries it.
+inline constexpr const char* kStudentEditionNote = "STUDENT_EDITION.md";
+bool isStudentEdition(GlslTree tree);
+
 // Checks the request against the stage (exists, tree allowed, view offered, parameters) before
 // any GL work; throws UsageError with a one-line message.
 void validateRequest(const RenderRequest& request);

@@ -42,14 +42,19 @@ run() { (cd / && env -u SHADOWLAB_DATA_DIR SHADOWLAB_NO_SOURCE_DIR=1 "$exe" "$@"
 # The stubs build and draw; the stage does not pass.
 run render --stage margin --size 64x48 --repeat 0 --out "$tmp/margin.png" >/dev/null ||
   fail "the student edition's margin stage does not render"
-# A student's own work is graded at home against the same references as the instructor's.
+# A student's own work is graded at home against the same references as the instructor's (the
+# mirror's too, although its surface shaders are stubs here).
 printf '{"name": "margin", "stages": [{"stage": "margin", "files": ["margin/lit.frag"], "points": 10}]}' \
   > "$tmp/margin.json"
-mkdir -p "$tmp/handin/margin"
+printf '{"name": "two", "stages": [{"stage": "margin", "files": ["margin/lit.frag"], "points": 10},
+  {"stage": "mirror", "files": ["mirror/surface.frag", "mirror/surface.vert"], "points": 10}]}' \
+  > "$tmp/two.json"
+mkdir -p "$tmp/handin/margin" "$tmp/handin/mirror"
 cp "$src/shaders_core/margin/lit.frag" "$tmp/handin/margin/"
-out=$(run check --assignment "$tmp/margin.json" --shaders "$tmp/handin" --time-limit 300) ||
+cp "$src/shaders_core/mirror/surface.frag" "$src/shaders_core/mirror/surface.vert" "$tmp/handin/mirror/"
+out=$(run check --assignment "$tmp/two.json" --shaders "$tmp/handin" --time-limit 300) ||
   fail "a correct hand-in is not graded full marks in the student edition: $out"
-echo "$out" | grep -q "total: 10.00 of 10.00" || fail "no full marks: $out"
+echo "$out" | grep -q "total: 20.00 of 20.00" || fail "no full marks: $out"
 # Nothing to release from: the edition has no solution regions.
 set +e
 run release --assignment "$tmp/margin.json" --out "$tmp/rel" >/dev/null 2>"$tmp/err"
