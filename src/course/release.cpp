@@ -230,14 +230,6 @@ std::vector<StudentFile> releasedShaders(const Assignment& a, const SolutionTree
                                       "--solutions DIR)");
             out.push_back({f, stripped});
         }
-        // Every marked file of the stage's folder is handed in: the student edition stubs them
-        // all, so an unlisted one would be a stub in the students' copy but our solution when
-        // graded.
-        for (const std::string& marked : markedFiles(root, s.stage))
-            if (std::find(s.files.begin(), s.files.end(), marked) == s.files.end())
-                throw AssignmentError(a.at(path) + ": " + marked +
-                                      " holds a solution region too (students' copies of it are "
-                                      "stubs): list it in the stage's files");
     }
     return out;
 }

@@ -44,8 +44,7 @@ struct StudentFile {
 
 // The due stages' files from `trees`, stubbed, in assignment order; nothing written. Refuses a
 // due file without a region (it would hand out the whole solution), a marker out of place or a
-// look-alike, and a due stage whose folder has a marked file the assignment does not list
-// (students' copies of it are stubs: see writeStudentEdition).
+// look-alike.
 std::vector<StudentFile> releasedShaders(const Assignment& a, const SolutionTrees& trees);
 
 // UsageError when `outDir` exists and is not empty (checked before the solution is graded).

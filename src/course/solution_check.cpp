@@ -1,5 +1,6 @@
 #include "course/solution_check.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -19,7 +20,8 @@ std::string pointsText(double v) {
     return s;
 }
 
-// The solution handed in as a student would: the due stages' files, copied from `trees`.
+// The solution handed in as a student would: the due stages' files, copied from `trees`, and
+// the other marked files of their folders (so the rows that draw with one of those show it).
 StudentWork solutionWork(const Assignment& a, const SolutionTrees& trees, const std::string& dir) {
     StudentWork work;
     work.name = "solution";
@@ -27,7 +29,10 @@ StudentWork solutionWork(const Assignment& a, const SolutionTrees& trees, const 
     for (std::size_t k = 0; k < a.stages.size(); ++k) {
         const AssignmentStage& s = a.stages[k];
         if (!s.due) continue;
-        for (const std::string& f : s.files) {
+        std::vector<std::string> files = s.files;
+        for (const std::string& f : markedFiles(trees.root(s.tree), s.stage))
+            if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
+        for (const std::string& f : files) {
             std::string source = trees.root(s.tree) + "/" + f, text;
             std::string err = readRegularFile(source, 1u << 20, text);
             if (!err.empty())
@@ -63,6 +68,30 @@ std::string entryOf(const Assignment& a, const json& stage, const json& row) {
     return "";
 }
 
+// A marked file of a due stage's folder that the stage does not list but a graded row draws
+// with: students' copies of it are stubs (their release has none, the student edition stubs
+// it), so the row would grade our solution for them in the class and a stub at home.
+void refuseUnlistedMarked(const Assignment& a, const SolutionTrees& trees, const json& record) {
+    for (std::size_t k = 0; k < a.stages.size(); ++k) {
+        const AssignmentStage& s = a.stages[k];
+        if (!s.due) continue;
+        for (const json& st : record["stages"]) {
+            if (st["stage"] != s.stage || st["tree"] != s.tree) continue;
+            for (const json& row : st["rows"])
+                for (const json& used : row.value("student_files", json::array())) {
+                    std::string f = used.get<std::string>();
+                    if (std::find(s.files.begin(), s.files.end(), f) != s.files.end()) continue;
+                    throw AssignmentError(
+                        a.at("/stages/" + std::to_string(k) + "/files") + ": " + f + " (" +
+                        trees.describe() + ") holds a solution region and " + s.stage + "/" +
+                        s.tree + " draws with it (lesson '" + row.value("lesson", "") +
+                        "'), but it is not in the stage's files: students have only a stub of "
+                        "it; list it, or weigh that lesson 0");
+                }
+        }
+    }
+}
+
 }  // namespace
 
 json verifySolution(const Assignment& a, const SolutionTrees& trees,
@@ -76,6 +105,7 @@ json verifySolution(const Assignment& a, const SolutionTrees& trees,
     if (gradeStudents(a, {solution}, quiet, [&](std::size_t, const json& r) { record = r; }))
         throw std::runtime_error("the solution (" + trees.describe() + ") could not be graded by " +
                                  a.origin + ": rerun");
+    refuseUnlistedMarked(a, trees, record);
     double lost = 0;
     int rowsLost = 0;
     std::string first;

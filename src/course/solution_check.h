@@ -16,7 +16,9 @@ namespace sl {
 // Returns the solution's record when it earns every point. Throws AssignmentError (exit 2)
 // naming the first row it loses (its stage, view, lesson, verdict and message, and the JSON path
 // of the assignment entry that made it: the stage or the extra view) and how many points the
-// solution loses in all; a stage of the solution that does not build is refused the same way.
+// solution loses in all; a stage of the solution that does not build is refused the same way,
+// and so is a graded row that draws with a marked file its stage does not list (students have
+// only its stub).
 // Throws std::runtime_error (exit 3) when the grading itself failed (a GL or platform failure,
 // a worker out of time or memory: rerun, or raise --time-limit).
 nlohmann::json verifySolution(const Assignment& a, const SolutionTrees& trees,

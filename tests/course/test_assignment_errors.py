@@ -3,7 +3,7 @@
 file, the JSON path and the line of what is wrong (or the line and column of a syntax error):
 its syntax, types and ranges, any number JSON can hold, and what it may not mean (a degenerate
 extra view, a due stage that can earn nothing); `release` refuses what it cannot release (a
-stage without solution regions, a marked file the stage does not list) before grading anything.
+stage without solution regions, an instructor's trees in the wrong layout) before grading.
 usage: test_assignment_errors.py SHADOWLAB WORKDIR"""
 import os, shutil, subprocess, sys
 
@@ -91,9 +91,6 @@ release_cases = [
     # displaced is a graded view: accepted (the release stops at the full --out folder).
     ('{"name": "x", "stages": [\n {"stage": "margin", "files": ["margin/lit.frag"], "points": 5,\n  "views": {"displaced": {"weight": 2, "visibility": "hidden"}}}]}',
      work + "/full", "the folder exists and is not empty"),
-    # Every marked file of a due stage's folder is listed (the student edition stubs them all).
-    ('{"name": "x", "stages": [\n {"stage": "mirror", "files": ["mirror/surface.frag"], "points": 5}]}',
-     work + "/out", "/stages/0/files (line 2): mirror/surface.vert holds a solution region too"),
     # phong's lit pass has no region (it is the lighting every stage is graded against).
     ('{"name": "x", "stages": [\n {"stage": "phong", "files": ["phong/lit.frag"], "points": 5}]}',
      work + "/out", "phong/lit.frag: no BEGIN SOLUTION region"),

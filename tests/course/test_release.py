@@ -113,7 +113,8 @@ if tree == "core":
         assert not os.path.exists(work + "/refused"), look
     # END misspelled: the BEGIN is never closed (and the END look-alike refuses first).
     for broken, want in [(shipped_rgb.replace("    // END SOLUTION", "    // END-SOLUTION", 1), "'// END-SOLUTION' looks like"),
-                         (shipped_rgb.replace("    // END SOLUTION\n", "", 1), "line %d: BEGIN SOLUTION is never closed" % line),
+                         (re.sub(r"    // END SOLUTION\n(    // STUB:.*\n)*", "", shipped_rgb, count=1), "line %d: BEGIN SOLUTION is never closed" % line),
+                         (shipped_rgb.replace("    // END SOLUTION\n", "", 1), "line %d: a STUB line inside the region opened on line %d" % (line + 3, line)),
                          (shipped_rgb.replace("    // BEGIN SOLUTION", "    // BEGIN SOLUTION\n    // BEGIN SOLUTION", 1), "BEGIN SOLUTION inside the region")]:
         open(mine_rgb, "w").write(broken)
         r = subprocess.run([exe, "release", "--assignment", assignment, "--out", work + "/refused",
@@ -121,7 +122,7 @@ if tree == "core":
         assert r.returncode == 2 and want in r.stderr, (want, r.returncode, r.stderr)
         assert not os.path.exists(work + "/refused")
     open(mine_rgb, "w").write(shipped_rgb)
-    print("look-alike markers refused: %d" % (len(looks) + 3))
+    print("look-alike markers refused: %d" % (len(looks) + 4))
 
     # 5. The solution is graded first: an extra view whose light our own method cannot handle
     #    costs the solution points, so the release is refused naming that view.
@@ -134,6 +135,14 @@ if tree == "core":
     print(r.stdout[-800:], r.stderr[-800:])
     assert r.returncode == 2 and r.stderr.count("\n") == 1, (r.returncode, r.stderr)
     assert "/extra_views/0 (line" in r.stderr and "view low-light" in r.stderr and "the solution (the shipped shaders) loses" in r.stderr, r.stderr
+    assert not os.path.exists(work + "/refused")
+    # A graded row that draws with a marked file its stage does not list (students have only its
+    # stub) refuses too: the mirror without its vertex shader.
+    json.dump({"name": "mirror", "stages": [{"stage": "mirror", "files": ["mirror/surface.frag"], "points": 5}]},
+              open(work + "/mirror.json", "w"))
+    r = subprocess.run([exe, "release", "--assignment", work + "/mirror.json", "--out", work + "/refused"] + LIMITS,
+                       capture_output=True, text=True, timeout=1800)
+    assert r.returncode == 2 and "/stages/0/files (line 1): mirror/surface.vert (the shipped shaders) holds a solution region" in r.stderr, r.stderr
     assert not os.path.exists(work + "/refused")
 
     # 6. The student edition: every shipped file, no line of any region.
