@@ -95,6 +95,25 @@ Marker markerOf(const std::string& line, const std::function<AssignmentError(std
     return Marker::None;
 }
 
+// Every regular file under `root`/`folder` ("" = all of `root`): its path relative to `root`
+// and its text. A file that cannot be read, or a tree that cannot be listed, is an error.
+std::vector<StudentFile> treeFiles(const std::string& root, const std::string& folder) {
+    std::vector<StudentFile> out;
+    std::error_code ec;
+    fs::path base = folder.empty() ? fs::path(root) : fs::path(root) / folder;
+    if (!fs::is_directory(base, ec)) return out;
+    for (auto it = fs::recursive_directory_iterator(base, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        if (!it->is_regular_file(ec) || it->is_symlink(ec)) continue;
+        std::string text, path = it->path().string();
+        std::string err = readRegularFile(path, kMaxShaderBytes, text);
+        if (!err.empty()) throw UsageError("release: " + printableName(path) + ": " + err);
+        out.push_back({fs::relative(it->path(), root).string(), text});
+    }
+    if (ec) throw UsageError("release: cannot list " + printableName(base.string()));
+    return out;
+}
+
 std::string studentEditionNote() {
     return "# The student edition\n\n"
            "In these shaders every part a lab asks you to write is a stub: it builds, draws a\n"
@@ -190,18 +209,10 @@ SolutionTrees solutionTrees(const std::string& dir) {
 
 std::vector<std::string> markedFiles(const std::string& root, const std::string& folder) {
     std::vector<std::string> out;
-    std::error_code ec;
-    fs::path base = folder.empty() ? fs::path(root) : fs::path(root) / folder;
-    if (!fs::is_directory(base, ec)) return out;
-    for (auto it = fs::recursive_directory_iterator(base, ec);
-         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-        if (!it->is_regular_file(ec) || it->is_symlink(ec)) continue;
-        std::string text, path = it->path().string();
-        std::string err = readRegularFile(path, kMaxShaderBytes, text);
-        if (!err.empty()) throw UsageError("release: " + printableName(path) + ": " + err);
+    for (const StudentFile& f : treeFiles(root, folder)) {
         std::vector<std::string> solution;
-        stripSolutions(text, printableName(path), &solution);
-        if (!solution.empty()) out.push_back(fs::relative(it->path(), root).string());
+        stripSolutions(f.text, printableName(root + "/" + f.rel), &solution);
+        if (!solution.empty()) out.push_back(f.rel);
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -260,7 +271,7 @@ std::vector<std::string> writeRelease(const Assignment& a, const std::vector<Stu
 }
 
 int writeStudentEdition(const SolutionTrees& trees, const std::string& outDir) {
-    int regions = 0;
+    int stubbed = 0;
     std::vector<StudentFile> files;  // everything checked before anything is written
     for (const char* tree : {"core", "legacy"}) {
         std::string root = trees.root(tree), top = std::string("shaders_") + tree;
@@ -270,21 +281,15 @@ int writeStudentEdition(const SolutionTrees& trees, const std::string& outDir) {
         if (fs::exists(outDir + "/" + top, ec))
             throw UsageError("release --student-edition: " + printableName(outDir + "/" + top) +
                              " exists already (the edition is written fresh)");
-        for (auto it = fs::recursive_directory_iterator(root, ec);
-             !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-            if (!it->is_regular_file(ec) || it->is_symlink(ec)) continue;
-            std::string text, path = it->path().string();
-            std::string err = readRegularFile(path, kMaxShaderBytes, text);
-            if (!err.empty()) throw UsageError("release: " + printableName(path) + ": " + err);
-            std::string stripped = stripSolutions(text, printableName(path));
-            regions += stripped != text;
-            files.push_back({top + "/" + fs::relative(it->path(), root).string(), stripped});
+        for (const StudentFile& f : treeFiles(root, "")) {
+            std::string stripped = stripSolutions(f.text, printableName(root + "/" + f.rel));
+            stubbed += stripped != f.text;
+            files.push_back({top + "/" + f.rel, stripped});
         }
-        if (ec) throw UsageError("release --student-edition: cannot list " + printableName(root));
         files.push_back({top + "/" + kStudentEditionNote, studentEditionNote()});
     }
     for (const StudentFile& f : files) writeText(outDir + "/" + f.rel, f.text);
-    return regions;
+    return stubbed;
 }
 
 }  // namespace sl
