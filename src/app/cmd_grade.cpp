@@ -2,14 +2,11 @@
 // by an assignment (src/course/class_grade.h): grades.csv, a feedback page per student, the
 // class page and the JSON record per student; resumable. The solution is graded by the
 // assignment first (course/solution_check.h): a row it loses refuses the grading.
-#include <iostream>
 #include <memory>
 
 #include "app/commands.h"
 #include "course/class_grade.h"
-#include "course/solution_check.h"
 #include "grade/check_run.h"
-#include "io/files.h"
 
 namespace sl {
 
@@ -17,7 +14,6 @@ Command addGradeCommand(CLI::App& app) {
     auto args = std::make_shared<ClassGradeArgs>();
     auto backend = std::make_shared<std::string>("auto");
     auto seed = std::make_shared<std::optional<std::uint64_t>>();
-    auto solutions = std::make_shared<std::string>();
     auto* cmd = app.add_subcommand("grade", "grade a class's submissions by an assignment");
     cmd->add_option("SUBMISSIONS", args->submissions,
                     "a folder with one folder or .zip per student")
@@ -31,18 +27,14 @@ Command addGradeCommand(CLI::App& app) {
     cmd->add_option("--seed", *seed,
                     "the displaced views' seed, one for the class (in every record); default: "
                     "drawn now");
-    cmd->add_option("--solutions", *solutions,
+    cmd->add_option("--solutions", args->solutions,
                     "your own marked shaders to grade first (DIR/shaders_core/..., "
                     "DIR/shaders_legacy/...; default: the shipped ones)");
     addLimitOptions(cmd, args->settings.limits);
-    return {cmd, [args, backend, seed, solutions] {
+    return {cmd, [args, backend, seed] {
                 return guarded([&] {
                     args->settings.backend = toBackend(*backend);
                     args->settings.seed = *seed ? **seed : drawSeed();
-                    SolutionTrees trees = solutionTrees(*solutions);
-                    std::cout << "grading the solution (" << trees.describe() << ") by "
-                              << printableName(args->assignment) << " first\n";
-                    verifySolution(loadAssignment(args->assignment), trees, args->settings);
                     return runClassGrade(*args);
                 });
             }};

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "course/feedback_html.h"
+#include "course/solution_check.h"
 #include "io/files.h"
 
 namespace sl {
@@ -89,6 +90,11 @@ int runClassGrade(const ClassGradeArgs& args) {
     std::sort(entries.begin(), entries.end());
     if (entries.empty())
         throw UsageError("grade: " + printableName(args.submissions) + " holds no submission");
+    SolutionTrees trees = solutionTrees(args.solutions);
+    std::cout << "grading the solution (" << trees.describe() << ") by "
+              << printableName(args.assignment) << " first\n"
+              << std::flush;
+    verifySolution(a, trees, args.settings);
     for (const char* sub : {"", "/students", "/feedback", "/work", "/logs"}) {
         std::error_code ec;
         fs::create_directories(args.out + sub, ec);

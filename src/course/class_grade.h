@@ -14,11 +14,14 @@ namespace sl {
 
 struct ClassGradeArgs {
     std::string submissions, assignment, out;
+    std::string solutions;  // the instructor's own marked trees ("" = the shipped ones)
     int jobs = 1;
     GradeSettings settings;
 };
 
-// Exit 0 when every student was graded (whatever their points), 3 on a platform failure.
+// The solution is graded by the assignment first (course/solution_check.h): a row it loses
+// refuses the grading (exit 2). Exit 0 when every student was graded (whatever their points),
+// 3 on a platform failure.
 int runClassGrade(const ClassGradeArgs& args);
 
 }  // namespace sl
