@@ -25,6 +25,14 @@ if(SL_CHROMIUM)
 else()
   message(WARNING "chromium not found: course_grade (the feedback pages in a browser) is not run")
 endif()
+# A platform failure is never a score, and a rerun grades exactly what changed (issue 25).
+add_test(NAME course_not_graded
+         COMMAND python3 ${SL_COURSE_PY}/test_regrade.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/regrade)
+set_tests_properties(course_not_graded PROPERTIES LABELS course TIMEOUT 1200)
+# The same grades with a busy loop pinned to every core (issue 25).
+add_test(NAME course_load
+         COMMAND python3 ${SL_COURSE_PY}/test_load.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/load)
+set_tests_properties(course_load PROPERTIES LABELS "course;load" TIMEOUT 2400 RUN_SERIAL TRUE)
 add_test(NAME course_autograder
          COMMAND python3 ${SL_COURSE_PY}/test_autograder.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/autograder)
 set_tests_properties(course_assignment_errors course_zip_safety PROPERTIES LABELS course TIMEOUT 300)

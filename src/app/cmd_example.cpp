@@ -11,6 +11,7 @@
 #include "app/mirror_figure.h"
 #include "bench/bench_output.h"
 #include "grade/check_run.h"
+#include "grade/reports.h"
 #include "grade/worker.h"
 #include "metrics/mirror_figure.h"
 #include "scene/scene_json.h"
@@ -24,7 +25,7 @@ using nlohmann::json;
 struct ExampleArgs {
     std::string name, out = "out/examples", backend = "auto";
     bool list = false;
-    Limits limits;
+    LimitOptions limits;
 };
 
 // One render of an example: its own parameters, or a variant's merged over them.
@@ -215,7 +216,7 @@ int renderExample(const std::vector<ExampleRender>& renders, const std::string& 
         std::string stem = outDir + "/" + base + (er.label.empty() ? "" : "-" + er.label);
         CheckResult result =
             runCheck(rig, er.request, er.request.stage == "mirror" ? "" : stem + "-diff.png");
-        if (result.error) return kBadInput;
+        if (unjudged(result.status)) return kBadInput;
         Renderer& r = rig.renderer();
         r.view = er.view;
         r.render(rig.context().framebuffer(), rig.context().width(), rig.context().height());
@@ -223,13 +224,13 @@ int renderExample(const std::vector<ExampleRender>& renders, const std::string& 
         r.view = ViewMode::Final;
         std::string err = writePng(stem + ".png", picture);
         if (!err.empty()) throw UsageError("--out: " + err);
-        std::string got = result.judgement.verdict == Verdict::Pass   ? "pass"
-                          : result.judgement.verdict == Verdict::Fail ? "fail"
-                                                                      : "skip";
+        std::string got = result.status == Status::Pass   ? "pass"
+                          : result.status == Status::Fail ? "fail"
+                                                          : "skip";
         bool ok = got == er.expect;
         if (!ok) exitCode = kCheckFailed;
         std::cout << (er.label.empty() ? "" : er.label + ": ") << stem << ".png  "
-                  << checkTableLine(result) << "    expected " << er.expect << ", got " << got
+                  << tableLine(RowRecord{result}) << "    expected " << er.expect << ", got " << got
                   << (ok ? ": as the lecture shows" : ": NOT what the lecture shows") << "\n";
     }
     return exitCode;
@@ -252,11 +253,14 @@ int runExample(const ExampleArgs& a) {
         std::cout << "see also: " << j["see"].get<std::string>() << "\n";
     const Backend backend = toBackend(a.backend);
     // Every render of the example (one stage and tree) in one bounded worker, as `check` does.
-    WorkerOutcome outcome = runBounded(a.limits, [&] {
+    // The examples draw our shaders: the budget's floors bound them all the same (a broken
+    // data tree, a user's example file).
+    const Limits limits = provisionalLimits(a.limits.rule());
+    WorkerOutcome outcome = runBounded(limits, [&] {
         return nlohmann::json{{"exit", renderExample(renders, a.out, base, backend)}};
     });
     if (outcome.kind != WorkerOutcome::Kind::Ok)
-        throw UsageError(workerFailureLine("example " + base, outcome, a.limits));
+        throw UsageError(workerFailureLine("example " + base, outcome, limits));
     int exitCode = outcome.value.at("exit").get<int>();
     if (exitCode == kBadInput) return kBadInput;
     if (figure) {  // the exercise's answer: eye', at' and the frustum, printed and drawn

@@ -1,12 +1,11 @@
 // `shadowlab grade SUBMISSIONS --assignment A.json --out DIR [--jobs N]`: a whole class graded
 // by an assignment (src/course/class_grade.h): grades.csv, a feedback page per student, the
-// class page and the JSON record per student; resumable. The solution is graded by the
-// assignment first (course/solution_check.h): a row it loses refuses the grading.
+// class page and the JSON record per student; resumable, and a rerun regrades what changed.
+// The solution is graded by the assignment first (course/solution_check.h).
 #include <memory>
 
 #include "app/commands.h"
 #include "course/class_grade.h"
-#include "grade/check_run.h"
 
 namespace sl {
 
@@ -14,6 +13,7 @@ Command addGradeCommand(CLI::App& app) {
     auto args = std::make_shared<ClassGradeArgs>();
     auto backend = std::make_shared<std::string>("auto");
     auto seed = std::make_shared<std::optional<std::uint64_t>>();
+    auto limits = std::make_shared<LimitOptions>();
     auto* cmd = app.add_subcommand("grade", "grade a class's submissions by an assignment");
     cmd->add_option("SUBMISSIONS", args->submissions,
                     "a folder with one folder or .zip per student")
@@ -23,6 +23,9 @@ Command addGradeCommand(CLI::App& app) {
     cmd->add_option("--out", args->out, "the folder to write grades.csv, pages and records to")
         ->required();
     cmd->add_option("--jobs", args->jobs, "students graded in parallel (default 1)");
+    cmd->add_option("--regrade", args->regrade,
+                    "grade these students again (hand-in names), whatever their records say");
+    cmd->add_flag("--regrade-all", args->regradeAll, "grade every student again");
     cmd->add_option("--backend", *backend, "headless GL: auto, osmesa or egl");
     cmd->add_option("--seed", *seed,
                     "the displaced views' seed, one for the class (in every record); default: "
@@ -30,10 +33,11 @@ Command addGradeCommand(CLI::App& app) {
     cmd->add_option("--solutions", args->solutions,
                     "your own marked shaders to grade first (DIR/shaders_core/..., "
                     "DIR/shaders_legacy/...; default: the shipped ones)");
-    addLimitOptions(cmd, args->settings.limits);
-    return {cmd, [args, backend, seed] {
+    addLimitOptions(cmd, *limits);
+    return {cmd, [args, backend, seed, limits] {
                 return guarded([&] {
                     args->settings.backend = toBackend(*backend);
+                    args->settings.budget = limits->rule();
                     args->settings.seed = *seed ? **seed : drawSeed();
                     return runClassGrade(*args);
                 });

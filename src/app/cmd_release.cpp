@@ -21,6 +21,7 @@ namespace {
 struct ReleaseArgs {
     std::string assignment, out, solutions, backend = "auto";
     bool gradescope = false, studentEdition = false;
+    LimitOptions limits;
     GradeSettings settings;
 };
 
@@ -42,13 +43,14 @@ int runRelease(ReleaseArgs& args) {
     checkReleaseOut(args.out);
     std::vector<StudentFile> shaders = releasedShaders(a, trees);
     args.settings.backend = toBackend(args.backend);
+    args.settings.budget = args.limits.rule();
     args.settings.seed = drawSeed();
     std::cout << "grading the solution (" << trees.describe() << ") by "
               << printableName(args.assignment) << " first, displaced view seed "
               << *args.settings.seed << "\n";
-    nlohmann::json record = verifySolution(a, trees, args.settings);
-    std::cout << "the solution earns every point: " << record.value("score", 0.0) << " of "
-              << record.value("max_score", 0.0) << "\n";
+    StudentRecord record = verifySolution(a, trees, args.settings);
+    std::cout << "the solution earns every point: " << record.score << " of " << record.maxScore
+              << "\n";
     std::vector<std::string> written = writeRelease(a, shaders, args.out);
     if (args.gradescope) written.push_back(writeAutograderZip(a, args.assignment, args.out));
     std::cout << "release of " << a.name << " in " << printableName(args.out) << ":\n";
@@ -73,7 +75,7 @@ Command addReleaseCommand(CLI::App& app) {
                   "write shaders_core/ and shaders_legacy/ with every marked region stubbed "
                   "(what the default install ships)");
     cmd->add_option("--backend", args->backend, "headless GL for the solution's grading");
-    addLimitOptions(cmd, args->settings.limits);
+    addLimitOptions(cmd, args->limits);
     return {cmd, [args] { return guarded([&] { return runRelease(*args); }); }};
 }
 

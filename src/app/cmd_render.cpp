@@ -19,7 +19,7 @@ namespace {
 
 struct RenderArgs {
     CommonOptions common;
-    Limits limits;
+    LimitOptions limits;
     std::string out;
     bool explain = false;
     int repeat = 10;
@@ -101,13 +101,18 @@ int renderOnce(const RenderArgs& a) {
     if (a.out.empty()) throw UsageError("--out: a PNG file name is required");
     // The GL work runs in a bounded worker: a shader that hangs the compiler or crashes the
     // driver is the submission's error (exit 2), not ours.
-    WorkerOutcome outcome = runBounded(a.limits, [&] {
+    // A student's shaders get the budget's floors (no calibration for one picture), ours the
+    // backstop alone.
+    const BudgetRule rule = a.limits.rule();
+    const Limits limits =
+        request.overlay.empty() ? oursLimits(rule) : provisionalLimits(rule);
+    WorkerOutcome outcome = runBounded(limits, [&] {
         renderInWorker(a, request);
         return nlohmann::json::object();
     });
     if (outcome.kind != WorkerOutcome::Kind::Ok)
         throw UsageError(workerFailureLine(
-            "stage " + request.stage + " (" + treeName(request.tree) + ")", outcome, a.limits));
+            "stage " + request.stage + " (" + treeName(request.tree) + ")", outcome, limits));
     return kOk;
 }
 

@@ -232,9 +232,10 @@ Command addWindowCommand(CLI::App& app) {
     struct Args {
         CommonOptions common;
         WindowArgs window;
-        // A frame that takes seconds is a frozen window in a class: 3 s per stage is generous
-        // (our shaders draw a 1920x1080 frame, compiling included, in well under a second).
-        Limits limits{3, 2048};
+        // A frame that takes seconds is a frozen window in a class: 3 s of CPU per stage is
+        // generous (our shaders draw a 1920x1080 frame, compiling included, in well under a
+        // second); the wall clock is a backstop.
+        Limits limits{3, 30, 2048};
     };
     auto a = std::make_shared<Args>();
     WindowArgs& w = a->window;
@@ -245,12 +246,12 @@ Command addWindowCommand(CLI::App& app) {
     cmd->add_option("--hud-scale", w.hudScale,
                     "text size, times the size that suits the window (default 1)")
         ->check(CLI::Range(0.25, 8.0));
-    cmd->add_option("--time-limit", a->limits.seconds,
-                    "seconds a changed shader may take to draw a stage in the trial worker "
+    cmd->add_option("--time-limit", a->limits.cpuSeconds,
+                    "CPU seconds a changed shader may take to draw a stage in the trial worker "
                     "before the window refuses it (default 3; 0 = no limit)")
         ->check(CLI::Range(0.0, 86400.0));
     cmd->add_option("--memory-limit", a->limits.memoryMb,
-                    "address space of the trial worker in MB (default 2048; 0 = no limit)")
+                    "resident memory of the trial worker in MB (default 2048; 0 = no limit)")
         ->check(CLI::Range(0L, 1L << 24));
     cmd->add_option("--frames", w.frames, "render N frames, then exit (for tests)");
     cmd->add_option("--screenshot", w.screenshot, "save the last frame as PNG (with --frames)");

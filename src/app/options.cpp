@@ -51,17 +51,24 @@ void addCommonOptions(CLI::App* app, CommonOptions& o, bool withStage) {
     app->add_option("--backend", o.backend, "headless backend: auto|osmesa|egl");
 }
 
-void addLimitOptions(CLI::App* app, Limits& limits) {
-    app->add_option("--time-limit", limits.seconds,
-                    "seconds one stage may take in its worker (default 30; 0 = no limit)")
-        ->check(CLI::Range(0.0, 86400.0));
+void addLimitOptions(CLI::App* app, LimitOptions& limits) {
+    app->add_option("--time-limit", limits.time,
+                    "CPU seconds one stage of a submission may use in its worker: auto (default: " +
+                        std::to_string(int(kCpuFactor)) + " x what our shaders take for it, at least " +
+                        std::to_string(int(kCpuFloorSeconds)) + " s), a number, or 0 = no limit");
+    app->add_option("--memory-limit", limits.memory,
+                    "resident memory of one stage's worker in MB: auto (default: " +
+                        std::to_string(int(kMemoryFactor)) + " x our shaders' peak, at least " +
+                        std::to_string(kMemoryFloorMb) + ", within the " +
+                        std::to_string(boxDefaultMemoryMb(2048)) +
+                        " MB this box gives a worker), a number, or 0 = no limit");
+}
+
+BudgetRule LimitOptions::rule() const {
+    BudgetRule r = budgetRuleFrom(time, memory);
     // Less than 2048 where the cgroup or ulimit -v is smaller (src/io/box.h).
-    limits.memoryMb = boxDefaultMemoryMb(limits.memoryMb);
-    app->add_option("--memory-limit", limits.memoryMb,
-                    "address space of one stage's worker in MB (default 2048, less to fit a "
-                    "smaller cgroup or ulimit -v: here " +
-                        std::to_string(limits.memoryMb) + "; 0 = no limit)")
-        ->check(CLI::Range(0L, 1L << 24));
+    r.memoryCeilingMb = boxDefaultMemoryMb(2048);
+    return r;
 }
 
 Backend toBackend(const std::string& text) {

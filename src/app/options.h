@@ -3,7 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "grade/worker.h"
+#include "grade/budget.h"
 #include "platform/headless.h"
 #include "render/request.h"
 
@@ -24,8 +24,13 @@ void addCommonOptions(CLI::App* app, CommonOptions& o, bool withStage = true);
 // Turns the text into a request; throws UsageError naming the option and what is allowed.
 RenderRequest toRequest(const CommonOptions& o);
 
-// --time-limit SECONDS and --memory-limit MB of the worker that renders (0 = no limit).
-void addLimitOptions(CLI::App* app, Limits& limits);
+// --time-limit auto|SECONDS (CPU time) and --memory-limit auto|MB (resident) of the workers,
+// as text until the command runs: rule() turns them into the budget rule (grade/budget.h).
+struct LimitOptions {
+    std::string time = "auto", memory = "auto";
+    BudgetRule rule() const;
+};
+void addLimitOptions(CLI::App* app, LimitOptions& limits);
 Backend toBackend(const std::string& text);
 
 // Exit codes of the command-line contract.

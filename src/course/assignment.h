@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "grade/check_run.h"
+#include "grade/plan.h"
 #include "render/request.h"
 
 namespace sl {
@@ -70,14 +70,6 @@ Assignment loadAssignment(const std::string& path);
 // object of its scene), a due stage worth no points or whose rows all weigh 0. Throws
 // AssignmentError naming the file, the JSON path and the line.
 void checkAssignmentMeaning(const Assignment& a);
-
-// One graded row: a case and what it is worth.
-struct RowPlan {
-    CheckCase check;
-    double points = 0;
-    std::string visibility;
-    bool extra = false;  // an instructor's view
-};
 
 // Every row of a due stage for the submission at `overlay` (may be ""), in check order; the
 // stage's points split over them by lesson weight times view weight. With a `seed`, the

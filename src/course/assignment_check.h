@@ -1,23 +1,22 @@
-// `check --assignment A.json --shaders DIR`: one submission graded by an assignment.
+// `check --assignment A.json --shaders DIR`: one submission (a folder or .zip) graded by an
+// assignment's plan through the same path as `check --stage` (grade/check_session.h).
 #pragma once
 
 #include <string>
 
-#include "course/grade_students.h"
+#include "grade/check_session.h"
 
 namespace sl {
 
 struct AssignmentCheckArgs {
-    std::string assignment, shaders, report, format = "json", junit, diffDir;
+    std::string assignment, shaders;
+    CheckOutputs out;
     GradeSettings settings;
 };
 
 // Prints one line per row and the points per stage; writes the report (ours or Gradescope's),
-// JUnit and the images when asked. Exit 0 all points, 1 points lost (FAIL or MISSING), 2 a
-// stage that did not build or the submission unreadable, 3 a platform failure.
+// JUnit and the images when asked. Exits with the record's code (grade/status.h): 0 every
+// point, 1 a FAIL, 2 MISSING, ERROR, TIMEOUT, CRASH or an unreadable hand-in, 3 NOT GRADED.
 int runAssignmentCheck(const AssignmentCheckArgs& args);
-
-// The exit code a record earns (as above).
-int recordExitCode(const nlohmann::json& record);
 
 }  // namespace sl

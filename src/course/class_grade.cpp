@@ -12,12 +12,17 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <iostream>
 #include <set>
 #include <thread>
 
 #include "course/feedback_html.h"
+#include "course/intake_adapter.h"
 #include "course/solution_check.h"
+#include "course/student_grade.h"
+#include "io/content_hash.h"
 #include "io/files.h"
 
 namespace sl {
@@ -47,16 +52,37 @@ void writeOrThrow(const std::string& path, const std::string& text) {
     if (!err.empty()) throw UsageError("grade: " + err);
 }
 
-// The record of a student already graded against this assignment, or null.
-json finishedRecord(const std::string& path, const std::string& fingerprint) {
+// The record kept at `path`, if it can be read as one.
+std::optional<StudentRecord> keptRecord(const std::string& path) {
     std::string text;
-    if (!readRegularFile(path, 64u << 20, text).empty()) return nullptr;
+    if (!readRegularFile(path, 64u << 20, text).empty()) return std::nullopt;
     try {
-        json j = json::parse(text);
-        if (j.value("fingerprint", "") == fingerprint) return j;
-    } catch (const json::exception&) {
+        return recordFromJson(json::parse(text));
+    } catch (const std::exception&) {  // malformed, an older version, a lesson since renamed
+        return std::nullopt;
     }
-    return nullptr;
+}
+
+// The hand-in's content as given: a zip's bytes, a folder's regular files (io/content_hash.h).
+std::string handInHash(const std::string& path) {
+    struct stat st;
+    if (::lstat(path.c_str(), &st) != 0) return "";
+    if (S_ISDIR(st.st_mode)) return contentHash(path);
+    std::string bytes;
+    std::string err = readRegularFile(path, std::size_t(1) << 30, bytes, true);
+    return fnv1aHex(err.empty() ? bytes : "unreadable: " + err);
+}
+
+// Why a student is graded in this run: "" when their kept record stands, "new" when there is
+// none, else why it is set aside.
+std::string whyGrade(const std::optional<StudentRecord>& kept, const std::string& handIn,
+                     const std::string& assignment, bool asked) {
+    if (asked) return "asked for (--regrade)";
+    if (!kept) return "new";
+    if (!kept->graded()) return "not graded last time";
+    if (kept->assignmentHash != assignment) return "the assignment changed";
+    if (kept->handInHash != handIn) return "the hand-in changed";
+    return "";
 }
 
 std::string duration(double s) {
@@ -75,8 +101,8 @@ int runClassGrade(const ClassGradeArgs& args) {
     Assignment a = loadAssignment(args.assignment);
     std::string assignmentText;
     readRegularFile(args.assignment, 1u << 20, assignmentText);
-    // A record is reused on a rerun only when graded by the same assignment text.
-    std::string fingerprint = std::to_string(std::hash<std::string>{}(assignmentText));
+    // A record stands on a rerun only for the same assignment text and the same hand-in.
+    const std::string assignmentHash = fnv1aHex(assignmentText);
     struct stat st;
     if (::stat(args.submissions.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
         throw UsageError(
@@ -106,14 +132,35 @@ int runClassGrade(const ClassGradeArgs& args) {
         names.push_back(submissionName(e));
         files.push_back(fileNameFor(names.back(), taken));
     }
+    for (const std::string& wanted : args.regrade)
+        if (std::find(names.begin(), names.end(), wanted) == names.end())
+            throw UsageError("--regrade: no hand-in named '" + printableName(wanted) + "' in " +
+                             printableName(args.submissions));
     auto recordPath = [&](std::size_t k) { return args.out + "/students/" + files[k] + ".json"; };
-    std::vector<std::size_t> todo;
-    for (std::size_t k = 0; k < entries.size(); ++k)
-        if (finishedRecord(recordPath(k), fingerprint).is_null()) todo.push_back(k);
     const std::size_t n = entries.size();
+    std::vector<std::string> hashes(n);
+    std::vector<std::size_t> todo;
+    std::map<std::string, int> reasons;  // why students are graded in this run
+    for (std::size_t k = 0; k < n; ++k) {
+        hashes[k] = handInHash(entries[k]);
+        bool asked = args.regradeAll ||
+                     std::find(args.regrade.begin(), args.regrade.end(), names[k]) != args.regrade.end();
+        std::string why = whyGrade(keptRecord(recordPath(k)), hashes[k], assignmentHash, asked);
+        if (why.empty()) continue;
+        todo.push_back(k);
+        ++reasons[why];
+        if (why != "new")
+            std::cout << "grading " << printableName(names[k]) << " again: " << why << "\n";
+    }
     std::cout << "grade " << n << " submissions by " << printableName(args.assignment) << " ("
               << a.name << ")";
-    if (todo.size() < n) std::cout << ": " << n - todo.size() << " already graded, resuming";
+    if (todo.size() < n || reasons.count("new") < reasons.size()) {
+        std::cout << ": " << n - todo.size() << " already graded, " << todo.size() << " to grade";
+        std::string why;
+        for (const auto& [reason, count] : reasons)
+            why += (why.empty() ? " (" : ", ") + std::to_string(count) + " " + reason;
+        if (!why.empty()) std::cout << why << ")";
+    }
     std::cout << "\n" << std::flush;
 
     // Intake in the parent (no GL here): every pending submission's snapshot.
@@ -121,6 +168,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     for (std::size_t k : todo) {
         subs[k] = intakeSubmission(entries[k], args.out + "/work/" + files[k]);
         subs[k].name = names[k];
+        subs[k].hash = hashes[k];
         std::error_code ec;
         fs::create_directories(args.out + "/work/" + files[k] + "/images", ec);
     }
@@ -133,7 +181,8 @@ int runClassGrade(const ClassGradeArgs& args) {
         return it == imageDirs.end() ? std::string() : it->second;
     };
 
-    // Jobs: child processes, each grading every jobs-th pending student in one worker series.
+    // Jobs: child processes, each grading every jobs-th pending student in one worker series
+    // with one calibration of our shaders.
     int jobs =
         int(std::min<std::size_t>(std::size_t(args.jobs), std::max<std::size_t>(todo.size(), 1)));
     std::vector<pid_t> pids;
@@ -154,18 +203,22 @@ int runClassGrade(const ClassGradeArgs& args) {
             int code = 0;
             try {
                 std::vector<StudentWork> share;
+                std::vector<GradingPlan> plans;
                 std::vector<std::size_t> index;
                 for (std::size_t i = std::size_t(j); i < todo.size(); i += std::size_t(jobs)) {
                     share.push_back(subs[todo[i]]);
+                    plans.push_back(planStudent(a, share.back(), settings.seed));
                     index.push_back(todo[i]);
                 }
-                bool failed = gradeStudents(a, share, settings, [&](std::size_t i, const json& r) {
-                    json record = r;
-                    record["fingerprint"] = fingerprint;
-                    writeOrThrow(recordPath(index[i]),
-                                 record.dump(1, ' ', false, json::error_handler_t::replace) + "\n");
-                });
-                code = failed ? 3 : 0;
+                Calibration calibration(settings.budget, settings.backend);
+                gradeStudents(plans, share, settings, calibration, nullptr,
+                              [&](std::size_t i, StudentRecord r) {
+                                  r.assignmentHash = assignmentHash;
+                                  writeOrThrow(recordPath(index[i]),
+                                               recordJson(r).dump(1, ' ', false,
+                                                                  json::error_handler_t::replace) +
+                                                   "\n");
+                              });
             } catch (const std::exception& e) {
                 std::cerr << "shadowlab: grade job " << j << ": " << e.what() << "\n";
                 code = 3;
@@ -181,21 +234,24 @@ int runClassGrade(const ClassGradeArgs& args) {
     std::set<std::size_t> reported;
     int exitCode = 0;
     std::size_t running = pids.size();
+    auto isFresh = [&](std::size_t k, std::optional<StudentRecord>& r) {
+        r = keptRecord(recordPath(k));
+        return r && r->handInHash == hashes[k] && r->assignmentHash == assignmentHash;
+    };
     auto poll = [&]() {
         for (std::size_t k : todo) {
             if (reported.count(k)) continue;
-            json r = finishedRecord(recordPath(k), fingerprint);
-            if (r.is_null()) continue;
+            std::optional<StudentRecord> r;
+            if (!isFresh(k, r)) continue;
             reported.insert(k);
             double elapsed =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             double left = elapsed / double(reported.size()) * double(todo.size() - reported.size());
             char line[512];
             std::snprintf(line, sizeof line,
-                          "[student %zu of %zu] %-24s %7.2f / %.2f  %-8s time left about %s\n",
+                          "[student %zu of %zu] %-24s %7.2f / %.2f  %-10s time left about %s\n",
                           n - todo.size() + reported.size(), n, printableName(names[k]).c_str(),
-                          r["score"].get<double>(), r["max_score"].get<double>(),
-                          r["status"].get<std::string>().c_str(),
+                          r->score, r->maxScore, statusName(r->status()),
                           reported.size() == todo.size() ? "0 s" : duration(left).c_str());
             std::cout << line << std::flush;
         }
@@ -214,28 +270,32 @@ int runClassGrade(const ClassGradeArgs& args) {
     poll();
 
     // The class's outputs from every record (those of earlier runs too).
-    std::vector<json> records;
+    std::vector<StudentRecord> records;
     std::vector<std::string> pages;
+    std::size_t notGraded = 0;
     for (std::size_t k = 0; k < n; ++k) {
-        json r = finishedRecord(recordPath(k), fingerprint);
-        if (r.is_null()) {
+        std::optional<StudentRecord> r;
+        if (!isFresh(k, r)) {
             std::cerr << "shadowlab: " << printableName(names[k])
                       << ": no record (its job failed; see " << args.out
-                      << "/logs/): rerun grade\n";
-            exitCode = 3;
+                      << "/logs/): not graded, rerun grade\n";
+            ++notGraded;
             continue;
         }
-        records.push_back(r);
+        if (!r->graded()) ++notGraded;
+        records.push_back(*r);
         pages.push_back("feedback/" + files[k] + ".html");
-        writeOrThrow(args.out + "/" + pages.back(), studentPage(r));
+        writeOrThrow(args.out + "/" + pages.back(), studentPage(*r));
     }
     writeOrThrow(args.out + "/grades.csv", gradesCsv(records));
     writeOrThrow(args.out + "/class.html", classPage(a.name, records, pages));
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << "graded " << records.size() << " of " << n << " in " << duration(seconds) << ": "
-              << args.out << "/grades.csv, " << args.out << "/class.html, " << args.out
-              << "/feedback/, " << args.out << "/students/\n";
+    std::cout << "graded " << n - notGraded << " of " << n;
+    if (notGraded > 0) std::cout << "; " << notGraded << " not graded: rerun";
+    std::cout << " in " << duration(seconds) << ": " << args.out << "/grades.csv, " << args.out
+              << "/class.html, " << args.out << "/feedback/, " << args.out << "/students/\n";
+    if (notGraded > 0) exitCode = 3;
     return exitCode;
 }
 

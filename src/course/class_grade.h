@@ -1,14 +1,16 @@
 // `grade SUBMISSIONS --assignment A.json --out DIR [--jobs N]`: a class in one command. Each
 // entry of the folder SUBMISSIONS (a student's folder or .zip) is taken in safely, the class is
-// split over N job processes (each one series of workers: references traced once per view per
-// job), and each student's record is written atomically as soon as it is complete, so a run
-// that is killed resumes with the students not yet written. Then grades.csv, a feedback page
-// per student and the class page.
+// split over N job processes (each one series of workers: references traced and our shaders
+// measured once per view per job), and each student's record is written atomically as soon as
+// it is complete. A rerun keeps a record only while the student's hand-in and the assignment
+// are those it was graded from and it is a score (no NOT GRADED row); every other student is
+// graded (again), and says why. Then grades.csv, a feedback page per student and the class page.
 #pragma once
 
 #include <string>
+#include <vector>
 
-#include "course/grade_students.h"
+#include "grade/grade_students.h"
 
 namespace sl {
 
@@ -16,12 +18,14 @@ struct ClassGradeArgs {
     std::string submissions, assignment, out;
     std::string solutions;  // the instructor's own marked trees ("" = the shipped ones)
     int jobs = 1;
+    std::vector<std::string> regrade;  // --regrade NAME...: these students again
+    bool regradeAll = false;           // --regrade-all
     GradeSettings settings;
 };
 
 // The solution is graded by the assignment first (course/solution_check.h): a row it loses
 // refuses the grading (exit 2). Exit 0 when every student was graded (whatever their points),
-// 3 on a platform failure.
+// 3 when any is not graded (a platform failure: rerun, and exactly those are graded again).
 int runClassGrade(const ClassGradeArgs& args);
 
 }  // namespace sl

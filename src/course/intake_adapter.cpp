@@ -15,10 +15,6 @@ namespace sl {
 
 namespace fs = std::filesystem;
 
-bool StudentWork::has(const std::string& rel) const {
-    return std::find(files.begin(), files.end(), rel) != files.end();
-}
-
 namespace {
 
 bool endsWithZip(const std::string& name) {

@@ -7,16 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace sl {
+#include "grade/plan.h"
 
-struct StudentWork {
-    std::string name;                // the student: folder name or zip stem
-    std::string overlay;             // the private snapshot to grade ("" when refused)
-    std::vector<std::string> files;  // relative paths of the student's regular files in it
-    std::vector<std::string> notes;  // wrapper folders descended, near misses, links skipped, ...
-    std::string error;               // why the submission could not be read at all ("" = ok)
-    bool has(const std::string& rel) const;
-};
+namespace sl {
 
 // Reads the folder or .zip at `path` into a snapshot under `workDir` (created; emptied first).
 // A zip, or a folder whose only entry (below lone wrapper folders) is a zip, is unpacked first.

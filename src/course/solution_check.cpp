@@ -5,12 +5,11 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "course/student_grade.h"
 #include "grade/private_dir.h"
 #include "io/files.h"
 
 namespace sl {
-
-using nlohmann::json;
 
 namespace {
 
@@ -52,14 +51,14 @@ StudentWork solutionWork(const Assignment& a, const SolutionTrees& trees, const 
 
 // The assignment entry that made a row: its extra view, else its stage (and the view's or the
 // lesson's own weight when the assignment gives one).
-std::string entryOf(const Assignment& a, const json& stage, const json& row) {
-    std::string view = row.value("view", ""), lesson = row.value("lesson", "");
-    if (row.value("extra_view", false))
+std::string entryOf(const Assignment& a, const StageRecord& stage, const RowRecord* row) {
+    std::string view = row ? row->result.view : "", lesson = row ? row->result.lesson : "";
+    if (row && row->extraView)
         for (std::size_t k = 0; k < a.extraViews.size(); ++k)
             if (a.extraViews[k].name == view) return "/extra_views/" + std::to_string(k);
     for (std::size_t k = 0; k < a.stages.size(); ++k) {
         const AssignmentStage& s = a.stages[k];
-        if (!s.due || s.stage != stage["stage"] || s.tree != stage["tree"]) continue;
+        if (!s.due || s.stage != stage.stage || s.tree != stage.tree) continue;
         std::string path = "/stages/" + std::to_string(k);
         if (s.views.count(view)) return path + "/views/" + view;
         if (s.lessons.count(lesson)) return path + "/lessons/" + lesson;
@@ -71,20 +70,20 @@ std::string entryOf(const Assignment& a, const json& stage, const json& row) {
 // A marked file of a due stage's folder that the stage does not list but a graded row draws
 // with: students' copies of it are stubs (their release has none, the student edition stubs
 // it), so the row would grade our solution for them in the class and a stub at home.
-void refuseUnlistedMarked(const Assignment& a, const SolutionTrees& trees, const json& record) {
+void refuseUnlistedMarked(const Assignment& a, const SolutionTrees& trees,
+                          const StudentRecord& record) {
     for (std::size_t k = 0; k < a.stages.size(); ++k) {
         const AssignmentStage& s = a.stages[k];
         if (!s.due) continue;
-        for (const json& st : record["stages"]) {
-            if (st["stage"] != s.stage || st["tree"] != s.tree) continue;
-            for (const json& row : st["rows"])
-                for (const json& used : row.value("student_files", json::array())) {
-                    std::string f = used.get<std::string>();
+        for (const StageRecord& st : record.stages) {
+            if (st.stage != s.stage || st.tree != s.tree) continue;
+            for (const RowRecord& row : st.rows)
+                for (const std::string& f : row.result.studentFiles) {
                     if (std::find(s.files.begin(), s.files.end(), f) != s.files.end()) continue;
                     throw AssignmentError(
                         a.at("/stages/" + std::to_string(k) + "/files") + ": " + f + " (" +
                         trees.describe() + ") holds a solution region and " + s.stage + "/" +
-                        s.tree + " draws with it (lesson '" + row.value("lesson", "") +
+                        s.tree + " draws with it (lesson '" + row.result.lesson +
                         "'), but it is not in the stage's files: students have only a stub of "
                         "it; list it, or weigh that lesson 0");
                 }
@@ -94,42 +93,42 @@ void refuseUnlistedMarked(const Assignment& a, const SolutionTrees& trees, const
 
 }  // namespace
 
-json verifySolution(const Assignment& a, const SolutionTrees& trees,
-                    const GradeSettings& settings) {
+StudentRecord verifySolution(const Assignment& a, const SolutionTrees& trees,
+                             const GradeSettings& settings) {
     PrivateDir dir("shadowlab-solution");
     StudentWork solution = solutionWork(a, trees, dir.path());
     GradeSettings quiet = settings;
     quiet.pictures = false;
     quiet.imageDir = nullptr;
-    json record;
-    if (gradeStudents(a, {solution}, quiet, [&](std::size_t, const json& r) { record = r; }))
-        throw std::runtime_error("the solution (" + trees.describe() + ") could not be graded by " +
-                                 a.origin + ": rerun");
+    quiet.rowImage = nullptr;
+    Calibration calibration(quiet.budget, quiet.backend);
+    StudentRecord record;
+    gradeStudents({planStudent(a, solution, quiet.seed)}, {solution}, quiet, calibration, nullptr,
+                  [&](std::size_t, StudentRecord r) { record = std::move(r); });
     refuseUnlistedMarked(a, trees, record);
     double lost = 0;
     int rowsLost = 0;
     std::string first;
-    for (const json& st : record["stages"]) {
-        std::string id = st["stage"].get<std::string>() + "/" + st["tree"].get<std::string>();
-        std::string status = st["status"], message = printable(st.value("message", ""));
-        if (status == "TIMEOUT" || status == "CRASH")
+    for (const StageRecord& st : record.stages) {
+        std::string id = st.stage + "/" + st.tree, message = printable(st.message);
+        if (st.status == Status::NotGraded || st.status == Status::Timeout ||
+            st.status == Status::Crash)
             throw std::runtime_error("the solution's " + id + " (" + trees.describe() +
-                                     ") did not finish grading (" + status + ": " +
-                                     message.substr(0, 200) +
-                                     "): rerun on a quieter machine or raise --time-limit");
-        if (status != "graded")
-            throw AssignmentError(a.at(entryOf(a, st, json::object())) + ": the solution's " + id +
-                                  " (" + trees.describe() + ") is " + status + ": " +
+                                     ") could not be graded (" + statusName(st.status) + ": " +
+                                     message.substr(0, 200) + "): rerun");
+        if (unjudged(st.status))
+            throw AssignmentError(a.at(entryOf(a, st, nullptr)) + ": the solution's " + id + " (" +
+                                  trees.describe() + ") is " + statusName(st.status) + ": " +
                                   message.substr(0, 300));
-        for (const json& row : st["rows"]) {
-            double missed = row.value("max_points", 0.0) - row.value("points", 0.0);
+        for (const RowRecord& row : st.rows) {
+            double missed = row.maxPoints - row.points;
             if (missed <= 1e-9) continue;
             lost += missed;
             ++rowsLost;
             if (first.empty())
-                first = a.at(entryOf(a, st, row)) + ": " + id + " view " + row.value("view", "") +
-                        " lesson '" + row.value("lesson", "") + "' is " + row.value("verdict", "") +
-                        " (" + printable(row.value("message", "")).substr(0, 300) + ")";
+                first = a.at(entryOf(a, st, &row)) + ": " + id + " view " + row.result.view +
+                        " lesson '" + row.result.lesson + "' is " + row.result.verdict() + " (" +
+                        printable(row.result.message).substr(0, 300) + ")";
         }
     }
     if (rowsLost > 0)

@@ -5,10 +5,8 @@
 // every correct student those points.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
-#include "course/grade_students.h"
 #include "course/release.h"
+#include "grade/grade_students.h"
 
 namespace sl {
 
@@ -19,9 +17,9 @@ namespace sl {
 // solution loses in all; a stage of the solution that does not build is refused the same way,
 // and so is a graded row that draws with a marked file its stage does not list (students have
 // only its stub).
-// Throws std::runtime_error (exit 3) when the grading itself failed (a GL or platform failure,
-// a worker out of time or memory: rerun, or raise --time-limit).
-nlohmann::json verifySolution(const Assignment& a, const SolutionTrees& trees,
-                              const GradeSettings& settings);
+// Throws std::runtime_error (exit 3) when the grading itself failed (NOT GRADED: a GL or
+// platform failure; TIMEOUT or CRASH of our own solution: rerun).
+StudentRecord verifySolution(const Assignment& a, const SolutionTrees& trees,
+                             const GradeSettings& settings);
 
 }  // namespace sl

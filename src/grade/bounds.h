@@ -11,6 +11,7 @@
 namespace sl {
 
 constexpr std::size_t kMaxRowMessage = 4096;  // a report row's message or note
+constexpr std::size_t kMaxInheritedMessage = 512;  // a row's copy of its stage's failure
 constexpr std::size_t kMaxErrorText = 16384;  // a full shader error on stderr
 constexpr std::size_t kMaxListedFiles = 32;   // student files named on one row
 

@@ -10,7 +10,8 @@
 
 #include "gl/machine.h"
 #include "grade/bounds.h"
-#include "grade/check_formats.h"
+#include "grade/reports.h"
+#include "grade/judge.h"
 #include "io/files.h"
 #include "metrics/shadow_metrics.h"
 #include "stages/stage.h"
@@ -18,19 +19,6 @@
 namespace sl {
 
 namespace {
-
-std::string fixed(double v, int width, int decimals) {
-    char text[32];
-    if (std::isnan(v))
-        std::snprintf(text, sizeof text, "%*s", width, "-");
-    else
-        std::snprintf(text, sizeof text, "%*.*f", width, decimals, v);
-    return text;
-}
-
-std::string padded(const std::string& s, std::size_t width) {
-    return s.size() >= width ? s + " " : s + std::string(width - s.size(), ' ');
-}
 
 nlohmann::json vec(const glm::vec3& v) {
     return {v.x, v.y, v.z};
@@ -145,7 +133,7 @@ std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCa
         results.push_back(std::move(r));
         // A shader that does not build fails the same way under every lesson and view: once is
         // enough to report it.
-        if (results.back().error) break;
+        if (unjudged(results.back().status)) break;
     }
     return results;
 }
@@ -177,29 +165,6 @@ CheckResult checkResultFor(const RenderRequest& request) {
 }
 
 namespace {
-
-// A displaced view is one nobody chose: its casters and light may land where a lesson's bounds,
-// measured over the curated views, are out of reach for any method (a shadow stretched at a
-// grazing angle has a staircase edge wider than two pixels). There the submission is held to
-// the lesson's bounds or to what our shipped shaders measure in the same view (a quarter more,
-// at least 0.5), whichever is wider: a shader that follows the map matches ours, one that
-// hard-codes the scene misses by tens of pixels and percent.
-Judgement judgeDisplaced(const Expectation& entry, const CheckResult& theirs,
-                         const std::map<std::string, double>& ours) {
-    Expectation widened = entry;
-    bool wider = false;
-    for (Limit& l : widened.limits) {
-        auto found = ours.find(l.figure);
-        if (found == ours.end() || std::isnan(found->second)) continue;
-        double v = found->second, slack = std::max(0.5, 0.25 * std::abs(v));
-        if (!std::isnan(l.max) && v + slack > l.max) l.max = v + slack, wider = true;
-        if (!std::isnan(l.min) && v - slack < l.min) l.min = v - slack, wider = true;
-    }
-    Judgement j = judge(widened, theirs.figureMap());
-    if (wider)
-        j.message += " [displaced view: bounds widened to our shipped shaders' figures here]";
-    return j;
-}
 
 // The truth as a picture: the reference's own shading, blocked where the light is blocked.
 Image truthPicture(const ReferenceImage& ref, const ReferenceShades& shades) {
@@ -271,9 +236,8 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         std::cerr << "shadowlab: shader error: " << text << (text.back() == '\n' ? "" : "\n");
         r.studentFiles = renderer.shaders().overlayFiles(r.stage);
         rig.reset();
-        r.error = true;
-        r.judgement = {Verdict::Fail,
-                       capped("shader error: " + errorLine(e.what()), kMaxRowMessage)};
+        r.status = Status::Error;
+        r.message = capped("shader error: " + errorLine(e.what()), kMaxRowMessage);
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
     }
@@ -282,36 +246,21 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         r.note += (r.note.empty() ? "" : "; ") + n;
     r.note = capped(r.note, kMaxRowMessage);
     if (!r.expectation.entry) {  // a stage or tree the data file does not cover: nothing to judge
-        r.judgement = {Verdict::Skip,
-                       "no entry in " + expectationsPath() + " for this stage and tree"};
+        r.status = Status::Skip;
+        r.message = "no entry in " + expectationsPath() + " for this stage and tree";
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
     }
-    if (request.displaceSeed)  // without a submission's overlay, ours are the figures measured
-        r.judgement = judgeDisplaced(*r.expectation.entry, r, shipped ? *shipped : r.figureMap());
-    else
-        r.judgement = judge(*r.expectation.entry, r.figureMap());
+    Judgement j = request.displaceSeed  // without a submission's overlay, ours are measured
+                      ? judgeDisplaced(*r.expectation.entry, r.figureMap(),
+                                       shipped ? *shipped : r.figureMap())
+                      : judge(*r.expectation.entry, r.figureMap());
+    r.status = j.status;
+    r.message = j.message;
     if (!r.expectation.exact)
-        r.judgement.message += " [no entry for these settings: judged by the defaults' lesson]";
+        r.message += " [no entry for these settings: judged by the defaults' lesson]";
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
-}
-
-std::string checkTableHeader() {
-    return "stage/tree/view lesson                    false-shadow %  false-lit %  band fs/fl %   "
-           "edge mean/p95 px  mirror id % / dB  verdict\n";
-}
-
-std::string checkTableLine(const CheckResult& r) {
-    const Accuracy& a = r.figures;
-    std::string line = padded(checkTestName(r), 40) + fixed(a.falseShadowPct, 9, 2) + "     " +
-                       fixed(a.falseLitPct, 9, 2) + "    " + fixed(a.falseShadowBandPct, 6, 1) +
-                       "/" + padded(fixed(a.falseLitBandPct, 5, 1), 6) + "  " +
-                       fixed(a.edgeMeanPx, 6, 2) + "/" + padded(fixed(a.edgeP95Px, 5, 1), 8) +
-                       "  " + fixed(a.mirrorIdPct, 7, 2) + "/" +
-                       padded(fixed(a.mirrorPsnrDb, 5, 1), 6) + "   " + padded(r.verdict(), 6) +
-                       r.judgement.message;
-    return line + "\n";
 }
 
 nlohmann::json checkJson(const CheckResult& r) {
@@ -350,7 +299,7 @@ nlohmann::json checkJson(const CheckResult& r) {
         {"expectation", expectation},
         {"student_files", r.studentFiles},
         {"verdict", r.verdict()},
-        {"message", r.judgement.message},
+        {"message", r.message},
         {"diff", r.diffFile.empty() ? nlohmann::json() : nlohmann::json(r.diffFile)},
         {"note", r.note.empty() ? nlohmann::json() : nlohmann::json(r.note)},
         {"seconds", r.seconds},
@@ -433,21 +382,10 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
             r.expectation.exact = e.at("matched").get<std::string>() == "exact";
         }
         const std::string verdict = j.at("verdict").get<std::string>();
-        if (verdict == "PASS" || verdict == "FAIL" || verdict == "SKIP") {
-            r.judgement.verdict = verdict == "PASS"   ? Verdict::Pass
-                                  : verdict == "FAIL" ? Verdict::Fail
-                                                      : Verdict::Skip;
-        } else if (verdict == "MISSING") {
-            r.missing = true;
-            r.judgement.verdict = Verdict::Fail;
-        } else if (verdict == "ERROR" || verdict == "TIMEOUT" || verdict == "CRASH") {
-            r.error = true;
-            r.errorVerdict = verdict;
-            r.judgement.verdict = Verdict::Fail;
-        } else {
-            throw std::invalid_argument("unknown verdict '" + verdict + "'");
-        }
-        r.judgement.message = j.at("message").get<std::string>();
+        std::optional<Status> status = statusFromName(verdict);
+        if (!status) throw std::invalid_argument("unknown verdict '" + verdict + "'");
+        r.status = *status;
+        r.message = j.at("message").get<std::string>();
         if (j.contains("student_files"))
             r.studentFiles = j["student_files"].get<std::vector<std::string>>();
         r.diffFile = textOrEmpty(j.at("diff"));
@@ -461,7 +399,7 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
 }
 
 void boundResult(CheckResult& r) {
-    r.judgement.message = capped(r.judgement.message, kMaxRowMessage);
+    r.message = capped(r.message, kMaxRowMessage);
     r.note = capped(r.note, kMaxRowMessage);
     r.studentFiles = cappedList(r.studentFiles);
 }

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "eval/evaluator.h"
+#include "grade/status.h"
 #include "grade/worker.h"
 #include "stages/expectations.h"
 
@@ -27,14 +28,10 @@ struct CheckResult {
     Accuracy figures;
     long evaluated = 0, truthLit = 0, truthShadow = 0;  // pixel counts behind the percentages
     ExpectationMatch expectation;
-    Judgement judgement;
-    // The stage could not be judged (exit 2): a shader that did not build ("ERROR"), or a worker
-    // that ran out of time ("TIMEOUT") or died ("CRASH"). judgement.message says why.
-    bool error = false;
-    std::string errorVerdict = "ERROR";
-    // No file of the stage's own (`<stage>/...`) came from the submission: never graded as ours,
-    // never PASS (judgement.verdict is Fail, the message names the files expected).
-    bool missing = false;
+    // The row's status (grade/status.h) and why, in one line. Figures are measured only for
+    // PASS, FAIL and SKIP; MISSING, ERROR, TIMEOUT, CRASH and NOT GRADED rows have none.
+    Status status = Status::Skip;
+    std::string message;
     std::vector<std::string> studentFiles;  // the submission's files this row used (relative)
     std::string diffFile;                   // the diff image written, or ""
     std::string note;                       // e.g. why no diff image was written
@@ -42,9 +39,7 @@ struct CheckResult {
     double seconds = 0;
     std::optional<std::uint64_t> seed;  // the displaced view's seed (RenderRequest::displaceSeed)
 
-    std::string verdict() const {
-        return missing ? "MISSING" : error ? errorVerdict : verdictName(judgement.verdict);
-    }
+    std::string verdict() const { return statusName(status); }
     std::map<std::string, double> figureMap() const;
 };
 
@@ -87,19 +82,6 @@ std::uint64_t drawSeed();
 std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCase>& cases,
                                        const std::function<std::string(const CheckCase&)>& diffPath,
                                        const std::function<void(const CheckResult&)>& progress);
-
-// Every (stage, tree) of `plan` evaluated in bounded workers, one worker going through them in
-// order and reusing its evaluator (contexts, references) until a stage kills it: a stage that
-// runs out of time or dies is one TIMEOUT or CRASH result, a fresh worker takes the next.
-// `each(k, results)` gets plan[k]'s results as they come; a GL failure sets platformFailure.
-void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
-                    const std::function<std::string(const CheckCase&)>& diffPath, Backend backend,
-                    const Limits& limits, bool& platformFailure,
-                    const std::function<void(std::size_t, std::vector<CheckResult>)>& each);
-
-// The fixed-width table a check prints: a header, then one line per result.
-std::string checkTableHeader();
-std::string checkTableLine(const CheckResult& r);
 
 // A result in the report (fields documented in docs/check.md).
 nlohmann::json checkJson(const CheckResult& r);

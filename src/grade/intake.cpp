@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <map>
 
+#include "io/content_hash.h"
 #include "io/files.h"
 #include "render/request.h"
 
@@ -338,6 +339,7 @@ Submission takeSubmission(const std::string& folder, const std::string& privateD
         if (!misses.empty()) line += "; " + misses.front();
         throw NothingHandedIn(line);
     }
+    s.hash = contentHash(privateDir);
     return s;
 }
 

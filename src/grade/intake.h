@@ -38,6 +38,7 @@ struct Submission {
     std::string root;                // the private snapshot: the overlay to grade
     std::vector<std::string> files;  // every file copied, relative to root, sorted
     std::vector<std::string> notes;  // one line each: wrapper, near misses, links skipped
+    std::string hash;                // io/content_hash.h of the snapshot: what is graded
 };
 
 // Editor and archive leftovers (`__MACOSX`, `.DS_Store` and other hidden names, `*~`, `#x#`,

@@ -1,7 +1,6 @@
 #include "grade/worker.h"
 
 #include <fcntl.h>
-#include <malloc.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/prctl.h>
@@ -14,7 +13,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <new>
@@ -26,15 +27,6 @@
 #include "render/request.h"
 #include "scene/scene_json.h"
 #include "stages/expectations.h"
-
-// A sanitizer reserves terabytes of address space for its shadow memory: no RLIMIT_AS there.
-#if defined(__SANITIZE_ADDRESS__)
-#define SL_NO_ADDRESS_LIMIT 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer)
-#define SL_NO_ADDRESS_LIMIT 1
-#endif
-#endif
 
 namespace sl {
 
@@ -84,23 +76,43 @@ std::string& shaderCacheFolder() {
     return folder;
 }
 
-void applyLimits(const Limits& limits, std::size_t jobs) {
-    if (limits.seconds > 0) {  // a backstop: the wall clock ends a job first
-        long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
-        rlim_t cpu = static_cast<rlim_t>(std::ceil(limits.seconds * cpus)) * jobs + 1;
-        struct rlimit r = {cpu, cpu + 1};
-        ::setrlimit(RLIMIT_CPU, &r);
-    }
-#ifndef SL_NO_ADDRESS_LIMIT
-    if (limits.memoryMb > 0) {
-        // glibc reserves 64 MB of address space per malloc arena, up to 8 per core: cap them so
-        // the limit measures memory in use, not the machine's core count.
-        ::mallopt(M_ARENA_MAX, 2);
-        rlim_t bytes = static_cast<rlim_t>(limits.memoryMb) << 20;
-        struct rlimit r = {bytes, bytes};
-        ::setrlimit(RLIMIT_AS, &r);
-    }
-#endif
+// A backstop should the parent stop watching (it is the parent that ends a job at its budget):
+// the kernel ends the worker once it has used every job's CPU time twice over.
+void applyCpuBackstop(const Limits& limits, std::size_t jobs) {
+    if (limits.cpuSeconds <= 0) return;
+    rlim_t cpu = static_cast<rlim_t>(std::ceil(limits.cpuSeconds * 2 * double(jobs))) + 10;
+    struct rlimit r = {cpu, cpu + 1};
+    ::setrlimit(RLIMIT_CPU, &r);
+}
+
+// The calling process's CPU time, user and system, all its threads.
+double ownCpuSeconds() {
+    struct rusage u;
+    ::getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+           double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-6;
+}
+
+// A field ("VmHWM:") of /proc/self/status in MB, or 0.
+long ownStatusMb(const char* field) {
+    FILE* f = std::fopen("/proc/self/status", "r");
+    if (!f) return 0;
+    char line[256];
+    long kb = 0;
+    std::size_t n = std::strlen(field);
+    while (std::fgets(line, sizeof line, f))
+        if (std::strncmp(line, field, n) == 0) kb = std::atol(line + n);
+    std::fclose(f);
+    return kb / 1024;
+}
+
+// Starts a new peak of resident memory (Linux >= 4.0): each job's own peak is then VmHWM.
+void resetPeakMemory() {
+    int fd = ::open("/proc/self/clear_refs", O_WRONLY | O_CLOEXEC);
+    if (fd < 0) return;
+    ssize_t ignored = ::write(fd, "5", 1);
+    (void)ignored;
+    ::close(fd);
 }
 
 void writeAll(int fd, const std::string& text) {
@@ -122,7 +134,7 @@ void writeAll(int fd, const std::string& text) {
     ::setpgid(0, 0);  // its own group: a timeout kills whatever it started too
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(125);  // the parent died before prctl
-    applyLimits(limits, count - first);
+    applyCpuBackstop(limits, count - first);
     // Mesa would keep every shader a submission compiles in ~/.cache/mesa_shader_cache: grading
     // leaves nothing behind (and no student's cache entry serves another's). In the run's own
     // folder when it has one (a check recompiles the same programs for every lesson and view:
@@ -140,6 +152,8 @@ void writeAll(int fd, const std::string& text) {
     for (std::size_t k = first; k < count; ++k) {
         std::string line;
         bool stop = true;
+        resetPeakMemory();
+        const double cpuBefore = ownCpuSeconds();
         try {
             nlohmann::json reply;
             try {
@@ -151,6 +165,11 @@ void writeAll(int fd, const std::string& text) {
                 auto [kind, what] = classify(std::current_exception());
                 reply = {{"error", {{"kind", kind}, {"what", capped(what, kMaxErrorText)}}}};
             }
+            // What the job cost: the parent's budgets are calibrated on these (grade/budget.h).
+            const double cpuAfter = ownCpuSeconds();
+            reply["cpu"] = cpuAfter - cpuBefore;
+            reply["cpu_total"] = cpuAfter;
+            reply["peak_mb"] = ownStatusMb("VmHWM:");
             line = reply.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
         } catch (const std::bad_alloc&) {
             line = "{\"oom\":true}";
@@ -165,15 +184,20 @@ void writeAll(int fd, const std::string& text) {
     ::_exit(0);  // no destructors, no atexit: the parent owns everything else
 }
 
-enum class Read { Line, EndOfFile, Deadline, TooLong };
+enum class Read { Line, EndOfFile, Deadline, TooLong, OverCpu, OverMemory };
+
+// How often the parent looks at a running job's CPU time and memory: a job past its budget is
+// stopped within this (a compiler that allocates 2 GB/s overshoots by some 40 MB).
+constexpr int kWatchMs = 20;
 
 // A job's reply is a few kilobytes a row (messages are capped in the worker): a reply past this
 // is not read on, so the parent stays small whatever the worker does.
 constexpr std::size_t kMaxReplyBytes = 16u << 20;
 
-// The next line from the worker into `line`, or why there is none.
+// The next line from the worker into `line`, or why there is none. `watch` is asked every
+// kWatchMs while the job runs: Read::Line to go on, else why the job must stop.
 Read nextLine(int fd, std::string& buffer, const std::optional<Clock::time_point>& deadline,
-              std::string& line) {
+              std::string& line, const std::function<Read()>& watch = nullptr) {
     char chunk[65536];
     for (;;) {
         std::size_t end = buffer.find('\n');
@@ -182,19 +206,26 @@ Read nextLine(int fd, std::string& buffer, const std::optional<Clock::time_point
             buffer.erase(0, end + 1);
             return Read::Line;
         }
-        int wait = -1;
+        int wait = watch ? kWatchMs : -1;
         if (deadline) {
             auto left =
                 std::chrono::duration_cast<std::chrono::milliseconds>(*deadline - Clock::now());
             if (left.count() <= 0) return Read::Deadline;
-            wait = static_cast<int>(std::min<long long>(left.count() + 1, 60000));
+            long long most = watch ? kWatchMs : 60000;
+            wait = static_cast<int>(std::min<long long>(left.count() + 1, most));
         }
         struct pollfd p = {fd, POLLIN, 0};
         int ready = ::poll(&p, 1, wait);
         if (ready < 0 && errno == EINTR) continue;
         if (ready < 0)
             throw std::runtime_error(std::string("worker: poll: ") + std::strerror(errno));
-        if (ready == 0) continue;  // the loop checks the deadline
+        if (ready == 0) {  // the loop checks the deadline; the watch the budgets
+            if (watch) {
+                Read verdict = watch();
+                if (verdict != Read::Line) return verdict;
+            }
+            continue;
+        }
         ssize_t n = ::read(fd, chunk, sizeof chunk);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) return Read::EndOfFile;  // the child exited (a partial line is no result)
@@ -256,6 +287,43 @@ std::string limitSeconds(double s) {
     return text;
 }
 
+// A running process's CPU time (user + system, every thread) from /proc/PID/stat, or -1.
+double processCpuSeconds(pid_t pid) {
+    char path[64], text[1024];
+    std::snprintf(path, sizeof path, "/proc/%d/stat", int(pid));
+    int fd = ::open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return -1;
+    ssize_t n = ::read(fd, text, sizeof text - 1);
+    ::close(fd);
+    if (n <= 0) return -1;
+    text[n] = 0;
+    const char* p = std::strrchr(text, ')');  // the name may hold spaces and parentheses
+    if (!p) return -1;
+    unsigned long long utime = 0, stime = 0;
+    // After ") ": state, then fields 4..13, then utime (14) and stime (15).
+    if (std::sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu", &utime,
+                    &stime) != 2)
+        return -1;
+    static const double tick = double(::sysconf(_SC_CLK_TCK));
+    return double(utime + stime) / tick;
+}
+
+// A running process's resident memory in MB from /proc/PID/statm, or -1.
+long processResidentMb(pid_t pid) {
+    char path[64], text[256];
+    std::snprintf(path, sizeof path, "/proc/%d/statm", int(pid));
+    int fd = ::open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return -1;
+    ssize_t n = ::read(fd, text, sizeof text - 1);
+    ::close(fd);
+    if (n <= 0) return -1;
+    text[n] = 0;
+    unsigned long long size = 0, resident = 0;
+    if (std::sscanf(text, "%llu %llu", &size, &resident) != 2) return -1;
+    static const long page = ::sysconf(_SC_PAGESIZE);
+    return long(resident * static_cast<unsigned long long>(page) >> 20);
+}
+
 }  // namespace
 
 std::string WorkerOutcome::detail() const {
@@ -263,7 +331,7 @@ std::string WorkerOutcome::detail() const {
         case Kind::Ok:
             return "finished";
         case Kind::Timeout:
-            return signal == SIGXCPU ? "used up its CPU time" : "ran out of time";
+            return overWallClock ? "ran out of time" : "used up its CPU time";
         case Kind::Crash:
             return outOfMemory ? "ran out of memory" : "killed by " + signalName(signal);
         case Kind::Failed:
@@ -280,7 +348,8 @@ void useShaderCacheFolder(const std::string& folder) {
 }
 
 std::string timeLimitText(const Limits& limits) {
-    return limits.seconds > 0 ? limitSeconds(limits.seconds) : "no time limit";
+    return limits.cpuSeconds > 0 ? limitSeconds(limits.cpuSeconds) + " of CPU time"
+                                 : "no time limit";
 }
 
 std::string memoryLimitText(const Limits& limits) {
@@ -295,8 +364,11 @@ std::string workerFailureLine(const std::string& what, const WorkerOutcome& o,
         case WorkerOutcome::Kind::Ok:
             return what + ": finished";
         case WorkerOutcome::Kind::Timeout:
-            return what + ": no result within the time limit of " + timeLimitText(limits) +
-                   " (--time-limit)" + (o.signal == SIGXCPU ? ": its CPU time ran out" : "");
+            if (o.overWallClock)
+                return what + ": no result within " + limitSeconds(limits.wallSeconds) +
+                       " of wall-clock time (the backstop of a worker that waits on nothing)";
+            return what + ": used up its time budget of " + timeLimitText(limits) +
+                   " (--time-limit)";
         case WorkerOutcome::Kind::Crash:
             if (o.outOfMemory)
                 return what + ": ran out of memory within the memory limit of " +
@@ -314,10 +386,12 @@ std::string workerFailureLine(const std::string& what, const WorkerOutcome& o,
 
 namespace {
 
-// A running worker: its process (own group) and the parent's end of its pipe.
+// A running worker: its process (own group), the parent's end of its pipe, and what its
+// current job has used so far.
 class Worker {
   public:
-    Worker(const Limits& limits, const SeriesJob& job, std::size_t first, std::size_t count) {
+    Worker(const Limits& limits, const SeriesJob& job, std::size_t first, std::size_t count)
+        : limits_(limits) {
         std::cout.flush();  // else the child inherits unwritten output and writes it twice
         std::cerr.flush();
         std::fflush(nullptr);
@@ -352,9 +426,12 @@ class Worker {
         if (fd_ >= 0) ::close(fd_);
     }
     Read next(const std::optional<Clock::time_point>& deadline, std::string& line) {
-        return nextLine(fd_, buffer_, deadline, line);
+        Read read = nextLine(fd_, buffer_, deadline, line, [this] { return watch(); });
+        if (read == Read::Line) noteReply(line);
+        return read;
     }
-    // A line if one has arrived, EndOfFile if the child has gone, else Deadline (nothing yet).
+    // A line if one has arrived, EndOfFile if the child has gone, OverCpu or OverMemory when
+    // the job is past its budget, else Deadline (nothing yet).
     Read nextNow(std::string& line) {
         struct pollfd p = {fd_, POLLIN, 0};
         while (buffer_.find('\n') == std::string::npos && ::poll(&p, 1, 0) > 0) {
@@ -364,9 +441,12 @@ class Worker {
             if (n <= 0) return Read::EndOfFile;
             buffer_.append(chunk, static_cast<std::size_t>(n));
         }
-        return nextLine(fd_, buffer_, Clock::now() - std::chrono::seconds(1), line) == Read::Line
-                   ? Read::Line
-                   : Read::Deadline;
+        if (nextLine(fd_, buffer_, Clock::now() - std::chrono::seconds(1), line) == Read::Line) {
+            noteReply(line);
+            return Read::Line;
+        }
+        Read verdict = watch();
+        return verdict == Read::Line ? Read::Deadline : verdict;
     }
     // Reaps the child, killing it at the deadline; returns its wait status and whether it had
     // to be killed.
@@ -381,18 +461,46 @@ class Worker {
         pid_ = -1;
         return status;
     }
+    // What the current job has used: CPU seconds since it began, the highest resident memory
+    // the parent saw.
+    double jobCpuSeconds() const { return std::max(0.0, lastCpu_ - cpuAtJobStart_); }
+    long jobPeakMb() const { return peakMb_; }
 
   private:
+    // Read::Line while the job is within its budgets.
+    Read watch() {
+        double cpu = processCpuSeconds(pid_);
+        long mb = processResidentMb(pid_);
+        if (cpu >= 0) lastCpu_ = cpu;
+        if (mb > peakMb_) peakMb_ = mb;
+        if (limits_.cpuSeconds > 0 && jobCpuSeconds() > limits_.cpuSeconds) return Read::OverCpu;
+        if (limits_.memoryMb > 0 && mb > limits_.memoryMb) return Read::OverMemory;
+        return Read::Line;
+    }
+    // A job's reply says where the worker's CPU clock stood when it ended: the next job's
+    // usage counts from there.
+    // The reply's keys are sorted, so "cpu_total" comes before the job's own text ("error",
+    // "ok"): its first occurrence is ours.
+    void noteReply(const std::string& line) {
+        static const std::string key = "\"cpu_total\":";
+        std::size_t at = line.find(key);
+        if (at != std::string::npos)
+            cpuAtJobStart_ = lastCpu_ = std::strtod(line.c_str() + at + key.size(), nullptr);
+        peakMb_ = 0;
+    }
+    Limits limits_;
     pid_t pid_ = -1;
     int fd_ = -1;
     std::string buffer_;
+    double cpuAtJobStart_ = 0, lastCpu_ = 0;
+    long peakMb_ = 0;
 };
 
 std::optional<Clock::time_point> deadlineFrom(const Clock::time_point& start,
                                               const Limits& limits) {
-    if (limits.seconds <= 0) return std::nullopt;
+    if (limits.wallSeconds <= 0) return std::nullopt;
     return start + std::chrono::duration_cast<Clock::duration>(
-                       std::chrono::duration<double>(limits.seconds));
+                       std::chrono::duration<double>(limits.wallSeconds));
 }
 
 // How a worker that ended without a line for its job ended.
@@ -400,6 +508,7 @@ WorkerOutcome endedWithout(int status, bool killed) {
     WorkerOutcome out;
     if (killed) {
         out.kind = WorkerOutcome::Kind::Timeout;
+        out.overWallClock = true;
     } else if (WIFSIGNALED(status)) {
         out.signal = WTERMSIG(status);
         out.kind =
@@ -425,6 +534,34 @@ WorkerOutcome outcomeOfLine(const std::string& line) {
         out.kind = WorkerOutcome::Kind::Crash;
         out.outOfMemory = message.is_object() && message.contains("oom");
     }
+    if (message.is_object()) {
+        out.cpuSeconds = message.value("cpu", 0.0);
+        out.peakMb = message.value("peak_mb", 0L);
+    }
+    return out;
+}
+
+// The outcome of a read that brought no line: the job is over its budget, past the backstop,
+// its reply too long, or the worker gone (reaped here).
+WorkerOutcome outcomeWithoutLine(Read read, Worker& worker, const Limits& limits) {
+    WorkerOutcome out;
+    if (read == Read::OverCpu || read == Read::Deadline) {
+        out.kind = WorkerOutcome::Kind::Timeout;  // ~Worker kills it
+        out.overWallClock = read == Read::Deadline;
+    } else if (read == Read::OverMemory) {
+        out.kind = WorkerOutcome::Kind::Crash;
+        out.outOfMemory = true;
+    } else if (read == Read::TooLong) {
+        out.kind = WorkerOutcome::Kind::Failed;
+        out.exitCode = -1;
+        out.tooLong = true;
+    } else {
+        bool killed = false;
+        int status = worker.finish(deadlineFrom(Clock::now(), limits), killed);
+        out = endedWithout(status, killed);
+    }
+    out.cpuSeconds = worker.jobCpuSeconds();
+    out.peakMb = worker.jobPeakMb();
     return out;
 }
 
@@ -456,14 +593,10 @@ bool BackgroundSeries::poll() {
         WorkerOutcome out;
         if (read == Read::Line) {
             out = outcomeOfLine(line);
-        } else if (read == Read::EndOfFile) {
-            bool killed = false;
-            int status = running_->worker->finish(deadlineFrom(Clock::now(), limits_), killed);
-            out = endedWithout(status, killed);
-        } else if (deadline && Clock::now() >= *deadline) {
-            out.kind = WorkerOutcome::Kind::Timeout;
+        } else if (read == Read::Deadline && !(deadline && Clock::now() >= *deadline)) {
+            return false;  // still working, within its budgets
         } else {
-            return false;  // still working
+            out = outcomeWithoutLine(read, *running_->worker, limits_);
         }
         out.seconds = std::chrono::duration<double>(Clock::now() - running_->since).count();
         running_->since = Clock::now();
@@ -482,34 +615,25 @@ void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& 
                       const std::function<void(std::size_t, const WorkerOutcome&)>& done) {
     std::size_t k = 0;
     while (k < count) {
-        Worker worker(limits, job, k, count);
+        auto worker = std::make_unique<Worker>(limits, job, k, count);
         auto since = Clock::now();
         for (;;) {
             std::string line;
-            Read read = worker.next(deadlineFrom(since, limits), line);
-            WorkerOutcome out;
-            if (read == Read::Line) {
-                out = outcomeOfLine(line);  // an Error: ~Worker ends the child
-            } else if (read == Read::Deadline) {
-                out.kind = WorkerOutcome::Kind::Timeout;  // ~Worker kills it
-            } else if (read == Read::TooLong) {
-                out.kind = WorkerOutcome::Kind::Failed;  // ~Worker kills it
-                out.exitCode = -1;
-                out.tooLong = true;
-            } else {
-                bool killed = false;
-                int status = worker.finish(deadlineFrom(Clock::now(), limits), killed);
-                out = endedWithout(status, killed);
-            }
+            Read read = worker->next(deadlineFrom(since, limits), line);
+            WorkerOutcome out = read == Read::Line ? outcomeOfLine(line)
+                                                   : outcomeWithoutLine(read, *worker, limits);
             out.seconds = std::chrono::duration<double>(Clock::now() - since).count();
             since = Clock::now();
             bool goOn = out.kind == WorkerOutcome::Kind::Ok;
+            // A failed worker is ended before anyone hears of it: what `done` runs next (our
+            // shaders measured, the job again) must not share the cores with a spinning shader.
+            if (!goOn) worker.reset();
             if (done) done(k, out);
             ++k;
             if (!goOn) break;  // a fresh worker for the jobs after this one
             if (k == count) {
                 bool killed = false;
-                worker.finish(deadlineFrom(Clock::now(), limits), killed);
+                worker->finish(deadlineFrom(Clock::now(), limits), killed);
                 break;
             }
         }

@@ -1,7 +1,13 @@
-// A job run in a child process with a wall-clock, CPU and address-space limit. Mesa compiles a
-// shader without ever checking a clock, and a crash in the driver kills its process: so the GL
-// work of an untrusted submission runs in a worker, and the parent (which never creates a GL
-// context) always survives to write the report.
+// A job run in a child process under a CPU-time, resident-memory and wall-clock limit. Mesa
+// compiles a shader without ever checking a clock, and a crash in the driver kills its process:
+// so the GL work of an untrusted submission runs in a worker, and the parent (which never creates
+// a GL context) watches it and always survives to write the report.
+//
+// The limits measure the work, not the machine: CPU time (all the worker's threads, llvmpipe's
+// included) does not grow when other processes share the cores, and resident memory is what a
+// container's cgroup charges (an address-space limit counts what llvmpipe's threads and a GPU
+// driver merely reserve). The wall clock is only a backstop for a worker that waits on nothing
+// (grade/budget.h sets it generously).
 #pragma once
 
 #include <functional>
@@ -13,8 +19,9 @@
 namespace sl {
 
 struct Limits {
-    double seconds = 30;   // wall clock of one worker; 0 = none
-    long memoryMb = 2048;  // address space (RLIMIT_AS) of one worker; 0 = none
+    double cpuSeconds = 0;   // CPU time one job may use, all the worker's threads; 0 = none
+    double wallSeconds = 0;  // wall clock of one job (a backstop); 0 = none
+    long memoryMb = 0;       // resident memory of the worker while a job runs; 0 = none
 };
 
 // How a worker ended. Ok carries the job's value; Error an exception the job threw, by kind
@@ -24,8 +31,8 @@ struct Limits {
 struct WorkerOutcome {
     enum class Kind {
         Ok,
-        Timeout,  // past the wall-clock limit (killed) or the CPU limit (SIGXCPU)
-        Crash,    // killed by a signal, or out of memory (std::bad_alloc under the limit)
+        Timeout,  // past the CPU-time limit or the wall-clock backstop (killed)
+        Crash,    // killed by a signal, or past the memory limit (killed, or std::bad_alloc)
         Failed,   // exited without a result (exit code in `exitCode`)
         Error,    // the job threw: errorKind, errorWhat
     };
@@ -34,9 +41,12 @@ struct WorkerOutcome {
     int signal = 0;    // Crash by a signal
     int exitCode = 0;  // Failed
     bool outOfMemory = false;
+    bool overWallClock = false;        // Timeout by the wall-clock backstop, not CPU time
     bool tooLong = false;              // Failed: its reply passed the parent's bound
     std::string errorKind, errorWhat;  // Error
-    double seconds = 0;
+    double seconds = 0;                // wall clock of the job
+    double cpuSeconds = 0;             // CPU time of the job, all the worker's threads
+    long peakMb = 0;                   // the worker's peak resident memory during the job
     // "killed by SIGSEGV", "ran out of memory", "exited with code 1 without a result", ...
     std::string detail() const;
 };
@@ -87,12 +97,13 @@ class BackgroundSeries {
     bool failed_ = false;
 };
 
-// "30 s" or "no time limit"; "2048 MB" or "no memory limit".
+// "30 s of CPU time" or "no time limit"; "2048 MB" or "no memory limit".
 std::string timeLimitText(const Limits& limits);
 std::string memoryLimitText(const Limits& limits);
 
 // The one line for a worker that did not return, naming `what` ("stage margin (core)") and the
-// limit concerned: "stage margin (core): no result within the time limit of 5 s (--time-limit)".
+// limit concerned: "stage margin (core): used up its time budget of 20 s of CPU time
+// (--time-limit)".
 std::string workerFailureLine(const std::string& what, const WorkerOutcome& outcome,
                               const Limits& limits);
 

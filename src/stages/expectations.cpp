@@ -288,27 +288,4 @@ ExpectationMatch findExpectation(const std::vector<Expectation>& book, const std
     return match;
 }
 
-const char* verdictName(Verdict v) {
-    return v == Verdict::Pass ? "PASS" : v == Verdict::Fail ? "FAIL" : "SKIP";
-}
-
-Judgement judge(const Expectation& e, const std::map<std::string, double>& figures) {
-    std::string failed, unmeasured, held;
-    for (const Limit& l : e.limits) {
-        auto it = figures.find(l.figure);
-        double v = it == figures.end() ? NAN : it->second;
-        if (std::isnan(v)) {
-            unmeasured += (unmeasured.empty() ? "" : ", ") + l.figure;
-            continue;
-        }
-        bool ok = !(v < l.min) && !(v > l.max);  // a NaN bound compares false: no bound
-        std::string& list = ok ? held : failed;
-        list += (list.empty() ? "" : ", ") + l.figure + " " + number(v) + (ok ? " " : " not ") +
-                l.bound();
-    }
-    if (!failed.empty()) return {Verdict::Fail, "expected " + e.outcome + ", but " + failed};
-    if (!unmeasured.empty()) return {Verdict::Skip, "not measured: " + unmeasured};
-    return {Verdict::Pass, e.outcome + " as expected: " + held};
-}
-
 }  // namespace sl

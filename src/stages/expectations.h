@@ -87,13 +87,4 @@ ExpectationMatch findExpectation(const std::vector<Expectation>& book, const std
                                  const std::string& sceneName, const std::string& tree,
                                  const ParamSet& values);
 
-enum class Verdict { Pass, Fail, Skip };
-const char* verdictName(Verdict v);  // "PASS" | "FAIL" | "SKIP" (a bounded figure not measured)
-
-struct Judgement {
-    Verdict verdict = Verdict::Skip;
-    std::string message;  // why, in one line
-};
-Judgement judge(const Expectation& e, const std::map<std::string, double>& figures);
-
 }  // namespace sl

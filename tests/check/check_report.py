@@ -16,7 +16,9 @@ RESULT_FIELDS = {"stage": str, "tree": str, "scene": str, "size": list, "paramet
                  "student_files": list}
 
 
-SEVERITY = {"SKIP": 0, "PASS": 1, "FAIL": 2, "ERROR": 3, "TIMEOUT": 3, "CRASH": 3, "MISSING": 3}
+# The one order of grade/status.h: later is worse.
+SEVERITY = {v: k for k, v in enumerate(
+    ["PASS", "SKIP", "FAIL", "MISSING", "ERROR", "TIMEOUT", "CRASH", "NOT GRADED"])}
 
 
 def rows_of(results, key):
@@ -36,25 +38,26 @@ def main():
     with open(args.pop(0)) as f:
         report = json.load(f)
     problems = []
-    for key in ("tool", "report_version", "expectations", "machine", "summary", "results"):
+    for key in ("tool", "report_version", "expectations", "machine", "summary", "stages"):
         if key not in report:
             problems.append(f"missing top-level '{key}'")
     if problems:
         sys.exit("FAIL: " + "; ".join(problems))
     if not report["machine"].get("renderer"):
         problems.append("machine.renderer is empty")
-    summary, results = report["summary"], report["results"]
-    for key in ("checked", "passed", "failed", "skipped", "errors", "missing", "exit_code",
-                "seconds"):
+    summary = report["summary"]
+    results = [row for stage in report["stages"] for row in stage["rows"]]
+    for key in ("checked", "passed", "failed", "skipped", "errors", "missing", "not_graded",
+                "exit_code", "seconds"):
         if key not in summary:
             problems.append(f"summary.{key} is missing")
-    by_verdict = {v: sum(1 for r in results if r.get("verdict") == v)
-                  for v in ("PASS", "FAIL", "SKIP", "ERROR", "TIMEOUT", "CRASH", "MISSING")}
+    by_verdict = {v: sum(1 for r in results if r.get("verdict") == v) for v in SEVERITY}
     by_verdict["errors"] = by_verdict["ERROR"] + by_verdict["TIMEOUT"] + by_verdict["CRASH"]
     if summary.get("checked") != len(results):
         problems.append(f"summary.checked {summary.get('checked')} != {len(results)} results")
     for key, verdict in (("passed", "PASS"), ("failed", "FAIL"), ("skipped", "SKIP"),
-                         ("errors", "errors"), ("missing", "MISSING")):
+                         ("errors", "errors"), ("missing", "MISSING"),
+                         ("not_graded", "NOT GRADED")):
         if summary.get(key) != by_verdict[verdict]:
             problems.append(f"summary.{key} {summary.get(key)} != {by_verdict[verdict]} {verdict}")
     for r in results:

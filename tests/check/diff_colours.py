@@ -29,7 +29,8 @@ def main():
     pale = sum(1 for p in pixels if p in ((240, 170, 170), (170, 190, 240)))
     grey = sum(1 for p in pixels if p[0] == p[1] == p[2] and 60 <= p[0] <= 200)
     with open(report) as f:
-        results = [r for r in json.load(f)["results"] if r["stage"] == stage and r["tree"] == tree]
+        rows = [r for st in json.load(f)["stages"] for r in st["rows"]]
+        results = [r for r in rows if r["stage"] == stage and r["tree"] == tree]
     if not results:  # --diff FILE is the first row's: the defaults seen from the first view
         sys.exit(f"FAIL: the report has no result for {stage}/{tree}")
     counts = results[0]["pixels"]

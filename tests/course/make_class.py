@@ -76,6 +76,7 @@ with zipfile.ZipFile(buf, "w") as z:
     z.writestr(link, "/etc/passwd")
 open(os.path.join(dest, "frank.zip"), "wb").write(buf.getvalue())
 points["frank"] = {s["stage"]: 0 for s in due}
-status = {"alice": "graded", "bob": "graded", "carol": "graded", "dave": "graded",
+# A student's status is their worst stage's (grade/status.h): PASS < FAIL < MISSING < ERROR.
+status = {"alice": "PASS", "bob": "MISSING", "carol": "ERROR", "dave": "FAIL",
           "erin": "MISSING", "frank": "ERROR"}
 json.dump({"points": points, "status": status}, sys.stdout, indent=1)

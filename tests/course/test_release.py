@@ -74,7 +74,7 @@ code, starter = grade(rel + "/shaders", work + "/starter.json")
 assert code == 1, code
 for st in starter["stages"]:
     assert st["points"] == 0, (st["stage"], st["points"])
-    assert st["status"] in ("graded", "MISSING"), st["status"]
+    assert st["status"] in ("FAIL", "MISSING"), st["status"]
     assert all(r["verdict"] in ("FAIL", "MISSING") for r in st["rows"]), st["stage"]
 solution = work + "/solution"
 for s in due:

@@ -2,7 +2,8 @@
 // formats name and describe it.
 #include <gtest/gtest.h>
 
-#include "grade/check_formats.h"
+#include "grade/record.h"
+#include "grade/reports.h"
 #include "grade/check_run.h"
 #include "stages/stage.h"
 
@@ -33,7 +34,8 @@ CheckResult judgedRgb() {
     r.truthLit = 10000;
     r.truthShadow = 2345;
     r.expectation = findExpectation(expectations(), "rgb", "slides", "core", r.parameters);
-    r.judgement = {Verdict::Pass, "as expected: no acne"};
+    r.status = Status::Pass;
+    r.message = "as expected: no acne";
     r.diffFile = "/tmp/diff/rgb-core.png";
     r.note = "a note";
     r.seconds = 0.4375;
@@ -49,7 +51,7 @@ TEST(CheckJson, AJudgedResultRoundTrips) {
     EXPECT_EQ(checkJson(back), j);
     EXPECT_EQ(back.expectation.entry, r.expectation.entry);
     EXPECT_TRUE(back.expectation.exact);
-    EXPECT_FALSE(back.error);
+    EXPECT_EQ(back.status, Status::Pass);
     EXPECT_EQ(back.verdict(), "PASS");
     EXPECT_EQ(back.parameters.text("margin"), "0.01");
     EXPECT_EQ(back.camera.eye, r.camera.eye);
@@ -68,14 +70,13 @@ TEST(CheckJson, AnUnjudgedResultRoundTrips) {
     r.width = 640;
     r.height = 480;
     r.parameters = ParamSet(findStage("margin")->params);
-    r.error = true;
-    r.errorVerdict = "TIMEOUT";
-    r.judgement = {Verdict::Fail, "stage margin (legacy): no result within the time limit of 5 s"};
+    r.status = Status::Timeout;
+    r.message = "stage margin (legacy): used up its time budget of 5 s of CPU time";
     nlohmann::json j = checkJson(r);
     EXPECT_EQ(j["verdict"], "TIMEOUT");
     EXPECT_TRUE(j["expectation"].is_null());
     CheckResult back = checkResultFromJson(j);
-    EXPECT_TRUE(back.error);
+    EXPECT_EQ(back.status, Status::Timeout);
     EXPECT_EQ(back.verdict(), "TIMEOUT");
     EXPECT_EQ(back.expectation.entry, nullptr);
     EXPECT_EQ(checkJson(back), j);
@@ -113,23 +114,91 @@ TEST(CheckFormats, XmlTextIsEscapedAndValid) {
     EXPECT_EQ(xmlEscaped("two\nlines", false), "two\nlines");
 }
 
-TEST(CheckFormats, GradescopeScoresOnePointPerPassingCheck) {
-    CheckResult pass = judgedRgb();
-    CheckResult fail = judgedRgb();
-    fail.judgement = {Verdict::Fail, "expected no acne"};
-    CheckResult timeout = judgedRgb();
-    timeout.error = true;
-    timeout.errorVerdict = "TIMEOUT";
-    nlohmann::json g = gradescopeJson({pass, fail, timeout}, 12.6);
-    EXPECT_EQ(g["score"], 1.0);
-    EXPECT_EQ(g["execution_time"], 13);
-    ASSERT_EQ(g["tests"].size(), 3u);
+// A record of two stages: a visible one (a PASS, a FAIL, and a hidden row that TIMEOUTs) and a
+// hidden one.
+StudentRecord twoStages() {
+    auto row = [](Status status, const std::string& message, const std::string& visibility,
+                  double points, double max) {
+        RowRecord r{judgedRgb()};
+        r.result.status = status;
+        r.result.message = message;
+        r.visibility = visibility;
+        r.points = points;
+        r.maxPoints = max;
+        return r;
+    };
+    StudentRecord rec;
+    rec.assignment = "lab";
+    rec.student = "ann";
+    StageRecord seen;
+    seen.stage = "rgb";
+    seen.tree = "core";
+    seen.rows = {row(Status::Pass, "as expected", "visible", 2, 2),
+                 row(Status::Fail, "expected no acne", "visible", 0, 2),
+                 row(Status::Timeout, "used up its time budget", "hidden", 0, 2)};
+    seen.status = Status::Timeout;
+    seen.points = 2;
+    seen.maxPoints = 6;
+    StageRecord secret = seen;
+    secret.stage = "margin";
+    secret.visibility = "hidden";
+    secret.message = "SECRET stage line";
+    rec.stages = {seen, secret};
+    rec.score = 4;
+    rec.maxScore = 12;
+    return rec;
+}
+
+TEST(CheckFormats, GradescopeShowsVisibleRowsOnlyInItsAlwaysVisibleOutput) {
+    nlohmann::json g = gradescopeResults(twoStages());
+    EXPECT_EQ(g["score"], 4.0);
+    ASSERT_EQ(g["tests"].size(), 6u);
     EXPECT_EQ(g["tests"][0]["status"], "passed");
     EXPECT_EQ(g["tests"][1]["status"], "failed");
-    EXPECT_EQ(g["tests"][2]["status"], "failed");
-    EXPECT_EQ(g["tests"][2]["max_score"], 1.0);
-    EXPECT_NE(g["tests"][0]["output"].get<std::string>().find("diff image: /tmp/diff/rgb-core.png"),
+    EXPECT_EQ(g["tests"][2]["visibility"], "hidden");
+    EXPECT_NE(g["tests"][0]["output"].get<std::string>().find("diff image: rgb-core.png"),
               std::string::npos);
+    const std::string out = g["output"];
+    // The visible stage counts its two visible rows; the hidden row and stage are not there.
+    EXPECT_NE(out.find("rgb/core: FAIL, 2 of 4 points, 1 of 2 visible checks"), std::string::npos)
+        << out;
+    EXPECT_EQ(out.find("margin"), std::string::npos) << out;
+    EXPECT_EQ(out.find("SECRET"), std::string::npos) << out;
+    EXPECT_EQ(out.find("TIMEOUT"), std::string::npos) << out;
+}
+
+TEST(CheckFormats, ANotGradedRecordHasNoScoreAnywhere) {
+    StudentRecord rec = twoStages();
+    for (RowRecord& row : rec.stages[0].rows) {
+        row.result.status = Status::NotGraded;
+        row.points = row.maxPoints = 0;
+    }
+    rec.stages[0].status = Status::NotGraded;
+    EXPECT_FALSE(rec.graded());
+    EXPECT_EQ(rec.exitCode(), 3);
+    nlohmann::json g = gradescopeResults(rec);
+    EXPECT_FALSE(g.contains("score"));
+    EXPECT_EQ(g["tests"].size(), 3u);  // the hidden stage's scored rows only
+    EXPECT_NE(g["output"].get<std::string>().find("no score yet"), std::string::npos);
+    EXPECT_NE(stageSummary(rec).find("total: not graded"), std::string::npos);
+    std::string junit = junitXml(rec);
+    EXPECT_NE(junit.find("<error type=\"NOT GRADED\""), std::string::npos);
+}
+
+TEST(Record, RoundTripsThroughItsJson) {
+    StudentRecord rec = twoStages();
+    rec.handInHash = "0123456789abcdef";
+    rec.assignmentHash = "fedcba9876543210";
+    rec.seed = 42;
+    nlohmann::json j = recordJson(rec);
+    StudentRecord back = recordFromJson(nlohmann::json::parse(j.dump()));
+    EXPECT_EQ(recordJson(back), j);
+    EXPECT_EQ(back.status(), Status::Timeout);
+    EXPECT_EQ(j["exit_code"], 2);
+    EXPECT_EQ(j["summary"]["passed"], 2);
+    EXPECT_EQ(j["summary"]["failed"], 2);
+    EXPECT_EQ(j["summary"]["errors"], 2);
+    EXPECT_THROW(recordFromJson(nlohmann::json{{"report_version", 1}}), std::invalid_argument);
 }
 
 }  // namespace

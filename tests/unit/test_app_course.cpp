@@ -96,13 +96,42 @@ TEST(Base64, KnownValues) {
 }
 
 TEST(GradesCsv, QuotesAndNoFormulas) {
-    nlohmann::json r = {{"student", "=cmd|x,y"},
-                        {"status", "graded"},
-                        {"score", 1.5},
-                        {"max_score", 2.0},
-                        {"stages", {{{"stage", "rgb"}, {"tree", "core"}, {"points", 1.5}}}}};
+    StudentRecord r;
+    r.student = "=cmd|x,y";
+    StageRecord st;
+    st.stage = "rgb";
+    st.tree = "core";
+    st.points = 1.5;
+    st.maxPoints = 2;
+    st.status = Status::Fail;
+    r.stages = {st};
+    r.score = 1.5;
+    r.maxScore = 2;
     EXPECT_EQ(gradesCsv({r}),
-              "student,status,rgb/core,total,max\n\"'=cmd|x,y\",graded,1.500,1.500,2.000\n");
+              "student,status,rgb/core,total,max,not_graded\r\n"
+              "\"'=cmd|x,y\",FAIL,1.500,1.500,2.000,\r\n");
+}
+
+TEST(GradesCsv, EveryCellASpreadsheetWouldEvaluateIsPrefixed) {
+    for (const char* bad : {"=1+1", "+1", "-1", "@SUM(A1)", "\tx", "\rx", "\xEF\xBC\x9D" "1",
+                            "\xEF\xBC\x8B" "1", "\xEF\xBC\x8D" "1", "\xEF\xBC\xA0" "x"})
+        EXPECT_EQ(csvCell(bad).find_first_not_of('"'), csvCell(bad).find('\'')) << bad;
+    EXPECT_EQ(csvCell("plain"), "plain");
+    EXPECT_EQ(csvCell("a\"b"), "\"a\"\"b\"");
+}
+
+TEST(GradesCsv, ANotGradedStageIsAnEmptyCellWithTheReason) {
+    StudentRecord r;
+    r.student = "bo";
+    StageRecord st;
+    st.stage = "margin";
+    st.tree = "core";
+    st.status = Status::NotGraded;
+    st.message = "our shaders could not finish";
+    r.stages = {st};
+    EXPECT_EQ(gradesCsv({r}),
+              "student,status,margin/core,total,max,not_graded\r\n"
+              "bo,NOT GRADED,,,,margin/core: our shaders could not finish\r\n");
 }
 
 }  // namespace

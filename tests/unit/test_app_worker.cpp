@@ -15,8 +15,16 @@
 namespace sl {
 namespace {
 
+// CPU time and the wall-clock backstop alike, and resident memory.
+Limits limits(double seconds, long memoryMb) {
+    Limits l;
+    l.cpuSeconds = l.wallSeconds = seconds;
+    l.memoryMb = memoryMb;
+    return l;
+}
+
 TEST(Worker, ReturnsTheJobsValue) {
-    WorkerOutcome o = runBounded({5, 512}, [] {
+    WorkerOutcome o = runBounded(limits(5, 512), [] {
         return nlohmann::json{{"pid", ::getpid()}, {"text", std::string(200000, 'x')}};
     });
     ASSERT_EQ(o.kind, WorkerOutcome::Kind::Ok) << o.detail();
@@ -25,20 +33,20 @@ TEST(Worker, ReturnsTheJobsValue) {
 }
 
 TEST(Worker, BytesThatAreNotUtf8ComeBackReplaced) {
-    WorkerOutcome o = runBounded({5, 512}, [] { return nlohmann::json("bad \xff byte"); });
+    WorkerOutcome o = runBounded(limits(5, 512), [] { return nlohmann::json("bad \xff byte"); });
     ASSERT_EQ(o.kind, WorkerOutcome::Kind::Ok);
     EXPECT_EQ(o.value.get<std::string>(), "bad \xEF\xBF\xBD byte");
 }
 
 TEST(Worker, TheJobsExceptionsKeepTheirType) {
-    EXPECT_THROW(runBounded({5, 512}, []() -> nlohmann::json { throw UsageError("bad"); }),
+    EXPECT_THROW(runBounded(limits(5, 512), []() -> nlohmann::json { throw UsageError("bad"); }),
                  UsageError);
-    EXPECT_THROW(runBounded({5, 512}, []() -> nlohmann::json { throw ShaderError("x"); }),
+    EXPECT_THROW(runBounded(limits(5, 512), []() -> nlohmann::json { throw ShaderError("x"); }),
                  ShaderError);
-    EXPECT_THROW(runBounded({5, 512}, []() -> nlohmann::json { throw SceneError("x"); }),
+    EXPECT_THROW(runBounded(limits(5, 512), []() -> nlohmann::json { throw SceneError("x"); }),
                  SceneError);
     try {
-        runBounded({5, 512}, []() -> nlohmann::json { throw std::runtime_error("gl broke"); });
+        runBounded(limits(5, 512), []() -> nlohmann::json { throw std::runtime_error("gl broke"); });
         FAIL() << "no exception";
     } catch (const UsageError&) {
         FAIL() << "a GL failure became bad input";
@@ -47,25 +55,64 @@ TEST(Worker, TheJobsExceptionsKeepTheirType) {
     }
 }
 
-TEST(Worker, AJobPastTheTimeLimitIsKilledInTime) {
+TEST(Worker, AJobThatWaitsOnNothingEndsAtTheWallClockBackstop) {
     auto start = std::chrono::steady_clock::now();
-    WorkerOutcome o = runBounded({0.5, 512}, [] {
+    WorkerOutcome o = runBounded(limits(0.5, 512), [] {
         for (;;) ::pause();
         return nlohmann::json();
     });
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(o.kind, WorkerOutcome::Kind::Timeout);
+    EXPECT_TRUE(o.overWallClock);
     EXPECT_GE(seconds, 0.5);
     EXPECT_LT(seconds, 2.0);
-    std::string line = workerFailureLine("stage x (core)", o, {0.5, 512});
-    EXPECT_NE(line.find("stage x (core): no result within the time limit of 0.5 s"),
+    std::string line = workerFailureLine("stage x (core)", o, limits(0.5, 512));
+    EXPECT_NE(line.find("stage x (core): no result within 0.5 s of wall-clock time"),
               std::string::npos)
         << line;
 }
 
+// The budget is CPU time: a spinning job ends when it has used it, however long the wall clock
+// allows, and the outcome says how much it used.
+TEST(Worker, ASpinningJobEndsAtItsCpuBudget) {
+    Limits l;
+    l.cpuSeconds = 0.4;
+    l.wallSeconds = 60;
+    auto start = std::chrono::steady_clock::now();
+    WorkerOutcome o = runBounded(l, [] {
+        for (volatile unsigned long k = 0;; k = k + 1) {
+        }
+        return nlohmann::json();
+    });
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Timeout);
+    EXPECT_FALSE(o.overWallClock);
+    EXPECT_GE(o.cpuSeconds, 0.4);
+    EXPECT_LT(seconds, 30.0);  // not the wall clock: even on a loaded machine
+    EXPECT_EQ(workerFailureLine("stage x (core)", o, l),
+              "stage x (core): used up its time budget of 0.4 s of CPU time (--time-limit)");
+}
+
+// A job's cost comes back with its value: CPU time of all its threads, its peak memory.
+TEST(Worker, AJobsCostComesBackWithItsValue) {
+    Limits l;
+    l.wallSeconds = 60;
+    WorkerOutcome o = runBounded(l, [] {
+        std::vector<char> block(96u << 20, 'x');  // touched: resident
+        volatile unsigned long sum = 0;
+        for (int pass = 0; pass < 3; ++pass)
+            for (char c : block) sum = sum + static_cast<unsigned long>(c);
+        return nlohmann::json(block.size());
+    });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Ok) << o.detail();
+    EXPECT_GT(o.cpuSeconds, 0.0);
+    EXPECT_GE(o.peakMb, 96);
+}
+
 TEST(Worker, ACrashIsReportedWithItsSignal) {
-    WorkerOutcome o = runBounded({5, 512}, []() -> nlohmann::json {
+    WorkerOutcome o = runBounded(limits(5, 512), []() -> nlohmann::json {
         // A driver crash under a sanitizer would end in the sanitizer's own handler (an exit
         // code); the default action is what a grading machine sees.
         ::signal(SIGSEGV, SIG_DFL);
@@ -75,28 +122,28 @@ TEST(Worker, ACrashIsReportedWithItsSignal) {
     ASSERT_EQ(o.kind, WorkerOutcome::Kind::Crash);
     EXPECT_EQ(o.signal, SIGSEGV);
     EXPECT_EQ(o.detail(), "killed by SIGSEGV");
-    std::string line = workerFailureLine("stage x (core)", o, {5, 512});
+    std::string line = workerFailureLine("stage x (core)", o, limits(5, 512));
     EXPECT_NE(line.find("killed by SIGSEGV"), std::string::npos) << line;
     EXPECT_NE(line.find("512 MB (--memory-limit)"), std::string::npos) << line;
 }
 
 #if !defined(__SANITIZE_ADDRESS__)
 TEST(Worker, MemoryPastTheLimitIsOutOfMemory) {
-    WorkerOutcome o = runBounded({10, 256}, [] {
+    WorkerOutcome o = runBounded(limits(10, 256), [] {
         std::vector<std::vector<char>> hog;
         for (int k = 0; k < 64; ++k) hog.emplace_back(64u << 20, 'x');  // 4 GB in 64 MB steps
         return nlohmann::json(hog.size());
     });
     ASSERT_EQ(o.kind, WorkerOutcome::Kind::Crash) << o.detail();
     EXPECT_TRUE(o.outOfMemory);
-    EXPECT_EQ(workerFailureLine("stage x (core)", o, {10, 256}),
+    EXPECT_EQ(workerFailureLine("stage x (core)", o, limits(10, 256)),
               "stage x (core): ran out of memory within the memory limit of 256 MB "
               "(--memory-limit)");
 }
 #endif
 
 TEST(Worker, AJobThatExitsHasNoResult) {
-    WorkerOutcome o = runBounded({5, 512}, []() -> nlohmann::json { ::_exit(7); });
+    WorkerOutcome o = runBounded(limits(5, 512), []() -> nlohmann::json { ::_exit(7); });
     ASSERT_EQ(o.kind, WorkerOutcome::Kind::Failed);
     EXPECT_EQ(o.exitCode, 7);
 }
@@ -105,7 +152,7 @@ TEST(Worker, ASeriesSharesItsWorkerUntilAJobFails) {
     std::vector<WorkerOutcome> outcomes;
     auto start = std::chrono::steady_clock::now();
     runBoundedSeries(
-        {0.5, 512}, 6,
+        limits(0.5, 512), 6,
         [](std::size_t k) -> nlohmann::json {
             if (k == 2)
                 for (;;) ::pause();  // past the time limit
@@ -138,7 +185,7 @@ TEST(Worker, ASeriesSharesItsWorkerUntilAJobFails) {
 TEST(Worker, AnExceptionInASeriesIsThatJobsOutcome) {
     std::vector<WorkerOutcome> outcomes;
     runBoundedSeries(
-        {5, 512}, 3,
+        limits(5, 512), 3,
         [](std::size_t k) -> nlohmann::json {
             if (k == 1) throw UsageError("bad");
             return k;
@@ -155,7 +202,7 @@ TEST(Worker, AnExceptionInASeriesIsThatJobsOutcome) {
 }
 
 TEST(Worker, NoLimitsMeansNone) {
-    WorkerOutcome o = runBounded({0, 0}, [] { return nlohmann::json(42); });
+    WorkerOutcome o = runBounded(limits(0, 0), [] { return nlohmann::json(42); });
     ASSERT_EQ(o.kind, WorkerOutcome::Kind::Ok);
     EXPECT_EQ(o.value.get<int>(), 42);
     EXPECT_EQ(timeLimitText({0, 0}), "no time limit");

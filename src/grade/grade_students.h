@@ -1,0 +1,42 @@
+// Students graded in one series of bounded workers: every student's rendered stages in one
+// series, so the worker's evaluator (its references, traced once per view) and the calibration
+// of our shaders (grade/stage_runs.h) serve the whole series; a stage that kills its worker
+// costs that stage only. Used by `check` (one student, a default plan), `check --assignment`
+// (one student) and `grade` (a share of the class per job).
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grade/record.h"
+#include "grade/stage_runs.h"
+
+namespace sl {
+
+struct GradeSettings {
+    Backend backend = Backend::Auto;
+    BudgetRule budget;
+    bool pictures = false;  // write render, truth and diff images per row
+    // The displaced views' seed (drawn once per run, so a class shares one view and its
+    // reference is traced once); none: no displaced view.
+    std::optional<std::uint64_t> seed;
+    // Where a student's images go ("" = no images); `rowImage(student, case)` names one row's
+    // diff image (default: DIR/rowSlug(case).png).
+    std::function<std::string(const StudentWork&)> imageDir;
+    std::function<std::string(const StudentWork&, const CheckCase&)> rowImage;
+};
+
+// Grades `students[k]` by `plans[k]` in order; `stageDone(k, stage)` as each stage's record is
+// made (may be null), `done(k, record)` as each student's last stage comes back (a student with
+// nothing to render at once).
+void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<StudentWork>& students,
+                   const GradeSettings& settings, Calibration& calibration,
+                   const std::function<void(std::size_t, const StageRecord&)>& stageDone,
+                   const std::function<void(std::size_t, StudentRecord)>& done);
+
+// The file name of a row's images: "STAGE-TREE-VIEW-LESSON" with only [A-Za-z0-9._-].
+std::string rowSlug(const CheckCase& c);
+
+}  // namespace sl

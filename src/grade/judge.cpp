@@ -1,0 +1,55 @@
+#include "grade/judge.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace sl {
+
+namespace {
+
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
+}
+
+}  // namespace
+
+Judgement judge(const Expectation& e, const std::map<std::string, double>& figures) {
+    std::string failed, unmeasured, held;
+    for (const Limit& l : e.limits) {
+        auto it = figures.find(l.figure);
+        double v = it == figures.end() ? NAN : it->second;
+        if (std::isnan(v)) {
+            unmeasured += (unmeasured.empty() ? "" : ", ") + l.figure;
+            continue;
+        }
+        bool ok = !(v < l.min) && !(v > l.max);  // a NaN bound compares false: no bound
+        std::string& list = ok ? held : failed;
+        list += (list.empty() ? "" : ", ") + l.figure + " " + number(v) + (ok ? " " : " not ") +
+                l.bound();
+    }
+    if (!failed.empty()) return {Status::Fail, "expected " + e.outcome + ", but " + failed};
+    if (!unmeasured.empty()) return {Status::Skip, "not measured: " + unmeasured};
+    return {Status::Pass, e.outcome + " as expected: " + held};
+}
+
+Judgement judgeDisplaced(const Expectation& e, const std::map<std::string, double>& theirs,
+                         const std::map<std::string, double>& ours) {
+    Expectation widened = e;
+    bool wider = false;
+    for (Limit& l : widened.limits) {
+        auto found = ours.find(l.figure);
+        if (found == ours.end() || std::isnan(found->second)) continue;
+        double v = found->second, slack = std::max(0.5, 0.25 * std::abs(v));
+        if (!std::isnan(l.max) && v + slack > l.max) l.max = v + slack, wider = true;
+        if (!std::isnan(l.min) && v - slack < l.min) l.min = v - slack, wider = true;
+    }
+    Judgement j = judge(widened, theirs);
+    if (wider)
+        j.message += " [displaced view: bounds widened to our shipped shaders' figures here]";
+    return j;
+}
+
+}  // namespace sl

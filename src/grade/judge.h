@@ -1,0 +1,30 @@
+// A row's verdict from its figures: the lesson's bounds (src/stages/expectations.json) held
+// against what was measured. The data says what a stage must show; the verdict is made here,
+// in grade/, and nowhere else.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "grade/status.h"
+#include "stages/expectations.h"
+
+namespace sl {
+
+struct Judgement {
+    Status status = Status::Skip;  // PASS, FAIL, or SKIP (a bounded figure not measured)
+    std::string message;           // why, in one line
+};
+
+Judgement judge(const Expectation& e, const std::map<std::string, double>& figures);
+
+// A displaced view is one nobody chose: its casters, light and camera may land where a lesson's
+// bounds, measured over the curated views, are out of reach for any method (a shadow stretched
+// at a grazing angle has a staircase edge wider than two pixels). There the submission is held
+// to the lesson's bounds or to what our shipped shaders measure in the same view (`ours`: a
+// quarter more, at least 0.5), whichever is wider: a shader that follows the map matches ours,
+// one that hard-codes the scene misses by tens of pixels and percent.
+Judgement judgeDisplaced(const Expectation& e, const std::map<std::string, double>& theirs,
+                         const std::map<std::string, double>& ours);
+
+}  // namespace sl

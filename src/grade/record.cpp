@@ -1,0 +1,327 @@
+#include "grade/record.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "grade/bounds.h"
+#include "grade/stage_runs.h"
+#include "io/json_fields.h"
+
+namespace sl {
+
+using nlohmann::json;
+
+namespace {
+
+double rounded(double v) {
+    return std::round(v * 1000.0) / 1000.0;
+}
+
+std::string withoutPrefix(std::string text, const std::string& prefix) {
+    if (prefix.empty()) return text;
+    for (std::size_t at; (at = text.find(prefix)) != std::string::npos;)
+        text.erase(at, prefix.size());
+    return text;
+}
+
+// A planned row that was not rendered, with the status and message it gets.
+RowRecord unrenderedRow(const RowPlan& plan, Status status, const std::string& message) {
+    RowRecord row;
+    row.result = unrenderedResult(plan.check.request);
+    row.result.view = plan.check.view;
+    row.result.lesson = plan.check.lesson;
+    row.result.status = status;
+    row.result.message = message;
+    return row;
+}
+
+// Points: a scored row's possible points are its plan's, earned when its status earns them;
+// a NOT GRADED row is no score at all.
+void score(RowRecord& row, const RowPlan& plan) {
+    row.visibility = plan.visibility;
+    row.extraView = plan.extra;
+    row.result.view = plan.check.view;
+    if (!plan.check.lesson.empty()) row.result.lesson = plan.check.lesson;
+    row.maxPoints = isScored(row.status()) ? plan.points : 0.0;
+    row.points = earnsPoints(row.status()) ? row.maxPoints : 0.0;
+}
+
+void sumStage(StageRecord& st) {
+    st.points = st.maxPoints = 0;
+    st.status = Status::Pass;
+    for (const RowRecord& row : st.rows) {
+        st.points += row.points;
+        st.maxPoints += row.maxPoints;
+        st.status = worst(st.status, row.status());
+    }
+    st.points = rounded(st.points);
+    st.maxPoints = rounded(st.maxPoints);
+}
+
+StageRecord stageOf(const StagePlan& p) {
+    StageRecord st;
+    st.stage = p.stage;
+    st.tree = p.tree;
+    st.visibility = p.visibility;
+    st.files = p.files;
+    st.missingFiles = p.missingFiles;
+    return st;
+}
+
+void sumStudent(StudentRecord& r) {
+    r.score = r.maxScore = 0;
+    for (const StageRecord& st : r.stages) {
+        r.score += st.points;
+        r.maxScore += st.maxPoints;
+    }
+    r.score = rounded(r.score);
+    r.maxScore = rounded(r.maxScore);
+}
+
+}  // namespace
+
+Status StudentRecord::status() const {
+    Status s = Status::Pass;
+    for (const StageRecord& st : stages) s = worst(s, st.status);
+    return s;
+}
+
+StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
+                        const std::string& overlay) {
+    StageRecord st = stageOf(p);
+    if (p.missing()) {
+        std::string msg = "not handed in: expected " + commaList(p.missingFiles);
+        for (const RowPlan& row : p.rows) {
+            st.rows.push_back(unrenderedRow(row, Status::Missing, msg));
+            score(st.rows.back(), row);
+        }
+        st.message = msg;
+    } else if (!p.skipped.empty()) {
+        for (const RowPlan& row : p.rows) {
+            st.rows.push_back(unrenderedRow(row, Status::Skip, p.skipped));
+            score(st.rows.back(), row);
+        }
+        st.message = p.skipped;
+    } else if (p.rows.empty()) {  // nothing to render, nothing to earn
+        st.message = "no checks planned";
+    } else {
+        static const std::vector<CheckResult> none;
+        const std::vector<CheckResult>& results = got ? *got : none;
+        const CheckResult* bad = nullptr;  // the row that stopped the stage's job
+        for (const CheckResult& r : results)
+            if (unjudged(r.status) && !bad) bad = &r;
+        CheckResult incomplete;
+        if (!bad && results.size() != p.rows.size()) {
+            incomplete.status = Status::NotGraded;
+            incomplete.message = "the stage's results are incomplete (a platform problem)";
+            bad = &incomplete;
+        }
+        for (std::size_t i = 0; i < p.rows.size(); ++i) {
+            RowRecord row;
+            if (!bad) {
+                row.result = results[i];
+            } else {
+                // Every row takes the failure of the row that stopped the job; the others carry
+                // it cut short (the stage's message has it whole): outputs stay small.
+                const bool own = i < results.size() && &results[i] == bad;
+                const std::string message =
+                    own ? bad->message : capped(bad->message, kMaxInheritedMessage);
+                row = i < results.size() ? RowRecord{results[i]}
+                                         : unrenderedRow(p.rows[i], bad->status, message);
+                row.result.status = bad->status;
+                row.result.message = message;
+            }
+            score(row, p.rows[i]);
+            st.rows.push_back(std::move(row));
+        }
+        if (bad) {
+            st.message = bad->message;
+        } else {
+            int shown = 0;
+            for (const RowRecord& row : st.rows) shown += earnsPoints(row.status());
+            st.message = std::to_string(shown) + " of " + std::to_string(st.rows.size()) +
+                         " checks show the lesson";
+        }
+    }
+    sumStage(st);
+    // Messages name the student's files as handed in, not by the private snapshot's path.
+    const std::string snapshot = overlay.empty() ? "" : overlay + "/";
+    st.message = withoutPrefix(st.message, snapshot);
+    for (RowRecord& row : st.rows)
+        row.result.message = withoutPrefix(row.result.message, snapshot);
+    return st;
+}
+
+StudentRecord buildRecord(const GradingPlan& plan, const StudentWork& s,
+                          const std::vector<StageRecord>& stages, double seconds) {
+    StudentRecord out;
+    out.assignment = plan.name;
+    out.student = s.name;
+    out.notes = s.notes;
+    out.files = s.files;
+    out.seconds = seconds;
+    out.handInHash = s.hash;
+    out.stages = stages;
+    for (const StageRecord& st : stages)
+        for (const RowRecord& row : st.rows)
+            if (out.backend.empty() && !row.result.backend.empty()) {
+                out.backend = row.result.backend;
+                out.machine = row.result.machine;
+            }
+    sumStudent(out);
+    return out;
+}
+
+StudentRecord unreadableRecord(const GradingPlan& plan, const StudentWork& s) {
+    StudentRecord out;
+    out.assignment = plan.name;
+    out.student = s.name;
+    out.error = s.error;
+    out.notes = s.notes;
+    out.handInHash = s.hash;
+    for (const StagePlan& p : plan.stages) {
+        StageRecord st = stageOf(p);
+        st.missingFiles.clear();
+        for (const RowPlan& row : p.rows) {
+            st.rows.push_back(unrenderedRow(row, Status::Error, s.error));
+            score(st.rows.back(), row);
+        }
+        st.message = s.error;
+        sumStage(st);
+        out.stages.push_back(std::move(st));
+    }
+    sumStudent(out);
+    return out;
+}
+
+RowCounts countRows(const StudentRecord& r) {
+    RowCounts c;
+    for (const StageRecord& st : r.stages)
+        for (const RowRecord& row : st.rows) {
+            ++c.total;
+            switch (row.status()) {
+                case Status::Pass:
+                    ++c.passed;
+                    break;
+                case Status::Skip:
+                    ++c.skipped;
+                    break;
+                case Status::Fail:
+                    ++c.failed;
+                    break;
+                case Status::Missing:
+                    ++c.missing;
+                    break;
+                case Status::NotGraded:
+                    ++c.notGraded;
+                    break;
+                default:
+                    ++c.errors;
+            }
+        }
+    return c;
+}
+
+json recordJson(const StudentRecord& r) {
+    json stages = json::array();
+    for (const StageRecord& st : r.stages) {
+        json rows = json::array();
+        for (const RowRecord& row : st.rows) {
+            json j = checkJson(row.result);
+            j["points"] = rounded(row.points);
+            j["max_points"] = rounded(row.maxPoints);
+            j["visibility"] = row.visibility;
+            j["extra_view"] = row.extraView;
+            rows.push_back(std::move(j));
+        }
+        stages.push_back({{"stage", st.stage},
+                          {"tree", st.tree},
+                          {"files", st.files},
+                          {"missing_files", st.missingFiles},
+                          {"status", statusName(st.status)},
+                          {"message", st.message},
+                          {"points", st.points},
+                          {"max_points", st.maxPoints},
+                          {"visibility", st.visibility},
+                          {"rows", rows}});
+    }
+    RowCounts c = countRows(r);
+    return {{"tool", r.tool},
+            {"report_version", 2},
+            {"assignment", r.assignment},
+            {"student", r.student},
+            {"status", statusName(r.status())},
+            {"exit_code", r.exitCode()},
+            {"error", r.error.empty() ? json() : json(r.error)},
+            {"notes", r.notes},
+            {"files", r.files},
+            {"score", r.score},
+            {"max_score", r.maxScore},
+            {"seconds", r.seconds},
+            {"seed", r.seed ? json(*r.seed) : json()},
+            {"machine", {{"backend", r.backend}, {"renderer", r.machine}}},
+            {"hashes", {{"hand_in", r.handInHash}, {"assignment", r.assignmentHash}}},
+            {"summary",
+             {{"checked", c.total},
+              {"passed", c.passed},
+              {"failed", c.failed},
+              {"skipped", c.skipped},
+              {"missing", c.missing},
+              {"errors", c.errors},
+              {"not_graded", c.notGraded},
+              {"exit_code", r.exitCode()},
+              {"seconds", r.seconds}}},
+            {"stages", stages}};
+}
+
+StudentRecord recordFromJson(const json& j) {
+    try {
+        if (!j.is_object() || j.value("report_version", 0) != 2)
+            throw std::invalid_argument("not a version 2 student record");
+        StudentRecord r;
+        r.tool = j.at("tool").get<std::string>();
+        r.assignment = j.at("assignment").get<std::string>();
+        r.student = j.at("student").get<std::string>();
+        if (j.at("error").is_string()) r.error = j["error"].get<std::string>();
+        r.notes = j.at("notes").get<std::vector<std::string>>();
+        r.files = j.at("files").get<std::vector<std::string>>();
+        r.seconds = j.at("seconds").get<double>();
+        if (!j.at("seed").is_null()) r.seed = j["seed"].get<std::uint64_t>();
+        r.backend = j.at("machine").at("backend").get<std::string>();
+        r.machine = j.at("machine").at("renderer").get<std::string>();
+        r.handInHash = j.at("hashes").at("hand_in").get<std::string>();
+        r.assignmentHash = j.at("hashes").at("assignment").get<std::string>();
+        for (const json& s : j.at("stages")) {
+            StageRecord st;
+            st.stage = s.at("stage").get<std::string>();
+            st.tree = s.at("tree").get<std::string>();
+            st.files = s.at("files").get<std::vector<std::string>>();
+            st.missingFiles = s.at("missing_files").get<std::vector<std::string>>();
+            std::optional<Status> status = statusFromName(s.at("status").get<std::string>());
+            if (!status) throw std::invalid_argument("a stage's status is unknown");
+            st.status = *status;
+            st.message = s.at("message").get<std::string>();
+            st.points = s.at("points").get<double>();
+            st.maxPoints = s.at("max_points").get<double>();
+            st.visibility = s.at("visibility").get<std::string>();
+            for (const json& row : s.at("rows")) {
+                RowRecord rr;
+                rr.result = checkResultFromJson(row);
+                rr.points = row.at("points").get<double>();
+                rr.maxPoints = row.at("max_points").get<double>();
+                rr.visibility = row.at("visibility").get<std::string>();
+                rr.extraView = row.at("extra_view").get<bool>();
+                st.rows.push_back(std::move(rr));
+            }
+            r.stages.push_back(std::move(st));
+        }
+        r.score = j.at("score").get<double>();
+        r.maxScore = j.at("max_score").get<double>();
+        return r;
+    } catch (const json::exception& e) {
+        throw std::invalid_argument(std::string("a student record: ") + e.what());
+    }
+}
+
+}  // namespace sl

@@ -1,0 +1,77 @@
+// One student's graded record, built once from the plan and the stages' results, from which
+// every output is drawn: the terminal table, --report, JUnit, Gradescope's results.json,
+// grades.csv, the feedback pages and the exit code (grade/reports.h, course/). Its JSON
+// (docs/assignment.md, "The student's record") is what `grade` keeps per student and reads back
+// on a rerun.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grade/plan.h"
+#include "grade/status.h"
+
+namespace sl {
+
+struct RowRecord {
+    CheckResult result;  // settings, figures, status, message, student files, images
+    double points = 0, maxPoints = 0;  // both 0 for a NOT GRADED row
+    std::string visibility = "visible";
+    bool extraView = false;
+    Status status() const { return result.status; }
+};
+
+struct StageRecord {
+    std::string stage, tree, visibility = "visible";
+    std::vector<std::string> files, missingFiles;
+    Status status = Status::Pass;  // the worst of its rows
+    std::string message;           // the stage's line: why it is what it is
+    double points = 0, maxPoints = 0;
+    std::vector<RowRecord> rows;
+};
+
+struct StudentRecord {
+    std::string tool = "shadowlab grade";
+    std::string assignment, student;
+    std::string error;  // the hand-in could not be read at all ("" = it was)
+    std::vector<std::string> notes, files;
+    std::vector<StageRecord> stages;
+    double score = 0, maxScore = 0;  // of the graded rows; NOT GRADED rows count in neither
+    double seconds = 0;
+    std::optional<std::uint64_t> seed;
+    std::string backend, machine;
+    // Content hashes: the hand-in's files and the assignment's text. A rerun regrades a student
+    // whose hand-in or assignment changed (course/class_grade.h).
+    std::string handInHash, assignmentHash;
+
+    Status status() const;  // the worst stage's (PASS when there is none)
+    int exitCode() const { return exitCodeOf(status()); }
+    // No row is NOT GRADED: the record is a score.
+    bool graded() const { return status() != Status::NotGraded; }
+};
+
+// A stage's record from its plan and, when it was rendered, its job's results (`got`; a job
+// that gave no results is one row, whose status every row takes). MISSING stages need none.
+// Messages lose the private snapshot's path (`overlay`): they name the student's own files.
+StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
+                        const std::string& overlay);
+// The record of `s` graded by `plan`: its stages' records, in the plan's order.
+StudentRecord buildRecord(const GradingPlan& plan, const StudentWork& s,
+                          const std::vector<StageRecord>& stages, double seconds);
+// The record of a hand-in that could not be read (a refused zip): every due stage ERROR.
+StudentRecord unreadableRecord(const GradingPlan& plan, const StudentWork& s);
+
+nlohmann::json recordJson(const StudentRecord& r);
+// The record recordJson wrote; throws std::invalid_argument on anything else.
+StudentRecord recordFromJson(const nlohmann::json& j);
+
+// Counts over a record's rows, for summaries.
+struct RowCounts {
+    int total = 0, passed = 0, failed = 0, skipped = 0, missing = 0, errors = 0, notGraded = 0;
+};
+RowCounts countRows(const StudentRecord& r);
+
+}  // namespace sl

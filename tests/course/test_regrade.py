@@ -1,0 +1,128 @@
+#!/usr/bin/env python3
+"""ctest course_not_graded: a platform failure is never a score, and a rerun grades what changed.
+A class of three (ann correct, bo's shader does not build, cy hands in a README) graded by a
+one-stage assignment:
+  1. under a memory limit too small for our own shaders (--memory-limit 100): the rendered
+     students are NOT GRADED (no points in the record, the CSV or the page), the missing one is
+     graded, the run says "not graded: rerun" and exits 3;
+  2. a rerun grades exactly those again ("not graded last time") and exits 0;
+  3. a rerun with nothing changed grades nobody;
+  4. a changed hand-in (bo fixes his shader) is regraded, alone;
+  5. --regrade NAME and a changed assignment regrade; an unknown --regrade name is refused;
+  6. check --assignment on the same hand-in gives the same rows, points and exit code as grade.
+usage: test_regrade.py SHADOWLAB REPO WORKDIR"""
+import csv, json, os, shutil, subprocess, sys
+
+exe, repo, work = sys.argv[1:4]
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work + "/class")
+SEED = "4242"
+assignment = {
+    "name": "margin only",
+    "stages": [{"stage": "margin", "tree": "core", "files": ["margin/lit.frag"], "points": 10,
+                "lessons": {"margin margin-kind=slope": 0},
+                "views": {"cube-on-cube": {"weight": 0}, "sphere-on-cube": {"weight": 0},
+                          "cube-on-sphere": {"weight": 0}, "grazing": {"weight": 0}}}]}
+lab = work + "/lab.json"
+json.dump(assignment, open(lab, "w"))
+shipped = open(os.path.join(repo, "shaders_core/margin/lit.frag")).read()
+
+
+def hand_in(name, rel, text):
+    path = os.path.join(work, "class", name, rel)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    open(path, "w").write(text)
+
+
+hand_in("ann", "margin/lit.frag", shipped)
+hand_in("bo", "margin/lit.frag", shipped.replace("float visibility = 1.0;", "float visibility = 1.0"))
+hand_in("cy", "README.txt", "nothing yet\n")
+out = work + "/out"
+
+
+def grade(*extra, code=0):
+    r = subprocess.run([exe, "grade", work + "/class", "--assignment", lab, "--out", out,
+                        "--seed", SEED] + list(extra), capture_output=True, text=True, timeout=900)
+    print("$ grade", *extra, "->", r.returncode)
+    print(r.stdout, r.stderr[-2000:])
+    assert r.returncode == code, (extra, r.returncode, code)
+    return r.stdout
+
+
+def record(name):
+    return json.load(open(os.path.join(out, "students", name + ".json")))
+
+
+def stamp(name):
+    return os.stat(os.path.join(out, "students", name + ".json")).st_mtime_ns
+
+
+# 1. Our shaders cannot run in 100 MB: NOT GRADED, never a score.
+text = grade("--memory-limit", "100", code=3)
+assert "graded 1 of 3; 2 not graded: rerun" in text, text
+for name in ("ann", "bo"):
+    rec = record(name)
+    assert rec["status"] == "NOT GRADED" and rec["exit_code"] == 3, (name, rec["status"])
+    assert rec["score"] == 0 and rec["max_score"] == 0, (name, rec["score"], rec["max_score"])
+    for st in rec["stages"]:
+        assert st["status"] == "NOT GRADED" and "not the submission's" in st["message"], st["message"]
+        assert all(r["points"] == 0 and r["max_points"] == 0 for r in st["rows"])
+assert record("cy")["status"] == "MISSING"
+rows = {r["student"]: r for r in csv.DictReader(open(out + "/grades.csv"))}
+assert rows["ann"]["margin/core"] == "" and rows["ann"]["total"] == "" and rows["ann"]["max"] == ""
+assert "our shipped shaders" in rows["ann"]["not_graded"], rows["ann"]
+assert rows["cy"]["total"] == "0.000" and rows["cy"]["not_graded"] == "", rows["cy"]
+page = open(out + "/feedback/ann.html").read()
+assert "not graded yet" in page and "of 10 points" not in page, "a not-graded page shows points"
+assert "memory limit" not in page, "the page tells the student the grader's troubles"
+
+# 2. The rerun grades exactly the two not graded.
+text = grade()
+assert "1 already graded, 2 to grade (2 not graded last time)" in text, text
+assert "grading ann again: not graded last time" in text and "grading cy again" not in text
+assert text.count("[student ") == 2, text
+assert record("ann")["status"] == "PASS" and record("ann")["score"] == 10
+assert record("bo")["status"] == "ERROR" and record("bo")["exit_code"] == 2
+
+# 3. Nothing changed: nobody is graded.
+before = {n: stamp(n) for n in ("ann", "bo", "cy")}
+text = grade()
+assert "3 already graded, 0 to grade" in text and "[student " not in text, text
+assert before == {n: stamp(n) for n in ("ann", "bo", "cy")}
+
+# 4. bo fixes his shader: he alone is graded again.
+hand_in("bo", "margin/lit.frag", shipped)
+text = grade()
+assert "grading bo again: the hand-in changed" in text, text
+assert text.count("[student ") == 1, text
+assert record("bo")["status"] == "PASS"
+assert stamp("ann") == before["ann"] and stamp("cy") == before["cy"]
+
+# 5. Asked for, an unknown name, the assignment changed.
+text = grade("--regrade", "ann")
+assert "grading ann again: asked for (--regrade)" in text and text.count("[student ") == 1, text
+r = subprocess.run([exe, "grade", work + "/class", "--assignment", lab, "--out", out,
+                    "--regrade", "nobody"], capture_output=True, text=True)
+assert r.returncode == 2 and "--regrade: no hand-in named 'nobody'" in r.stderr, (r.returncode, r.stderr)
+assignment["stages"][0]["points"] = 20
+json.dump(assignment, open(lab, "w"))
+text = grade()
+assert "0 already graded, 3 to grade (3 the assignment changed)" in text, text
+assert record("ann")["max_score"] == 20
+
+# 6. check --assignment and grade: the same rows, points and exit code for one student.
+r = subprocess.run([exe, "check", "--assignment", lab, "--shaders", work + "/class/ann",
+                    "--seed", SEED, "--report", work + "/ann-check.json"],
+                   capture_output=True, text=True, timeout=600)
+mine = json.load(open(work + "/ann-check.json"))
+graded = record("ann")
+
+
+def rows_of(rec):
+    return [(st["stage"], r["view"], r["lesson"], r["verdict"], r["points"], r["max_points"])
+            for st in rec["stages"] for r in st["rows"]]
+
+
+assert rows_of(mine) == rows_of(graded), (rows_of(mine), rows_of(graded))
+assert r.returncode == graded["exit_code"] == mine["exit_code"] == 0, r.returncode
+print("course_not_graded: ok")

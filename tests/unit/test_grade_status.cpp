@@ -1,0 +1,72 @@
+// The one ordered status and the verdict from figures (grade/status.h, grade/judge.h): worst of
+// works because the order is the exit code's, judge reads both sides of a bound and NaN.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "grade/judge.h"
+#include "grade/status.h"
+
+namespace sl {
+namespace {
+
+TEST(Status, OrderIsWorstLastAndExitCodesFollowIt) {
+    const Status order[] = {Status::Pass,  Status::Skip,    Status::Fail,  Status::Missing,
+                            Status::Error, Status::Timeout, Status::Crash, Status::NotGraded};
+    int lastCode = 0;
+    for (std::size_t k = 0; k < std::size(order); ++k) {
+        for (std::size_t j = 0; j < std::size(order); ++j)
+            EXPECT_EQ(worst(order[k], order[j]), order[std::max(k, j)]);
+        // The exit code never falls as the status worsens: worst-of a record is its exit code.
+        EXPECT_GE(exitCodeOf(order[k]), lastCode) << statusName(order[k]);
+        lastCode = exitCodeOf(order[k]);
+        EXPECT_EQ(statusFromName(statusName(order[k])), order[k]);
+    }
+    EXPECT_EQ(exitCodeOf(Status::Skip), 0);
+    EXPECT_EQ(exitCodeOf(Status::Fail), 1);
+    EXPECT_EQ(exitCodeOf(Status::Missing), 2);
+    EXPECT_EQ(exitCodeOf(Status::Crash), 2);
+    EXPECT_EQ(exitCodeOf(Status::NotGraded), 3);
+    EXPECT_STREQ(statusName(Status::NotGraded), "NOT GRADED");
+    EXPECT_FALSE(statusFromName("graded").has_value());
+}
+
+TEST(Status, OnlyPassAndSkipEarnAndNotGradedIsNoScore) {
+    EXPECT_TRUE(earnsPoints(Status::Pass));
+    EXPECT_TRUE(earnsPoints(Status::Skip));
+    for (Status s : {Status::Fail, Status::Missing, Status::Error, Status::Timeout, Status::Crash,
+                     Status::NotGraded})
+        EXPECT_FALSE(earnsPoints(s)) << statusName(s);
+    EXPECT_FALSE(isScored(Status::NotGraded));
+    EXPECT_TRUE(isScored(Status::Crash));
+}
+
+TEST(Judge, ReadsBothSidesAndNaN) {
+    Expectation noAcne;
+    noAcne.stage = "margin";
+    noAcne.outcome = "no acne";
+    noAcne.limits = {{"false_shadow_pct", NAN, 1}, {"false_lit_pct", NAN, 5}};
+    auto pass = judge(noAcne, {{"false_shadow_pct", 0.5}, {"false_lit_pct", 2.0}});
+    EXPECT_EQ(pass.status, Status::Pass) << pass.message;
+    auto fail = judge(noAcne, {{"false_shadow_pct", 49.0}, {"false_lit_pct", 0.1}});
+    EXPECT_EQ(fail.status, Status::Fail);
+    EXPECT_NE(fail.message.find("false_shadow_pct 49 not <= 1"), std::string::npos) << fail.message;
+    auto skip = judge(noAcne, {{"false_shadow_pct", 0.5}, {"false_lit_pct", NAN}});
+    EXPECT_EQ(skip.status, Status::Skip);
+    auto failWins = judge(noAcne, {{"false_shadow_pct", 5.0}, {"false_lit_pct", NAN}});
+    EXPECT_EQ(failWins.status, Status::Fail);
+}
+
+TEST(Judge, ADisplacedViewIsHeldToOursWhenTheBoundIsOutOfReach) {
+    Expectation e;
+    e.outcome = "correct";
+    e.limits = {{"edge_p95_px", NAN, 2}};
+    // Ours measure 6 px here: theirs may be a quarter more, and no more.
+    EXPECT_EQ(judgeDisplaced(e, {{"edge_p95_px", 7.4}}, {{"edge_p95_px", 6}}).status, Status::Pass);
+    EXPECT_EQ(judgeDisplaced(e, {{"edge_p95_px", 7.6}}, {{"edge_p95_px", 6}}).status, Status::Fail);
+    // Where ours meet the bound, the bound stands.
+    EXPECT_EQ(judgeDisplaced(e, {{"edge_p95_px", 2.4}}, {{"edge_p95_px", 1}}).status, Status::Fail);
+}
+
+}  // namespace
+}  // namespace sl
