@@ -58,7 +58,7 @@ for stage in stages:
 
     code, starter, log = grade(rel + "/shaders", work + "/%s-starter.json" % stage)
     st = starter["stages"][0]
-    assert code == 1 and st["status"] == "graded" and st["points"] == 0, (stage, code, st["status"], st["points"], log[-2000:])
+    assert code == 1 and st["status"] == "FAIL" and st["points"] == 0, (stage, code, st["status"], st["points"], log[-2000:])
     assert all(r["verdict"] == "FAIL" for r in st["rows"]), (stage, [r["verdict"] for r in st["rows"]])
     solution = work + "/%s-solution" % stage
     for f in files:
