@@ -52,9 +52,11 @@ printf '{"name": "two", "stages": [{"stage": "margin", "files": ["margin/lit.fra
 mkdir -p "$tmp/handin/margin" "$tmp/handin/mirror"
 cp "$src/shaders_core/margin/lit.frag" "$tmp/handin/margin/"
 cp "$src/shaders_core/mirror/surface.frag" "$src/shaders_core/mirror/surface.vert" "$tmp/handin/mirror/"
-out=$(run check --assignment "$tmp/two.json" --shaders "$tmp/handin" --time-limit 300) ||
+out=$(run check --assignment "$tmp/two.json" --shaders "$tmp/handin" --time-limit 300 \
+      --report "$tmp/two-report.json") ||
   fail "a correct hand-in is not graded full marks in the student edition: $out"
-echo "$out" | grep -q "total: 20.00 of 20.00" || fail "no full marks: $out"
+python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); assert r["score"] == r["max_score"] == 20, r["score"]' \
+  "$tmp/two-report.json" || fail "no full marks: $out"
 # Nothing to release from: the edition has no solution regions.
 set +e
 run release --assignment "$tmp/margin.json" --out "$tmp/rel" >/dev/null 2>"$tmp/err"
