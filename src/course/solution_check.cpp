@@ -1,8 +1,9 @@
 #include "course/solution_check.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 #include "course/student_grade.h"
@@ -12,12 +13,6 @@
 namespace sl {
 
 namespace {
-
-std::string pointsText(double v) {
-    char s[32];
-    std::snprintf(s, sizeof s, "%.2f", v);
-    return s;
-}
 
 // The solution handed in as a student would: the due stages' files, copied from `trees`, and
 // the other marked files of their folders (so the rows that draw with one of those show it).
@@ -131,12 +126,14 @@ StudentRecord verifySolution(const Assignment& a, const SolutionTrees& trees,
                         printable(row.result.message).substr(0, 300) + ")";
         }
     }
-    if (rowsLost > 0)
+    if (rowsLost > 0) {
+        std::ostringstream points;  // "8.33 of 100.00"
+        points << std::fixed << std::setprecision(2) << lost << " of " << a.maxPoints();
         throw AssignmentError(first + ": the solution (" + trees.describe() + ") loses " +
-                              pointsText(lost) + " of " + pointsText(a.maxPoints()) +
-                              " points in " + std::to_string(rowsLost) +
+                              points.str() + " points in " + std::to_string(rowsLost) +
                               (rowsLost == 1 ? " row" : " rows") +
                               ", so every correct student would; change or drop the row");
+    }
     return record;
 }
 
