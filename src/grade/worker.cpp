@@ -287,22 +287,27 @@ std::string limitSeconds(double s) {
     return text;
 }
 
-// A running process's CPU time (user + system, every thread) from /proc/PID/stat, or -1.
-double processCpuSeconds(pid_t pid) {
+// /proc/PID/FILE of a running process as text ("" when it cannot be read): small files, read
+// in one call.
+std::string procFile(pid_t pid, const char* file) {
     char path[64], text[1024];
-    std::snprintf(path, sizeof path, "/proc/%d/stat", int(pid));
+    std::snprintf(path, sizeof path, "/proc/%d/%s", int(pid), file);
     int fd = ::open(path, O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return -1;
+    if (fd < 0) return "";
     ssize_t n = ::read(fd, text, sizeof text - 1);
     ::close(fd);
-    if (n <= 0) return -1;
-    text[n] = 0;
-    const char* p = std::strrchr(text, ')');  // the name may hold spaces and parentheses
-    if (!p) return -1;
+    return n > 0 ? std::string(text, std::size_t(n)) : "";
+}
+
+// A running process's CPU time (user + system, every thread) from /proc/PID/stat, or -1.
+double processCpuSeconds(pid_t pid) {
+    const std::string text = procFile(pid, "stat");
+    std::size_t close = text.rfind(')');  // the name may hold spaces and parentheses
+    if (close == std::string::npos || close + 2 > text.size()) return -1;
     unsigned long long utime = 0, stime = 0;
     // After ") ": state, then fields 4..13, then utime (14) and stime (15).
-    if (std::sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu", &utime,
-                    &stime) != 2)
+    if (std::sscanf(text.c_str() + close + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu",
+                    &utime, &stime) != 2)
         return -1;
     static const double tick = double(::sysconf(_SC_CLK_TCK));
     return double(utime + stime) / tick;
@@ -310,16 +315,8 @@ double processCpuSeconds(pid_t pid) {
 
 // A running process's resident memory in MB from /proc/PID/statm, or -1.
 long processResidentMb(pid_t pid) {
-    char path[64], text[256];
-    std::snprintf(path, sizeof path, "/proc/%d/statm", int(pid));
-    int fd = ::open(path, O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return -1;
-    ssize_t n = ::read(fd, text, sizeof text - 1);
-    ::close(fd);
-    if (n <= 0) return -1;
-    text[n] = 0;
     unsigned long long size = 0, resident = 0;
-    if (std::sscanf(text, "%llu %llu", &size, &resident) != 2) return -1;
+    if (std::sscanf(procFile(pid, "statm").c_str(), "%llu %llu", &size, &resident) != 2) return -1;
     static const long page = ::sysconf(_SC_PAGESIZE);
     return long(resident * static_cast<unsigned long long>(page) >> 20);
 }

@@ -95,16 +95,23 @@ TEST(Base64, KnownValues) {
     EXPECT_EQ(base64("foobar"), "Zm9vYmFy");
 }
 
-TEST(GradesCsv, QuotesAndNoFormulas) {
+// A student with one stage of the given status and points.
+StudentRecord oneStage(const std::string& student, const std::string& stage, Status status,
+                       double points, double max) {
     StudentRecord r;
-    r.student = "=cmd|x,y";
+    r.student = student;
     StageRecord st;
-    st.stage = "rgb";
+    st.stage = stage;
     st.tree = "core";
-    st.points = 1.5;
-    st.maxPoints = 2;
-    st.status = Status::Fail;
+    st.points = points;
+    st.maxPoints = max;
+    st.status = status;
     r.stages = {st};
+    return r;
+}
+
+TEST(GradesCsv, QuotesAndNoFormulas) {
+    StudentRecord r = oneStage("=cmd|x,y", "rgb", Status::Fail, 1.5, 2);
     r.score = 1.5;
     r.maxScore = 2;
     EXPECT_EQ(gradesCsv({r}),
@@ -121,14 +128,8 @@ TEST(GradesCsv, EveryCellASpreadsheetWouldEvaluateIsPrefixed) {
 }
 
 TEST(GradesCsv, ANotGradedStageIsAnEmptyCellWithTheReason) {
-    StudentRecord r;
-    r.student = "bo";
-    StageRecord st;
-    st.stage = "margin";
-    st.tree = "core";
-    st.status = Status::NotGraded;
-    st.message = "our shaders could not finish";
-    r.stages = {st};
+    StudentRecord r = oneStage("bo", "margin", Status::NotGraded, 0, 0);
+    r.stages[0].message = "our shaders could not finish";
     EXPECT_EQ(gradesCsv({r}),
               "student,status,margin/core,total,max,not_graded\r\n"
               "bo,NOT GRADED,,,,margin/core: our shaders could not finish\r\n");
