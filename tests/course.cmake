@@ -12,6 +12,10 @@ add_test(NAME course_zip_safety
 foreach(tree core legacy)
   add_test(NAME course_release_${tree}
            COMMAND python3 ${SL_COURSE_PY}/test_release.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/release-${tree} ${tree})
+  # Every stage released on its own: starter 0, solution full marks (long: a label of its own).
+  add_test(NAME course_stages_${tree}
+           COMMAND python3 ${SL_COURSE_PY}/test_stages_assignable.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/stages-${tree} ${tree})
+  set_tests_properties(course_stages_${tree} PROPERTIES LABELS "course;long" TIMEOUT 3600)
 endforeach()
 find_program(SL_CHROMIUM chromium)
 if(SL_CHROMIUM)

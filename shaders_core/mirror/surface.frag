@@ -11,8 +11,14 @@ out vec4 fragColor;
 
 void main()
 {
-    if (useTexture == 1)
+    if (useTexture == 1) {
+        // BEGIN SOLUTION
         fragColor = vec4(reflectance * texture(mirrorTexture, uv).rgb, 1.0);
-    else
+        // END SOLUTION
+        // STUB: // TODO: the mirror shows what the reflected camera saw: mirrorTexture at uv, its
+        // STUB: // colour scaled by `reflectance`, alpha 1.0. Until then the mirror is flat grey.
+        // STUB: fragColor = vec4(0.5, 0.5, 0.5, 1.0);
+    } else {
         fragColor = color;
+    }
 }

@@ -17,6 +17,7 @@ float litFraction(vec3 N, vec3 L)
     if (shadowCoord.w <= 0.0) return 1.0;
     vec3 p = shadowCoord.xyz / shadowCoord.w;
     if (p.z > 1.0) return 1.0;
+    // BEGIN SOLUTION
     float bias = max(0.05 * (1.0 - dot(N, L)), 0.005);
     float shadowed = 0.0;
     for (int x = -1; x <= 1; ++x)
@@ -25,6 +26,11 @@ float litFraction(vec3 N, vec3 L)
             shadowed += p.z - bias > stored ? 1.0 : 0.0;
         }
     return 1.0 - shadowed / 9.0;
+    // END SOLUTION
+    // STUB: // TODO: LearnOpenGL's lookup: bias = max(0.05 * (1.0 - N.L), 0.005); compare p.z - bias
+    // STUB: // with the depth stored at the nine texels around p.xy (texelSize apart) and return
+    // STUB: // the fraction of them that do not shadow (1.0 all lit, 0.0 all shadowed).
+    // STUB: return 1.0;
 }
 
 void main()

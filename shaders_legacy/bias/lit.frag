@@ -15,7 +15,14 @@ void main()
 {
     vec3 stu = shadowCoord.xyz / shadowCoord.w;
     float visibility = 1.0;
+    // BEGIN SOLUTION
     if (shadowCoord.w > 0.0)
         visibility = stu.z <= texture2D(shadowMap, stu.xy).r + margin ? 1.0 : 0.0;
+    // END SOLUTION
+    // STUB: // TODO: the shadow test in the map's own coordinates. shadowCoord went through the
+    // STUB: // scale/bias matrix (shadowMatrix = bias * P_light * V_light * model, built on the CPU
+    // STUB: // with the bias-z you set), so after the divide by w, stu.xy is where to look in
+    // STUB: // shadowMap and stu.z the fragment's depth as the map stores it: visibility 0.0 where
+    // STUB: // stu.z lies behind the stored depth plus `margin` (only where shadowCoord.w > 0.0).
     gl_FragColor = shade(worldPosition, worldNormal, visibility, stu.z);
 }

@@ -9,8 +9,14 @@ uniform float reflectance;  // a real mirror returns a little less than all ligh
 
 void main()
 {
-    if (useTexture == 1)
+    if (useTexture == 1) {
+        // BEGIN SOLUTION
         gl_FragColor = vec4(reflectance * texture2D(mirrorTexture, uv).rgb, 1.0);
-    else
+        // END SOLUTION
+        // STUB: // TODO: the mirror shows what the reflected camera saw: mirrorTexture at uv, its
+        // STUB: // colour scaled by `reflectance`, alpha 1.0. Until then the mirror is flat grey.
+        // STUB: gl_FragColor = vec4(0.5, 0.5, 0.5, 1.0);
+    } else {
         gl_FragColor = color;
+    }
 }

@@ -15,6 +15,11 @@ varying vec2 uv;
 void main()
 {
     vec2 s = position.xy + 0.5;
+    // BEGIN SOLUTION
     uv = mix(mix(cornerUv[0], cornerUv[1], s.x), mix(cornerUv[3], cornerUv[2], s.x), s.y);
+    // END SOLUTION
+    // STUB: // TODO: uv at this corner of the quad (s: (0,0) bottom-left .. (1,1) top-right),
+    // STUB: // blended from the four cornerUv values (bilinear: mix along x, then along y).
+    // STUB: uv = s;
     gl_Position = projection * view * model * vec4(position, 1.0);
 }

@@ -19,12 +19,18 @@ float litFraction(vec3 N, vec3 L)
 {
     vec4 here = lightViewProjection * vec4(worldPosition, 1.0);
     if (here.w <= 0.0) return 1.0;
+    // BEGIN SOLUTION
     float texelWorld = here.w * texelPerDepth;
     float texels = minOffset + normalOffset * (1.0 - clamp(dot(N, L), 0.0, 1.0));
     vec3 pushed = worldPosition + N * (texels * texelWorld);
     vec4 clip = lightViewProjection * vec4(pushed, 1.0);
     vec3 p = clip.xyz / clip.w * 0.5 + 0.5;
     return shadow2D(shadowMap, p).r;
+    // END SOLUTION
+    // STUB: // TODO: push the point looked up along N by (minOffset + normalOffset * (1 - N.L))
+    // STUB: // texels, a texel being here.w * texelPerDepth wide in the world; project the pushed
+    // STUB: // point with lightViewProjection into the map's [0,1] cube and compare it there once.
+    // STUB: return 1.0;
 }
 
 void main()

@@ -1,6 +1,7 @@
 // `shadowlab grade SUBMISSIONS --assignment A.json --out DIR [--jobs N]`: a whole class graded
 // by an assignment (src/course/class_grade.h): grades.csv, a feedback page per student, the
 // class page and the JSON record per student; resumable, and a rerun regrades what changed.
+// The solution is graded by the assignment first (course/solution_check.h).
 #include <memory>
 
 #include "app/commands.h"
@@ -29,6 +30,9 @@ Command addGradeCommand(CLI::App& app) {
     cmd->add_option("--seed", *seed,
                     "the displaced views' seed, one for the class (in every record); default: "
                     "drawn now");
+    cmd->add_option("--solutions", args->solutions,
+                    "your own marked shaders to grade first (DIR/shaders_core/..., "
+                    "DIR/shaders_legacy/...; default: the shipped ones)");
     addLimitOptions(cmd, *limits);
     return {cmd, [args, backend, seed, limits] {
                 return guarded([&] {

@@ -1,7 +1,10 @@
 #include "course/assignment.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 #include <sstream>
 
@@ -26,25 +29,31 @@ namespace {
 
 constexpr std::size_t kMaxAssignmentBytes = 1u << 20;
 
+// "FILE: /json/path (line N)": the value's line, or its nearest parent's (a missing field).
+std::string placeOf(const std::string& origin, const std::map<std::string, int>& lines,
+                    const std::string& path) {
+    std::string p = path;
+    int line = 0;
+    while (true) {
+        auto it = lines.find(p);
+        if (it != lines.end()) {
+            line = it->second;
+            break;
+        }
+        if (p.empty()) break;
+        p = p.substr(0, p.rfind('/'));
+    }
+    return origin + ": " + (path.empty() ? "/" : path) +
+           (line ? " (line " + std::to_string(line) + ")" : "");
+}
+
 class Reader {
   public:
-    Reader(std::string origin, const std::string& text)
-        : origin_(std::move(origin)), lines_(jsonValueLines(text)) {}
+    Reader(std::string origin, const std::map<std::string, int>& lines)
+        : origin_(std::move(origin)), lines_(lines) {}
 
     [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-        std::string p = path;
-        int line = 0;
-        while (true) {  // the value's line, or its nearest parent's (a missing field)
-            auto it = lines_.find(p);
-            if (it != lines_.end()) {
-                line = it->second;
-                break;
-            }
-            if (p.empty()) break;
-            p = p.substr(0, p.rfind('/'));
-        }
-        throw AssignmentError(origin_ + ": " + (path.empty() ? "/" : path) +
-                              (line ? " (line " + std::to_string(line) + ")" : "") + ": " + what);
+        throw AssignmentError(placeOf(origin_, lines_, path) + ": " + what);
     }
 
     void allowKeys(const json& obj, const std::string& path, std::set<std::string> keys) const {
@@ -89,8 +98,14 @@ class Reader {
 
   private:
     std::string origin_;
-    std::map<std::string, int> lines_;
+    const std::map<std::string, int>& lines_;
 };
+
+bool shippedFolder(const std::string& tree, const std::string& stage) {
+    struct stat st;
+    std::string root = shaderTreeRoot(tree == "legacy" ? GlslTree::Legacy : GlslTree::Core);
+    return ::stat((root + "/" + stage).c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
 
 bool shippedFile(const std::string& tree, const std::string& rel) {
     std::string text;
@@ -107,6 +122,9 @@ std::set<std::string> viewNamesOf(const std::string& stage, const std::string& t
         scenes.insert(scene);
         for (const GradingView& v : gradingViews(scene)) names.insert(v.name);
     }
+    // The view displaced by the run's seed (check_run.h, checkCases): in the stage's own scene.
+    const StageInfo* info = findStage(stage);
+    if (info && !info->needsMirror) names.insert("displaced");
     return names;
 }
 
@@ -128,6 +146,11 @@ AssignmentStage readStage(const Reader& in, const json& j, const std::string& pa
         in.fail(path + "/tree", "'" + s.tree + "' is not one of core, legacy");
     if (info->legacyOnly && s.tree == "core")
         in.fail(path + "/tree", "stage " + s.stage + " runs in the legacy tree only");
+    if (!shippedFolder(s.tree, s.stage))
+        in.fail(path + "/stage", "stage " + s.stage + " has no shaders in the " + s.tree +
+                                     " tree (its method is fixed-function GL, drawn by the "
+                                     "program): there is nothing to hand in, so it cannot be "
+                                     "assigned");
     if (j.contains("due")) {
         if (!j["due"].is_boolean()) in.fail(path + "/due", "must be true or false");
         s.due = j["due"].get<bool>();
@@ -238,10 +261,24 @@ Assignment parseAssignment(const std::string& text, const std::string& origin) {
         }
         throw AssignmentError(origin + ": line " + std::to_string(line) + ", column " +
                               std::to_string(col) + ": not valid JSON");
+    } catch (const json::exception&) {
+        // Valid JSON that a double cannot hold (1e400): nlohmann names no position, so the
+        // first such number is found again by its text.
+        std::map<std::string, std::string> numbers;
+        std::map<std::string, int> lines = jsonValueLines(text, &numbers);
+        const std::string* first = nullptr;  // in the file's order
+        for (const auto& [path, token] : numbers)
+            if (!std::isfinite(std::strtod(token.c_str(), nullptr)) &&
+                (!first || lines[path] < lines[*first]))
+                first = &path;
+        if (!first) throw AssignmentError(origin + ": a number out of range");
+        throw AssignmentError(placeOf(origin, lines, *first) + ": the number " +
+                              numbers[*first].substr(0, 40) + " is out of range");
     }
-    Reader in(origin, text);
-    in.allowKeys(j, "", {"name", "due_date", "stages", "extra_views", "comment"});
     Assignment a;
+    a.lines = jsonValueLines(text);
+    Reader in(origin, a.lines);
+    in.allowKeys(j, "", {"name", "due_date", "stages", "extra_views", "comment"});
     a.origin = origin;
     if (!j.contains("name")) in.fail("/name", "missing (the assignment's name)");
     a.name = in.text(j["name"], "/name");
@@ -304,7 +341,12 @@ Assignment parseAssignment(const std::string& text, const std::string& origin) {
                                           {"views", views},
                                           {"todo", s.todo}});
     }
+    checkAssignmentMeaning(a);
     return a;
+}
+
+std::string Assignment::at(const std::string& path) const {
+    return placeOf(origin, lines, path);
 }
 
 Assignment loadAssignment(const std::string& path) {

@@ -52,13 +52,24 @@ struct Assignment {
     std::string name, dueDate, origin;
     std::vector<AssignmentStage> stages;
     std::vector<ExtraView> extraViews;
-    nlohmann::json publicJson;  // what a student may see: no extra views, no hidden weights
+    nlohmann::json publicJson;         // what a student may see: no extra views, no hidden weights
+    std::map<std::string, int> lines;  // every value's JSON pointer -> its line in the file
     std::vector<const AssignmentStage*> due() const;
     double maxPoints() const;  // of the due stages
+    // "FILE: /json/path (line N)" for messages about the value at `path` (or its parent).
+    std::string at(const std::string& path) const;
 };
 
+// Parses and checks an assignment: its syntax, types and ranges, then its meaning
+// (checkAssignmentMeaning). Throws AssignmentError naming the file, the JSON path and the line.
 Assignment parseAssignment(const std::string& text, const std::string& origin);
 Assignment loadAssignment(const std::string& path);
+
+// What a well-formed assignment may still not say (course/assignment_meaning.cpp): a view that
+// cannot be drawn (eye on its target, looking straight up or down, eye or light inside or on an
+// object of its scene), a due stage worth no points or whose rows all weigh 0. Throws
+// AssignmentError naming the file, the JSON path and the line.
+void checkAssignmentMeaning(const Assignment& a);
 
 // Every row of a due stage for the submission at `overlay` (may be ""), in check order; the
 // stage's points split over them by lesson weight times view weight. With a `seed`, the

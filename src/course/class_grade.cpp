@@ -20,6 +20,7 @@
 
 #include "course/feedback_html.h"
 #include "course/intake_adapter.h"
+#include "course/solution_check.h"
 #include "course/student_grade.h"
 #include "io/content_hash.h"
 #include "io/files.h"
@@ -115,6 +116,11 @@ int runClassGrade(const ClassGradeArgs& args) {
     std::sort(entries.begin(), entries.end());
     if (entries.empty())
         throw UsageError("grade: " + printableName(args.submissions) + " holds no submission");
+    SolutionTrees trees = solutionTrees(args.solutions);
+    std::cout << "grading the solution (" << trees.describe() << ") by "
+              << printableName(args.assignment) << " first\n"
+              << std::flush;
+    verifySolution(a, trees, args.settings);
     for (const char* sub : {"", "/students", "/feedback", "/work", "/logs"}) {
         std::error_code ec;
         fs::create_directories(args.out + sub, ec);

@@ -16,14 +16,16 @@ namespace sl {
 
 struct ClassGradeArgs {
     std::string submissions, assignment, out;
+    std::string solutions;  // the instructor's own marked trees ("" = the shipped ones)
     int jobs = 1;
     std::vector<std::string> regrade;  // --regrade NAME...: these students again
     bool regradeAll = false;           // --regrade-all
     GradeSettings settings;
 };
 
-// Exit 0 when every student was graded (whatever their points), 3 when any is not graded (a
-// platform failure: rerun, and exactly those are graded again).
+// The solution is graded by the assignment first (course/solution_check.h): a row it loses
+// refuses the grading (exit 2). Exit 0 when every student was graded (whatever their points),
+// 3 when any is not graded (a platform failure: rerun, and exactly those are graded again).
 int runClassGrade(const ClassGradeArgs& args);
 
 }  // namespace sl

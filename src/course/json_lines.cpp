@@ -9,7 +9,9 @@ namespace {
 
 class Scanner {
   public:
-    Scanner(const std::string& text, std::map<std::string, int>& out) : t_(text), out_(out) {}
+    Scanner(const std::string& text, std::map<std::string, int>& out,
+            std::map<std::string, std::string>* numbers)
+        : t_(text), out_(out), numbers_(numbers) {}
 
     void value(const std::string& path, int depth) {
         skipSpace();
@@ -47,7 +49,10 @@ class Scanner {
         } else if (c == '"') {
             string();
         } else {
+            std::size_t start = pos_;
             while (pos_ < t_.size() && !std::strchr(",]} \t\r\n", t_[pos_])) ++pos_;
+            bool number = c == '-' || std::isdigit(static_cast<unsigned char>(c));
+            if (numbers_ && number) (*numbers_)[path] = t_.substr(start, pos_ - start);
         }
     }
 
@@ -81,15 +86,17 @@ class Scanner {
 
     const std::string& t_;
     std::map<std::string, int>& out_;
+    std::map<std::string, std::string>* numbers_;
     std::size_t pos_ = 0;
     int line_ = 1;
 };
 
 }  // namespace
 
-std::map<std::string, int> jsonValueLines(const std::string& text) {
+std::map<std::string, int> jsonValueLines(const std::string& text,
+                                          std::map<std::string, std::string>* numbers) {
     std::map<std::string, int> out;
-    Scanner(text, out).value("", 0);
+    Scanner(text, out, numbers).value("", 0);
     return out;
 }
 

@@ -10,6 +10,8 @@ namespace sl {
 
 // Every value's JSON pointer -> its 1-based line. The text must already parse as JSON; on text
 // that does not, the map holds what was read before the fault.
-std::map<std::string, int> jsonValueLines(const std::string& text);
+// With `numbers`, every number's JSON pointer -> its text as written ("1e400").
+std::map<std::string, int> jsonValueLines(const std::string& text,
+                                          std::map<std::string, std::string>* numbers = nullptr);
 
 }  // namespace sl

@@ -1,13 +1,22 @@
 #include "course/release.h"
 
+#include <algorithm>
+#include <cstring>
 #include <filesystem>
+#include <functional>
+#include <regex>
 #include <sstream>
 
 #include "io/files.h"
+#include "render/request.h"
 
 namespace sl {
 
+namespace fs = std::filesystem;
+
 namespace {
+
+constexpr std::size_t kMaxShaderBytes = 1u << 20;
 
 std::string trimmed(const std::string& s) {
     std::size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
@@ -58,6 +67,63 @@ std::string studentReadme(const Assignment& a) {
     return r.str();
 }
 
+// The exact marker lines (trimmed) and the STUB prefix.
+const char* const kBegin = "// BEGIN SOLUTION";
+const char* const kEnd = "// END SOLUTION";
+const char* const kStub = "// STUB:";
+
+enum class Marker { None, Begin, End, Stub };
+
+// What a line is, tolerantly: anything that looks like a marker (any case, any spacing or
+// punctuation between the words, inside a block comment, after code, the words swapped) but is
+// not the exact form refuses, so a misspelled marker never ships its region's solution.
+Marker markerOf(const std::string& line, const std::function<AssignmentError(std::string)>& at) {
+    std::string t = trimmed(line);
+    if (t == kBegin) return Marker::Begin;
+    if (t == kEnd) return Marker::End;
+    if (t.rfind(kStub, 0) == 0) return Marker::Stub;
+    static const std::regex region(
+        "(begin|end)[^a-z0-9]{0,3}solution|solution[^a-z0-9]{0,3}(begin|end)\\b",
+        std::regex::icase);
+    static const std::regex stub("^\\s*(//+|/\\*+|\\*)\\s*stub\\b", std::regex::icase);
+    if (std::regex_search(line, region) || std::regex_search(line, stub)) {
+        std::string shown = t.size() > 60 ? t.substr(0, 57) + "..." : t;
+        throw at("'" + printable(shown) +
+                 "' looks like a solution marker but is not one; write exactly '" + kBegin +
+                 "', '" + kEnd + "' or '" + kStub + " code' on a line of its own");
+    }
+    return Marker::None;
+}
+
+// Every regular file under `root`/`folder` ("" = all of `root`): its path relative to `root`
+// and its text. A file that cannot be read, or a tree that cannot be listed, is an error.
+std::vector<StudentFile> treeFiles(const std::string& root, const std::string& folder) {
+    std::vector<StudentFile> out;
+    std::error_code ec;
+    fs::path base = folder.empty() ? fs::path(root) : fs::path(root) / folder;
+    if (!fs::is_directory(base, ec)) return out;
+    for (auto it = fs::recursive_directory_iterator(base, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        if (!it->is_regular_file(ec) || it->is_symlink(ec)) continue;
+        std::string text, path = it->path().string();
+        std::string err = readRegularFile(path, kMaxShaderBytes, text);
+        if (!err.empty()) throw UsageError("release: " + printableName(path) + ": " + err);
+        out.push_back({fs::relative(it->path(), root).string(), text});
+    }
+    if (ec) throw UsageError("release: cannot list " + printableName(base.string()));
+    return out;
+}
+
+std::string studentEditionNote() {
+    return "# The student edition\n\n"
+           "In these shaders every part a lab asks you to write is a stub: it builds, draws a\n"
+           "\"not done yet\" picture (no shadows, a grey mirror) and says in a TODO what to "
+           "write.\n"
+           "Write your work in a folder of your own, laid out like this one (`margin/lit.frag`),\n"
+           "and run `shadowlab window --shaders DIR` or `shadowlab check --assignment A.json\n"
+           "--shaders DIR`.\n";
+}
+
 }  // namespace
 
 std::string stripSolutions(const std::string& text, const std::string& origin,
@@ -72,36 +138,38 @@ std::string stripSolutions(const std::string& text, const std::string& origin,
         if (afterRegion && !sawStub) out << indent << "// TODO: write this part\n";
         afterRegion = false;
     };
+    auto at = [&](const std::string& what) {
+        return AssignmentError(origin + ": line " + std::to_string(number) + ": " + what);
+    };
     while (std::getline(in, line)) {
         ++number;
-        std::string t = trimmed(line);
-        auto where = [&](const std::string& what) {
-            return AssignmentError(origin + ": line " + std::to_string(number) + ": " + what);
-        };
-        if (t == "// BEGIN SOLUTION") {
+        Marker m = markerOf(line, at);
+        if (m == Marker::Begin) {
             if (inRegion)
-                throw where("BEGIN SOLUTION inside the region opened on line " +
-                            std::to_string(begin));
+                throw at("BEGIN SOLUTION inside the region opened on line " +
+                         std::to_string(begin));
             closeRegion();
             inRegion = true;
             begin = number;
             indent = line.substr(0, line.find('/'));
             continue;
         }
-        if (t == "// END SOLUTION") {
-            if (!inRegion) throw where("END SOLUTION without a BEGIN SOLUTION");
+        if (m == Marker::End) {
+            if (!inRegion) throw at("END SOLUTION without a BEGIN SOLUTION");
             inRegion = false;
             afterRegion = true;
             sawStub = false;
             continue;
         }
         if (inRegion) {
+            if (m == Marker::Stub)
+                throw at("a STUB line inside the region opened on line " + std::to_string(begin));
             if (solution) solution->push_back(line);
             continue;
         }
-        if (t.rfind("// STUB:", 0) == 0) {
-            if (!afterRegion) throw where("a STUB line not right after an END SOLUTION");
-            std::string code = t.substr(8);
+        if (m == Marker::Stub) {
+            if (!afterRegion) throw at("a STUB line not right after an END SOLUTION");
+            std::string code = trimmed(line).substr(std::strlen(kStub));
             if (!code.empty() && code[0] == ' ') code.erase(0, 1);
             out << line.substr(0, line.find('/')) << code << "\n";
             sawStub = true;
@@ -119,38 +187,109 @@ std::string stripSolutions(const std::string& text, const std::string& origin,
     return result;
 }
 
-std::vector<std::string> writeRelease(const Assignment& a, const std::string& assignmentPath,
-                                      const std::string& outDir) {
+std::string SolutionTrees::root(const std::string& tree) const {
+    if (dir.empty()) return shaderTreeRoot(tree == "legacy" ? GlslTree::Legacy : GlslTree::Core);
+    return dir + (tree == "legacy" ? "/shaders_legacy" : "/shaders_core");
+}
+
+std::string SolutionTrees::describe() const {
+    return dir.empty() ? "the shipped shaders" : "the solutions in " + printableName(dir);
+}
+
+SolutionTrees solutionTrees(const std::string& dir) {
+    if (dir.empty()) return {};
     std::error_code ec;
-    if (std::filesystem::exists(outDir, ec) && !std::filesystem::is_empty(outDir, ec))
+    if (!fs::is_directory(dir + "/shaders_core", ec) &&
+        !fs::is_directory(dir + "/shaders_legacy", ec))
+        throw UsageError("--solutions " + printableName(dir) +
+                         ": holds neither shaders_core/ nor shaders_legacy/ (the layout of the "
+                         "shipped data: DIR/shaders_core/<stage>/lit.frag ...)");
+    return {dir};
+}
+
+std::vector<std::string> markedFiles(const std::string& root, const std::string& folder) {
+    std::vector<std::string> out;
+    for (const StudentFile& f : treeFiles(root, folder)) {
+        std::vector<std::string> solution;
+        stripSolutions(f.text, printableName(root + "/" + f.rel), &solution);
+        if (!solution.empty()) out.push_back(f.rel);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::vector<StudentFile> releasedShaders(const Assignment& a, const SolutionTrees& trees) {
+    std::vector<StudentFile> out;
+    for (std::size_t k = 0; k < a.stages.size(); ++k) {
+        const AssignmentStage& s = a.stages[k];
+        if (!s.due) continue;
+        std::string root = trees.root(s.tree), path = "/stages/" + std::to_string(k) + "/files";
+        for (const std::string& f : s.files) {
+            std::string source = root + "/" + f, text;
+            std::string err = readRegularFile(source, kMaxShaderBytes, text);
+            if (!err.empty())
+                throw UsageError("release: " + printableName(source) + " (" + a.at(path) +
+                                 ", from " + trees.describe() + "): " + err);
+            std::vector<std::string> solution;
+            std::string stripped = stripSolutions(text, printableName(source), &solution);
+            if (solution.empty())
+                throw AssignmentError(printableName(source) +
+                                      ": no BEGIN SOLUTION region: the release would hand out "
+                                      "the whole solution of stage " +
+                                      s.stage +
+                                      " (mark the part students write, in your own trees: "
+                                      "--solutions DIR)");
+            out.push_back({f, stripped});
+        }
+    }
+    return out;
+}
+
+void checkReleaseOut(const std::string& outDir) {
+    std::error_code ec;
+    if (fs::exists(outDir, ec) && !fs::is_empty(outDir, ec))
         throw UsageError("release --out " + printableName(outDir) +
                          ": the folder exists and is not empty (the release is written fresh)");
-    std::filesystem::create_directories(outDir, ec);
+}
+
+std::vector<std::string> writeRelease(const Assignment& a, const std::vector<StudentFile>& shaders,
+                                      const std::string& outDir) {
+    checkReleaseOut(outDir);
+    std::error_code ec;
+    fs::create_directories(outDir, ec);
     if (ec) throw UsageError("release --out " + printableName(outDir) + ": cannot create it");
-    (void)assignmentPath;
     std::vector<std::string> written;
-    for (const AssignmentStage* s : a.due())
-        for (const std::string& f : s->files) {
-            std::string source =
-                shaderTreeRoot(s->tree == "legacy" ? GlslTree::Legacy : GlslTree::Core) + "/" + f;
-            std::string text;
-            std::string err = readRegularFile(source, 1u << 20, text);
-            if (!err.empty()) throw UsageError("release: " + source + ": " + err);
-            std::vector<std::string> solution;
-            std::string stripped = stripSolutions(text, source, &solution);
-            if (solution.empty())
-                throw AssignmentError(source +
-                                      ": no BEGIN SOLUTION region: the release would hand out the "
-                                      "whole solution of stage " +
-                                      s->stage);
-            writeText(outDir + "/shaders/" + f, stripped);
-            written.push_back("shaders/" + f);
-        }
+    for (const StudentFile& f : shaders) {
+        writeText(outDir + "/shaders/" + f.rel, f.text);
+        written.push_back("shaders/" + f.rel);
+    }
     writeText(outDir + "/assignment.json", a.publicJson.dump(2) + "\n");
     writeText(outDir + "/README.md", studentReadme(a));
     written.push_back("assignment.json");
     written.push_back("README.md");
     return written;
+}
+
+int writeStudentEdition(const SolutionTrees& trees, const std::string& outDir) {
+    int stubbed = 0;
+    std::vector<StudentFile> files;  // everything checked before anything is written
+    for (const char* tree : {"core", "legacy"}) {
+        std::string root = trees.root(tree), top = std::string("shaders_") + tree;
+        std::error_code ec;
+        if (!fs::is_directory(root, ec))
+            throw UsageError("release --student-edition: no " + printableName(root));
+        if (fs::exists(outDir + "/" + top, ec))
+            throw UsageError("release --student-edition: " + printableName(outDir + "/" + top) +
+                             " exists already (the edition is written fresh)");
+        for (const StudentFile& f : treeFiles(root, "")) {
+            std::string stripped = stripSolutions(f.text, printableName(root + "/" + f.rel));
+            stubbed += stripped != f.text;
+            files.push_back({top + "/" + f.rel, stripped});
+        }
+        files.push_back({top + "/" + kStudentEditionNote, studentEditionNote()});
+    }
+    for (const StudentFile& f : files) writeText(outDir + "/" + f.rel, f.text);
+    return stubbed;
 }
 
 }  // namespace sl

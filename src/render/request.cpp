@@ -10,7 +10,19 @@
 namespace sl {
 
 std::string shaderTreeRoot(GlslTree tree) {
-    return dataDir() + (tree == GlslTree::Core ? "/shaders_core" : "/shaders_legacy");
+    std::string name = tree == GlslTree::Core ? "/shaders_core" : "/shaders_legacy";
+    // An install with the `solutions` component: its marked trees, not the student edition's
+    // stubs beside them (CMakeLists.txt, docs/assignment.md "A student edition").
+    struct stat st;
+    std::string solutions = dataDir() + "/solutions" + name;
+    if (::stat(solutions.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) return solutions;
+    return dataDir() + name;
+}
+
+bool isStudentEdition(GlslTree tree) {
+    struct stat st;
+    std::string note = shaderTreeRoot(tree) + "/" + kStudentEditionNote;
+    return ::stat(note.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
 void validateRequest(const RenderRequest& r) {

@@ -34,8 +34,15 @@ struct RenderRequest {
     std::optional<std::uint64_t> displaceSeed;
 };
 
-// The folder of our shaders for a tree.
+// The folder of our shaders for a tree: <data>/shaders_core (or _legacy), or where an install
+// has the `solutions` component, <data>/solutions/shaders_core (the marked trees beside the
+// student edition's stubs).
 std::string shaderTreeRoot(GlslTree tree);
+
+// The note `release --student-edition` leaves at the root of each tree it writes (every marked
+// solution region there is a stub), and whether our tree for `tree` carries it.
+inline constexpr const char* kStudentEditionNote = "STUDENT_EDITION.md";
+bool isStudentEdition(GlslTree tree);
 
 // Checks the request against the stage (exists, tree allowed, view offered, parameters) before
 // any GL work; throws UsageError with a one-line message.

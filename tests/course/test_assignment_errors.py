@@ -1,6 +1,9 @@
 #!/usr/bin/env python3
 """ctest course_assignment_errors: a broken assignment file is exit 2 with one line naming the
-file, the JSON path and the line of what is wrong (or the line and column of a syntax error).
+file, the JSON path and the line of what is wrong (or the line and column of a syntax error):
+its syntax, types and ranges, any number JSON can hold, and what it may not mean (a degenerate
+extra view, a due stage that can earn nothing); `release` refuses what it cannot release (a
+stage without solution regions, an instructor's trees in the wrong layout) before grading.
 usage: test_assignment_errors.py SHADOWLAB WORKDIR"""
 import os, shutil, subprocess, sys
 
@@ -9,6 +12,11 @@ shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work + "/s/rgb")
 open(work + "/s/rgb/lit.frag", "w").write("x")
 GOOD_STAGE = '{"stage": "rgb", "files": ["rgb/lit.frag"], "points": 10}'
+MARGIN = '{"name": "x", "stages": [\n {"stage": "margin", "files": ["margin/lit.frag"], "points": %s}]}'
+def extra(view):
+    return '{"name": "x", "stages": [' + GOOD_STAGE + '],\n "extra_views": [\n  ' + view + ']}'
+ALL_VIEWS_ZERO = ', '.join('"%s": 0' % v for v in
+                           ["lecture", "cube-on-cube", "sphere-on-cube", "cube-on-sphere", "grazing", "displaced"])
 cases = [
     ('{"name": "x",\n "stages": [\n  {"stage": "rgbb", "files": ["rgb/lit.frag"], "points": 10}\n]}',
      "/stages/0/stage (line 3): unknown stage 'rgbb'"),
@@ -26,15 +34,72 @@ cases = [
     ('{"name": "x",\n "stages": [' + GOOD_STAGE + ',]}', "line 2, column"),
     ('{"name": "x", "stages": [\n {"stage": "fixed", "tree": "core", "files": ["fixed/lit.frag"], "points": 1}]}',
      "/stages/0/tree (line 2): stage fixed runs in the legacy tree only"),
+    # The fixed-function stage has no shader to hand in.
+    ('{"name": "x", "stages": [\n {"stage": "fixed", "tree": "legacy", "files": ["fixed/lit.frag"], "points": 1}]}',
+     "/stages/0/stage (line 2): stage fixed has no shaders in the legacy tree"),
+    # Any number JSON can hold: out of a double's range, huge, negative zero.
+    (MARGIN % "1e400", "/stages/0/points (line 2): the number 1e400 is out of range"),
+    (MARGIN % "-1e999", "/stages/0/points (line 2): the number -1e999 is out of range"),
+    (MARGIN % ("9" * 400), "/stages/0/points (line 2): the number 999999999"),
+    (MARGIN % "123456789012345678901234567890", "/stages/0/points (line 2): must be a number in [0, 1e+06], got 1.23457e+29"),
+    (MARGIN % "-0", "/stages/0/points (line 2): a due stage needs points above 0"),
+    (MARGIN % "0", "/stages/0/points (line 2): a due stage needs points above 0"),
+    ('{"name": "x", "stages": [\n {"stage": "margin", "files": ["margin/lit.frag"], "points": 1,\n  "views": {"grazing": 1e400}}]}',
+     "/stages/0/views/grazing (line 3): the number 1e400 is out of range"),
+    (extra('{"name": "v", "eye": [1e400, 1, 1]}'), "/extra_views/0/eye/0 (line 3): the number 1e400 is out of range"),
+    # Weights: a due stage whose rows all weigh 0 could earn nothing.
+    ('{"name": "x", "stages": [\n {"stage": "depth", "files": ["depth/lit.frag"], "points": 5,\n  "lessons": {"depth": 0}}]}',
+     "/stages/0/lessons (line 3): every row of depth/core weighs 0"),
+    ('{"name": "x", "stages": [\n {"stage": "margin", "files": ["margin/lit.frag"], "points": 5,\n  "views": {' + ALL_VIEWS_ZERO + '}}]}',
+     "/stages/0/views (line 3): every row of margin/core weighs 0"),
+    ('{"name": "x", "stages": [\n {"stage": "margin", "files": ["margin/lit.frag"], "points": 5,\n  "views": {"lecture": -2}}]}',
+     "/stages/0/views/lecture (line 3): must be a number in [0, 1e+06], got -2"),
+    # Degenerate extra views.
+    (extra('{"name": "v", "eye": [0, 0.2, 0], "at": [0, 0.2, 0]}'),
+     "/extra_views/0/eye (line 3): the eye (0, 0.2, 0) is at the point it looks at (0, 0.2, 0)"),
+    (extra('{"name": "v", "eye": [0.3, 4, 0.2], "at": [0.3, 0, 0.2]}'),
+     "/extra_views/0/eye (line 3): the camera looks straight down"),
+    (extra('{"name": "v", "eye": [0.5, 0.3, 0.2]}'),
+     "/extra_views/0/eye (line 3): the eye (0.5, 0.3, 0.2) is inside or on 'standing cube' of scene slides"),
+    (extra('{"name": "v", "light": [0.5, 0.5, -0.5]}'),
+     "/extra_views/0/light (line 3): the light (0.5, 0.5, -0.5) is inside or on 'sphere' of scene slides"),
+    (extra('{"name": "v", "light": [1, 0, 1]}'),
+     "/extra_views/0/light (line 3): the light (1, 0, 1) is inside or on 'floor' of scene slides"),
+    (extra('{"name": "v", "fovy": 180}'), "/extra_views/0/fovy (line 3): must be a number in [1, 170], got 180"),
+    (extra('{"name": "v", "fovy": 0}'), "/extra_views/0/fovy (line 3): must be a number in [1, 170], got 0"),
 ]
+def run(args):
+    r = subprocess.run([exe] + args, capture_output=True, text=True, timeout=120)
+    return r.returncode, r.stderr.strip()
+
+def expect(k, args, path, want):
+    code, err = run(args)
+    assert code == 2, (k, code, err)
+    assert path in err and want in err, "case %s: %r does not say %r" % (k, err, want)
+    assert err.count("\n") == 0, "case %s: more than one line: %r" % (k, err)
+    print("ok:", err)
+
 for k, (text, want) in enumerate(cases):
     path = work + "/a%d.json" % k
     open(path, "w").write(text)
-    r = subprocess.run([exe, "check", "--assignment", path, "--shaders", work + "/s"],
-                       capture_output=True, text=True, timeout=120)
-    err = r.stderr.strip()
-    assert r.returncode == 2, (k, r.returncode, err)
-    assert path in err and want in err, "case %d: %r does not say %r" % (k, err, want)
-    assert err.count("\n") == 0, "case %d: more than one line: %r" % (k, err)
-    print("ok:", err)
+    expect(k, ["check", "--assignment", path, "--shaders", work + "/s"], path, want)
+
+# `release` refuses before it grades or writes anything.
+os.makedirs(work + "/full")
+open(work + "/full/x", "w").write("x")
+release_cases = [
+    # displaced is a graded view: accepted (the release stops at the full --out folder).
+    ('{"name": "x", "stages": [\n {"stage": "margin", "files": ["margin/lit.frag"], "points": 5,\n  "views": {"displaced": {"weight": 2, "visibility": "hidden"}}}]}',
+     work + "/full", "the folder exists and is not empty"),
+    # phong's lit pass has no region (it is the lighting every stage is graded against).
+    ('{"name": "x", "stages": [\n {"stage": "phong", "files": ["phong/lit.frag"], "points": 5}]}',
+     work + "/out", "phong/lit.frag: no BEGIN SOLUTION region"),
+]
+for k, (text, out, want) in enumerate(release_cases):
+    path = work + "/r%d.json" % k
+    open(path, "w").write(text)
+    expect("release %d" % k, ["release", "--assignment", path, "--out", out], "", want)
+    assert not os.path.exists(work + "/out"), "release %d wrote its folder" % k
+expect("solutions", ["release", "--assignment", work + "/r0.json", "--out", work + "/out",
+                     "--solutions", work + "/s"], "--solutions", "holds neither shaders_core/ nor shaders_legacy/")
 print("course_assignment_errors: ok")

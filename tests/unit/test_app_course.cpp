@@ -36,6 +36,43 @@ TEST(SolutionMarkers, MisplacedMarkersNameTheLine) {
     EXPECT_THROW(stripSolutions("a\n// STUB: b\n", "f"), AssignmentError);
 }
 
+// Every line that looks like a marker without being the exact form refuses, naming the line:
+// a misspelled BEGIN would otherwise ship its region's solution as ordinary code.
+TEST(SolutionMarkers, LookAlikesRefuseNamingTheLine) {
+    const char* lookAlikes[] = {
+        "//BEGIN SOLUTION",        "/* BEGIN SOLUTION */", "// begin solution",
+        "// BEGIN  SOLUTION",      "// BEGIN_SOLUTION",    "// BEGIN SOLUTION:",
+        "# BEGIN SOLUTION",        "// Begin Solution",    "x = 1; // BEGIN SOLUTION",
+        "// SOLUTION BEGIN",       "/// BEGIN SOLUTION",   "//  BEGIN SOLUTION here",
+        "// BEGINSOLUTION",        "// END-SOLUTION",      "//END SOLUTION",
+        "/* END SOLUTION */",      "// end solution",      "// END SOLUTIONS",
+        "//STUB: return 0.0;",     "// stub: return 0.0;", "// STUB return 0.0;",
+        "/* STUB: return 0.0; */", " * BEGIN SOLUTION",
+    };
+    for (const char* line : lookAlikes) {
+        std::string text = std::string("a\n  ") + line + "\n  secret();\n  // END SOLUTION\n";
+        try {
+            stripSolutions(text, "f.frag");
+            ADD_FAILURE() << "accepted: " << line;
+        } catch (const AssignmentError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("f.frag: line 2: '", 0), 0u) << e.what();
+            EXPECT_NE(std::string(e.what()).find("looks like a solution marker"), std::string::npos)
+                << e.what();
+        }
+    }
+    // The exact forms, with any indentation and trailing spaces, are markers.
+    EXPECT_EQ(stripSolutions("\t// BEGIN SOLUTION  \nx\n    // END SOLUTION\r\n// STUB: y\n", "f"),
+              "y\n");
+    // Comments that merely mention solutions are not markers.
+    std::string prose = "// the solution begins with the divide; the end of the solution is here\n";
+    EXPECT_EQ(stripSolutions(prose, "f"), prose);
+}
+
+TEST(SolutionMarkers, StubInsideARegionRefuses) {
+    EXPECT_THROW(stripSolutions("// BEGIN SOLUTION\n// STUB: x\n// END SOLUTION\n", "f"),
+                 AssignmentError);
+}
+
 TEST(SolutionMarkers, ShippedFilesWithoutMarkersUnchanged) {
     std::string text = "void main()\n{\n    gl_FragColor = vec4(1.0);\n}\n";
     EXPECT_EQ(stripSolutions(text, "f"), text);

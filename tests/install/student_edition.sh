@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# The student edition (docs/assignment.md, "A student edition"): the default `cmake --install`
+# ships both shader trees with every marked solution region stubbed and no line of any region
+# anywhere under the prefix (the program included); the installed program runs from it (a stage
+# draws its "not done yet" picture, a student's own solution is graded PASS at home) and cannot
+# release (no solutions); with the `solutions` component added, the marked trees are used again
+# (the lecture's stage passes, `release` works).
+#   student_edition.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "student edition test: FAIL: $*"; exit 1; }
+cmake --install "$build" --prefix "$tmp/p" >/dev/null
+exe=$tmp/p/bin/shadowlab
+data=$tmp/p/share/shadowlab
+[ -f "$data/shaders_core/margin/lit.frag" ] || fail "no shaders_core installed"
+[ ! -e "$data/solutions" ] || fail "the default install holds the solutions component"
+python3 - "$src" "$tmp/p" <<'PY' || fail "a solution line is installed"
+import os, re, sys
+src, prefix = sys.argv[1:3]
+lines, files = set(), 0
+for tree in ("shaders_core", "shaders_legacy"):
+    for d, _, names in os.walk(os.path.join(src, tree)):
+        for f in names:
+            regions = re.findall(r"// BEGIN SOLUTION\n(.*?)// END SOLUTION", open(os.path.join(d, f)).read(), re.S)
+            files += bool(regions)
+            for region in regions:
+                lines |= {l.strip() for l in region.splitlines()
+                          if len(l.strip()) >= 4 and not l.strip().startswith("//")}
+assert files >= 20 and len(lines) >= 40, (files, len(lines))
+found = []
+for d, _, names in os.walk(prefix):
+    for f in names:
+        data = open(os.path.join(d, f), "rb").read()
+        found += [(os.path.join(d, f), l) for l in lines if l.encode() in data]
+assert not found, found[:5]
+print("student edition: none of %d solution lines of %d marked files is installed" % (len(lines), files))
+PY
+run() { (cd / && env -u SHADOWLAB_DATA_DIR SHADOWLAB_NO_SOURCE_DIR=1 "$exe" "$@"); }
+# The stubs build and draw; the stage does not pass.
+run render --stage margin --size 64x48 --repeat 0 --out "$tmp/margin.png" >/dev/null ||
+  fail "the student edition's margin stage does not render"
+# A student's own work is graded at home against the same references as the instructor's (the
+# mirror's too, although its surface shaders are stubs here).
+printf '{"name": "margin", "stages": [{"stage": "margin", "files": ["margin/lit.frag"], "points": 10}]}' \
+  > "$tmp/margin.json"
+printf '{"name": "two", "stages": [{"stage": "margin", "files": ["margin/lit.frag"], "points": 10},
+  {"stage": "mirror", "files": ["mirror/surface.frag", "mirror/surface.vert"], "points": 10}]}' \
+  > "$tmp/two.json"
+mkdir -p "$tmp/handin/margin" "$tmp/handin/mirror"
+cp "$src/shaders_core/margin/lit.frag" "$tmp/handin/margin/"
+cp "$src/shaders_core/mirror/surface.frag" "$src/shaders_core/mirror/surface.vert" "$tmp/handin/mirror/"
+out=$(run check --assignment "$tmp/two.json" --shaders "$tmp/handin" --time-limit 300 \
+      --report "$tmp/two-report.json") ||
+  fail "a correct hand-in is not graded full marks in the student edition: $out"
+python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); assert r["score"] == r["max_score"] == 20, r["score"]' \
+  "$tmp/two-report.json" || fail "no full marks: $out"
+# Nothing to release from: the edition has no solution regions.
+set +e
+run release --assignment "$tmp/margin.json" --out "$tmp/rel" >/dev/null 2>"$tmp/err"
+code=$?
+set -e
+[ $code -eq 2 ] && grep -q "no BEGIN SOLUTION region" "$tmp/err" ||
+  fail "release in the student edition gave exit $code: $(cat "$tmp/err")"
+# The instructor's install: the solutions component beside it is what the program draws with.
+cmake --install "$build" --prefix "$tmp/p" --component solutions >/dev/null
+[ -f "$data/solutions/shaders_legacy/margin/lit.frag" ] || fail "the solutions component is not installed"
+out=$(run check --stage margin --time-limit 300) || fail "check --stage margin with the solutions: $out"
+run release --assignment "$tmp/margin.json" --out "$tmp/rel" --time-limit 300 >/dev/null ||
+  fail "release with the solutions component"
+grep -q "TODO" "$tmp/rel/shaders/margin/lit.frag" || fail "the release is not stubbed"
+echo "student edition test: ok"
