@@ -2,7 +2,12 @@
 """Runs the bad-input corpus (cases.txt plus the generated cases below) against the shadowlab
 executable and reports every failure, then a closing line `N passed, M failed`.
 
-usage: run_cases.py SHADOWLAB_EXE [--only TEXT]
+usage: run_cases.py SHADOWLAB_EXE [--only TEXT] [--times] [--time-scale K]
+
+--time-scale K: the executable does the same work K times slower (an instrumented build:
+scripts/sanitizers.sh), so each case's own bound is K times longer and a command that runs
+workers without a --time-limit of its own gets K times the program's default (read from its
+--help). A case that sets --time-limit keeps it: its outcome names that limit.
 """
 import copy
 import json
@@ -85,6 +90,8 @@ def run(exe, case):
         args = args.replace(key, value)
     if case.setup:
         args = case.setup(tmp, args)
+    args = scale_time(args)
+    timeout = case.timeout * TIME_SCALE
     target = out_path(args)
     existed = bool(target) and os.path.lexists(target)  # a case's own file: refused, kept
     before = os.listdir(tmp)
@@ -96,10 +103,10 @@ def run(exe, case):
         problems = []
         try:
             p = subprocess.run([exe] + shlex.split(args), capture_output=True, text=True,
-                               errors="replace", timeout=case.timeout,
+                               errors="replace", timeout=timeout,
                                preexec_fn=case.preexec, env=case.env, stdin=stdin)
         except subprocess.TimeoutExpired:
-            return [f"did not finish within {case.timeout} s (hang?)"], args
+            return [f"did not finish within {timeout:g} s (hang?)"], args
     seconds = time.monotonic() - start
     CASE_SECONDS[case.name] = seconds
     if case.outcomes and p.returncode in case.outcomes:
@@ -147,6 +154,28 @@ def run(exe, case):
 
 
 CASE_SECONDS = {}  # each case's wall time, printed with --times
+TIME_SCALE = 1.0  # --time-scale
+WORKER_COMMANDS = ("check", "render", "grade", "example")  # the ones with --time-limit
+DEFAULT_TIME_LIMIT = None  # the program's, from its --help (with --time-scale only)
+
+
+def default_time_limit(exe):
+    """The worker's default time limit in seconds, as `check --help` states it."""
+    text = subprocess.run([exe, "check", "--help"], capture_output=True, text=True).stdout
+    found = re.search(r"--time-limit.*?\(default (\d+(?:\.\d+)?)", text, re.S)
+    if not found:
+        sys.exit("run_cases: `check --help` states no default for --time-limit: "
+                 "--time-scale cannot scale it")
+    return float(found.group(1))
+
+
+def scale_time(args):
+    """args with the scaled default --time-limit where the command runs workers without one."""
+    words = shlex.split(args)
+    if TIME_SCALE == 1 or not words or words[0] not in WORKER_COMMANDS or \
+            any(w == "--time-limit" or w.startswith("--time-limit=") for w in words):
+        return args
+    return args + f" --time-limit {DEFAULT_TIME_LIMIT * TIME_SCALE:g}"
 
 
 class Completed:
@@ -1158,9 +1187,14 @@ EXE = None  # the shadowlab under test
 
 
 def main():
-    global EXE
+    global EXE, TIME_SCALE, DEFAULT_TIME_LIMIT
     exe = EXE = sys.argv[1]
     only = sys.argv[sys.argv.index("--only") + 1] if "--only" in sys.argv else ""
+    if "--time-scale" in sys.argv:
+        TIME_SCALE = float(sys.argv[sys.argv.index("--time-scale") + 1])
+        DEFAULT_TIME_LIMIT = default_time_limit(exe)
+        print(f"run_cases: time scale {TIME_SCALE:g}: worker default "
+              f"{DEFAULT_TIME_LIMIT:g} s -> {DEFAULT_TIME_LIMIT * TIME_SCALE:g} s")
     cases = (parse_cases(os.path.join(HERE, "cases.txt")) + generated_cases() +
              hostile_cases() + attack_cases() + intake_cases(sys.modules[__name__]))
     passed = failed = skipped = 0
