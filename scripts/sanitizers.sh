@@ -4,8 +4,8 @@
 # Mesa's own leaks are suppressed by tests/sanitizers/lsan.supp; any report about our code fails.
 # The instrumented program does the same work more slowly, so its workers' time budget follows:
 # the corpus runs with --time-scale $SANITIZER_TIME_SCALE (default below, measured in
-# docs/robustness.md "Sanitizers"): each case's bound and the worker's default --time-limit
-# times that factor.
+# docs/robustness.md "Sanitizers"): every case's bound and every worker time limit (given or
+# the default) times that factor.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -46,6 +46,6 @@ done
 # The bad-input corpus again: every error path under the sanitizers (a report changes the exit
 # code or shows on stderr, and the runner fails the case).
 python3 tests/bad_inputs/run_cases.py build-asan/shadowlab \
-  --time-scale "${SANITIZER_TIME_SCALE:-4}" || failed=1
+  --time-scale "${SANITIZER_TIME_SCALE:-6}" || failed=1
 echo "sanitizers: done in $((SECONDS - start)) s"
 exit $failed
