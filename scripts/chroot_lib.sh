@@ -72,16 +72,16 @@ chroot_mount() {  # chroot_mount TARGET MOUNT-ARGS...: mounts and remembers it f
   chroot_mounted+=("$target")
 }
 
-# chroot_make SUITE CACHE-NAME: debootstraps SUITE (bookworm, trixie, testing) into a new $root,
-# with the .deb caches of CACHE-NAME (suites that are the same system share them) and the
-# compiler cache of $chroot_name, mounts /proc, /sys, /dev, and starts the apt relay.
+# chroot_make SUITE DEB-CACHE CCACHE: debootstraps SUITE (bookworm, trixie, testing) into a new
+# $root with the .deb caches named DEB-CACHE (suites that are the same system share them) and
+# the compiler cache named CCACHE, mounts /proc, /sys, /dev, and starts the apt relay.
 chroot_make() {
-  local suite=$1 cachename=$2
+  local suite=$1 cachename=$2 ccachename=$3
   local mirror=${SHADOWLAB_DEBIAN_MIRROR:-$(chroot_host_mirror)}
   [ -n "$mirror" ] || { echo "$chroot_name: no http Debian archive in /etc/apt/sources*; set SHADOWLAB_DEBIAN_MIRROR" >&2; exit 3; }
   local cache=${SHADOWLAB_CHROOT_CACHE:-/var/cache/shadowlab-chroot}
-  mkdir -p "$cache/debootstrap-$cachename" "$cache/apt-$cachename/partial" "$cache/ccache-$chroot_name"
-  root=$(mktemp -d "/var/tmp/shadowlab-$chroot_name.XXXXXX")
+  mkdir -p "$cache/debootstrap-$cachename" "$cache/apt-$cachename/partial" "$cache/ccache-$ccachename"
+  root=$(mktemp -d "/var/tmp/shadowlab-$ccachename.XXXXXX")
   trap chroot_cleanup EXIT
   trap 'exit 130' INT TERM
   # testing: this bookworm debootstrap has no script for the newest codename; sid's fits.
@@ -101,7 +101,7 @@ chroot_make() {
   chroot_mount /dev/pts --bind /dev/pts
   chroot_mount /dev/shm -t tmpfs tmpfs
   chroot_mount /var/cache/apt/archives --bind "$cache/apt-$cachename"
-  chroot_mount /root/.ccache --bind "$cache/ccache-$chroot_name"
+  chroot_mount /root/.ccache --bind "$cache/ccache-$ccachename"
   local hostport=${mirror#http://}
   hostport=${hostport%%/*}
   local host=${hostport%%:*} port=80
@@ -117,8 +117,8 @@ chroot_make() {
   if [ "${SHADOWLAB_CHROOT_CCACHE:-1}" = 1 ]; then
     chroot_env+=(CCACHE_DIR=/root/.ccache CCACHE_MAXSIZE=2G
                  CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache)
-    chroot_run / 'DEBIAN_FRONTEND=noninteractive apt-get update -q >/dev/null &&
-      DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends ccache >/dev/null' ||
+    chroot_run / 'DEBIAN_FRONTEND=noninteractive apt-get update -q >/dev/null 2>&1 &&
+      DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends ccache >/dev/null 2>&1' ||
       { echo "$chroot_name: could not install ccache (the harness's compiler cache)" >&2; exit 3; }
   fi
 }

@@ -31,7 +31,7 @@ mkdir -p "$logs"
 log=$logs/$suite.log
 : >"$log"
 
-chroot_make "$suite" "$suite"
+chroot_make "$suite" "$suite" "$suite"
 git clone --quiet --no-hardlinks "$repo" "$root/root/shadowlab"
 chroot_say "chroot ready, $(git -C "$repo" rev-parse --short HEAD) cloned"
 

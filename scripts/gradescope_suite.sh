@@ -70,7 +70,7 @@ chroot_extra_cleanup() {
   return 0
 }
 
-chroot_make bookworm bookworm
+chroot_make bookworm bookworm gradescope
 ag=$root/autograder
 mkdir -p "$ag/source" "$ag/submission" "$ag/results"
 # Unpacked with the modes the zip records (Gradescope keeps setup.sh's and run_autograder's).
