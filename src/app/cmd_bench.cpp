@@ -197,9 +197,18 @@ int runInstructionsChild(const BenchArgs& a) {
 }
 
 // Runs this program again under callgrind and fills each counted result's instructions.
-void countInstructions(const BenchArgs& a, std::vector<Measured>& results) {
+// Before any timing: what --instructions needs (valgrind, and this build marking the frames).
+void checkInstructionsPossible() {
     if (std::system("command -v valgrind >/dev/null 2>&1") != 0)
         throw UsageError("--instructions needs valgrind (apt-get install valgrind)");
+    if (!callgrindMarkersBuiltIn())
+        throw UsageError(
+            "--instructions: this build has no valgrind/callgrind.h (it marks the counted "
+            "frames): rebuild now that valgrind is installed (bash scripts/build.sh configures "
+            "again)");
+}
+
+void countInstructions(const BenchArgs& a, std::vector<Measured>& results) {
     std::string dir = a.out + "/callgrind";
     makeOutputDir(dir);
     std::string out = dir + "/frames.out";
@@ -251,6 +260,7 @@ int runBench(const BenchArgs& a) {
                         : throw UsageError("--glsl: '" + a.glsl + "' is not one of core, legacy");
     Backend backend = toBackend(a.backend);
     if (!a.instructionsChild.empty()) return runInstructionsChild(a);
+    if (a.instructions) checkInstructionsPossible();
     int frames = a.frames > 0 ? a.frames : a.quick ? 3 : 40;
     int warmup = a.warmup > 0 ? a.warmup : a.quick ? 1 : 3;
     int blocks = std::min(frames, a.blocks > 0 ? a.blocks : a.quick ? 3 : 10);

@@ -4,9 +4,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <sstream>
 
-#if __has_include(<valgrind/callgrind.h>)  // header only: the macros are no-ops outside valgrind
-#include <valgrind/callgrind.h>
-#define SL_HAVE_CALLGRIND 1
+// Set by CMake when it finds valgrind's header at configure time (CMakeLists.txt: a check that
+// runs again at every configure, so the build that follows installing valgrind has it).
+#ifdef SHADOWLAB_HAVE_CALLGRIND
+#include <valgrind/callgrind.h>  // header only: the macros are no-ops outside valgrind
 #endif
 
 namespace sl {
@@ -113,8 +114,16 @@ PassSamples BenchRig::time(int warmup, int frames, bool movingLight) {
     return {frame, shadow, lit, mirror, r.stats.shadowMapRenders - rendersBefore};
 }
 
+bool callgrindMarkersBuiltIn() {
+#ifdef SHADOWLAB_HAVE_CALLGRIND
+    return true;
+#else
+    return false;
+#endif
+}
+
 unsigned countedFrames(BenchRig& rig, int frames, bool movingLight) {
-#ifdef SL_HAVE_CALLGRIND
+#ifdef SHADOWLAB_HAVE_CALLGRIND
     CALLGRIND_TOGGLE_COLLECT;  // on (the child runs with --collect-atstart=no)
     PassSamples counted = rig.time(0, frames, movingLight);
     CALLGRIND_TOGGLE_COLLECT;            // off

@@ -78,5 +78,8 @@ class BenchRig : public Evaluator {
 // of the rig's current configuration, collected between two callgrind client requests and
 // dumped to a file of their own (valgrind's header; without it nothing is counted).
 unsigned countedFrames(BenchRig& rig, int frames, bool movingLight);  // returns the map renders
+// Whether this build was compiled with valgrind's callgrind.h: without it countedFrames marks
+// nothing and callgrind would count 0 instructions.
+bool callgrindMarkersBuiltIn();
 
 }  // namespace sl

@@ -2,9 +2,12 @@
 
 #include <archive.h>
 #include <archive_entry.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <sstream>
 
 #include "io/files.h"
 #include "scene/scene_json.h"
@@ -15,9 +18,10 @@ namespace fs = std::filesystem;
 
 std::string autograderSetupScript() {
     return R"SH(#!/usr/bin/env bash
-# Gradescope runs this once to build the image (Ubuntu 22.04 base): the packages, then shadowlab.
+# Gradescope runs this once, as root, to build the image (Ubuntu 22.04 base): the packages
+# (scripts/deps.sh), then the program from the sources beside it (the files its build reads).
 set -euo pipefail
-cd /autograder/source/shadowlab
+cd "$(dirname "$0")/shadowlab"
 bash scripts/deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF
 cmake --build build -j"$(nproc)" --target shadowlab
@@ -70,14 +74,56 @@ struct Writer {
 
 }  // namespace
 
+// The source kit's list: source_kit.txt, written by the build (cmake/source_kit.py) and
+// installed with the instructor's `solutions` component. An installed copy has it in
+// share/shadowlab/solutions (which mirrors the source tree; the student edition has none); the
+// build tree beside the program, its files in the sources.
+SourceKit findSourceKit() {
+    std::string kitRoot = dataDir() + "/solutions";
+    std::string installed = kitRoot + "/source_kit.txt";
+    if (fs::is_regular_file(installed)) return {installed, kitRoot};
+    char exe[4096] = {0};
+    ssize_t length = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+    std::string beside =
+        length > 0 ? fs::path(std::string(exe, length)).parent_path().string() + "/source_kit.txt"
+                   : std::string();
+    if (!beside.empty() && fs::is_regular_file(beside)) return {beside, SHADOWLAB_SOURCE_DIR};
+    throw UsageError(
+        "release --gradescope: no source_kit.txt (the files building shadowlab "
+        "reads) in " +
+        printableName(kitRoot) +
+        " nor beside the program: build it (`cmake --build build`), or install the "
+        "instructor's component (`cmake --install build --component solutions`)");
+}
+
+std::vector<std::string> readSourceKit(const SourceKit& kit) {
+    std::string text;
+    std::string err = readRegularFile(kit.list, 1u << 20, text);
+    if (!err.empty()) throw UsageError("release --gradescope: " + err);
+    std::vector<std::string> files;
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (line.empty()) continue;
+        fs::path p(line);
+        bool inside = p.is_relative() && std::none_of(p.begin(), p.end(), [](const fs::path& part) {
+                          return part == "..";
+                      });
+        if (!inside)
+            throw UsageError("release --gradescope: " + printableName(kit.list) + ": '" +
+                             printableName(line) + "' is not a path inside the sources");
+        files.push_back(line);
+    }
+    if (files.empty())
+        throw UsageError("release --gradescope: " + printableName(kit.list) + " lists no file");
+    return files;
+}
+
 std::string writeAutograderZip(const Assignment& a, const std::string& assignmentPath,
                                const std::string& outDir) {
     (void)a;
-    std::string source = dataDir();
-    if (!fs::exists(source + "/CMakeLists.txt") || !fs::exists(source + "/src"))
-        throw UsageError(
-            "release --gradescope: needs shadowlab's source tree (CMakeLists.txt, src/) in " +
-            printableName(source) + "; run it from a checkout");
+    SourceKit kit = findSourceKit();
+    std::vector<std::string> files = readSourceKit(kit);
     std::string assignmentText;
     std::string err = readRegularFile(assignmentPath, 1u << 20, assignmentText);
     if (!err.empty()) throw UsageError("--assignment: " + err);
@@ -89,25 +135,16 @@ std::string writeAutograderZip(const Assignment& a, const std::string& assignmen
     w.add("setup.sh", autograderSetupScript(), 0755);
     w.add("run_autograder", autograderRunScript(), 0755);
     w.add("assignment.json", assignmentText, 0644);
-    for (const char* top : {"CMakeLists.txt", "CMakePresets.json", "src", "shaders_core",
-                            "shaders_legacy", "scenes", "scripts", "slides_examples"}) {
-        fs::path p = fs::path(source) / top;
-        std::vector<fs::path> files;
-        if (fs::is_regular_file(p)) {
-            files.push_back(p);
-        } else if (fs::is_directory(p)) {
-            for (const auto& e : fs::recursive_directory_iterator(p))
-                if (e.is_regular_file() && !e.is_symlink()) files.push_back(e.path());
-        }
-        std::sort(files.begin(), files.end());
-        for (const fs::path& f : files) {
-            std::string text;
-            err = readRegularFile(f.string(), 16u << 20, text);
-            if (!err.empty()) throw UsageError("release --gradescope: " + f.string() + ": " + err);
-            bool executable =
-                (fs::status(f).permissions() & fs::perms::owner_exec) != fs::perms::none;
-            w.add("shadowlab/" + fs::relative(f, source).string(), text, executable ? 0755 : 0644);
-        }
+    for (const std::string& f : files) {
+        std::string path = kit.root + "/" + f;
+        std::string text;
+        err = readRegularFile(path, 16u << 20, text);
+        if (!err.empty())
+            throw UsageError("release --gradescope: " + err + " (listed in " +
+                             printableName(kit.list) + "; build or install again)");
+        bool executable =
+            (fs::status(path).permissions() & fs::perms::owner_exec) != fs::perms::none;
+        w.add("shadowlab/" + f, text, executable ? 0755 : 0644);
     }
     if (archive_write_close(w.a.get()) != ARCHIVE_OK)
         throw UsageError("release: cannot finish " + printableName(zip));

@@ -6,13 +6,23 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "course/assignment.h"
 
 namespace sl {
 
-// Writes OUTDIR/autograder.zip; returns its name. Needs the source tree (CMakeLists.txt beside
-// the data), as a checkout has it.
+// The files the program's build reads (cmake/source_kit.py): `list` names them relative to
+// `root`. Found beside the installed data, else beside the program in its build tree.
+struct SourceKit {
+    std::string list;
+    std::string root;
+};
+SourceKit findSourceKit();
+std::vector<std::string> readSourceKit(const SourceKit& kit);
+
+// Writes OUTDIR/autograder.zip: setup.sh, run_autograder, the assignment and the source kit
+// under shadowlab/. Returns its name.
 std::string writeAutograderZip(const Assignment& a, const std::string& assignmentPath,
                                const std::string& outDir);
 

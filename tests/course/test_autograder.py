@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """ctest course_autograder: `release --gradescope` writes autograder.zip with setup.sh and
 run_autograder at its root; run_autograder is run in a simulated /autograder tree (its root in
-AUTOGRADER_ROOT, the program built here in SHADOWLAB: setup.sh's build is the platform issue's
-to test on Ubuntu 22.04) for a nested zip, a missing stage, a broken shader and correct work;
+AUTOGRADER_ROOT, the program built here in SHADOWLAB: setup.sh's build from the zip, in a fresh
+chroot and a 768 MB cgroup, is CI's scripts/gradescope_suite.sh; the zip's content is
+tests/install/autograder_zip.sh's) for a nested zip, a missing stage, a broken shader and correct work;
 each results.json has Gradescope's documented fields (score, max_score, output, visibility,
 stdout_visibility, tests with name, score, max_score, status, visibility, output) and the points
 make_class.py derived from the assignment.  usage: test_autograder.py SHADOWLAB REPO WORKDIR"""
@@ -18,7 +19,8 @@ subprocess.run([exe, "release", "--assignment", lab, "--out", work + "/release",
 z = zipfile.ZipFile(work + "/release/autograder.zip")
 names = z.namelist()
 for required in ("setup.sh", "run_autograder", "assignment.json", "shadowlab/CMakeLists.txt",
-                 "shadowlab/scripts/deps.sh", "shadowlab/src/course/assignment.cpp"):
+                 "shadowlab/cmake/glad.cmake", "shadowlab/scripts/deps.sh",
+                 "shadowlab/src/course/assignment.cpp"):
     assert required in names, required
 for script in ("setup.sh", "run_autograder"):
     mode = z.getinfo(script).external_attr >> 16
