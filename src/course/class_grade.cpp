@@ -24,6 +24,7 @@
 #include "course/student_grade.h"
 #include "io/content_hash.h"
 #include "io/files.h"
+#include "stages/expectations.h"
 
 namespace sl {
 
@@ -94,6 +95,19 @@ std::string duration(double s) {
     return t;
 }
 
+// What a passed solution check saw: the assignment's text, the solution trees' files and the
+// expectations they were graded by. A rerun (a class graded in parts, a regrade, a platform
+// failure retried) with the same key skips the check: the solution earns the same points.
+std::string solutionCheckKey(const std::string& assignmentHash, const SolutionTrees& trees) {
+    return assignmentHash + " " + contentHash(trees.root("core")) + " " +
+           contentHash(trees.root("legacy")) + " " + handInHash(expectationsPath());
+}
+
+bool solutionCheckPassed(const std::string& out, const std::string& key) {
+    std::string text;
+    return readRegularFile(out + "/solution_check.txt", 4096, text).empty() && text == key + "\n";
+}
+
 }  // namespace
 
 int runClassGrade(const ClassGradeArgs& args) {
@@ -117,14 +131,26 @@ int runClassGrade(const ClassGradeArgs& args) {
     if (entries.empty())
         throw UsageError("grade: " + printableName(args.submissions) + " holds no submission");
     SolutionTrees trees = solutionTrees(args.solutions);
-    std::cout << "grading the solution (" << trees.describe() << ") by "
-              << printableName(args.assignment) << " first\n"
-              << std::flush;
-    verifySolution(a, trees, args.settings);
+    const std::string checkKey = solutionCheckKey(assignmentHash, trees);
+    const bool checked = solutionCheckPassed(args.out, checkKey);
+    if (checked) {
+        std::cout << "the solution (" << trees.describe() << ") passed "
+                  << printableName(args.assignment) << " in an earlier run: not graded again\n";
+    } else {
+        std::cout << "grading the solution (" << trees.describe() << ") by "
+                  << printableName(args.assignment) << " first\n"
+                  << std::flush;
+        verifySolution(a, trees, args.settings);
+    }
     for (const char* sub : {"", "/students", "/feedback", "/work", "/logs"}) {
         std::error_code ec;
         fs::create_directories(args.out + sub, ec);
         if (ec) throw UsageError("--out: cannot create " + printableName(args.out + sub));
+    }
+    if (!checked) {
+        std::string line = checkKey + "\n";
+        std::string err = writeFileAtomically(args.out + "/solution_check.txt", line.data(), line.size());
+        if (!err.empty()) throw std::runtime_error("grade: " + err);
     }
     std::set<std::string> taken;
     std::vector<std::string> names, files;

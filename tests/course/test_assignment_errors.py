@@ -16,7 +16,7 @@ MARGIN = '{"name": "x", "stages": [\n {"stage": "margin", "files": ["margin/lit.
 def extra(view):
     return '{"name": "x", "stages": [' + GOOD_STAGE + '],\n "extra_views": [\n  ' + view + ']}'
 ALL_VIEWS_ZERO = ', '.join('"%s": 0' % v for v in
-                           ["lecture", "cube-on-cube", "sphere-on-cube", "cube-on-sphere", "grazing", "displaced"])
+                           ["lecture", "cube-on-cube", "sphere-on-cube", "cube-on-sphere", "grazing", "displaced", "scene"])
 cases = [
     ('{"name": "x",\n "stages": [\n  {"stage": "rgbb", "files": ["rgb/lit.frag"], "points": 10}\n]}',
      "/stages/0/stage (line 3): unknown stage 'rgbb'"),

@@ -2,9 +2,11 @@
 """ctest course_not_graded: a platform failure is never a score, and a rerun grades what changed.
 A class of three (ann correct, bo's shader does not build, cy hands in a README) graded by a
 one-stage assignment:
-  1. under a memory limit too small for our own shaders (--memory-limit 100): the rendered
-     students are NOT GRADED (no points in the record, the CSV or the page), the missing one is
-     graded, the run says "not graded: rerun" and exits 3;
+  1. under a memory limit too small for our own shaders (--memory-limit 100): the solution check
+     cannot grade the solution, so nothing is graded or written (exit 3); once the solution
+     passed (a run with cy alone writes OUT/solution_check.txt), the check is not repeated and
+     the rendered students are NOT GRADED (no points in the record, the CSV or the page), the
+     run says "not graded: rerun" and exits 3;
   2. a rerun grades exactly those again ("not graded last time") and exits 0;
   3. a rerun with nothing changed grades nobody;
   4. a changed hand-in (bo fixes his shader) is regraded, alone;
@@ -57,8 +59,20 @@ def stamp(name):
     return os.stat(os.path.join(out, "students", name + ".json")).st_mtime_ns
 
 
-# 1. Our shaders cannot run in 100 MB: NOT GRADED, never a score.
+# 1. Our shaders cannot run in 100 MB: the solution check stops before anything is written.
+r = subprocess.run([exe, "grade", work + "/class", "--assignment", lab, "--out", out, "--seed", SEED,
+                    "--memory-limit", "100"], capture_output=True, text=True, timeout=900)
+assert r.returncode == 3 and "could not be graded" in r.stderr, (r.returncode, r.stderr[-2000:])
+assert not os.path.exists(out), os.listdir(out)
+# The solution passes at the default budgets (cy alone, into the same --out), once.
+os.makedirs(work + "/first")
+shutil.copytree(work + "/class/cy", work + "/first/cy")
+r = subprocess.run([exe, "grade", work + "/first", "--assignment", lab, "--out", out, "--seed", SEED],
+                   capture_output=True, text=True, timeout=900)
+assert r.returncode == 0 and "grading the solution" in r.stdout, (r.returncode, r.stdout, r.stderr)
+# Now the rendered students: NOT GRADED, never a score; the solution is not graded again.
 text = grade("--memory-limit", "100", code=3)
+assert "passed" in text and "in an earlier run: not graded again" in text, text
 assert "graded 1 of 3; 2 not graded: rerun" in text, text
 for name in ("ann", "bo"):
     rec = record(name)
@@ -108,6 +122,7 @@ assignment["stages"][0]["points"] = 20
 json.dump(assignment, open(lab, "w"))
 text = grade()
 assert "0 already graded, 3 to grade (3 the assignment changed)" in text, text
+assert "grading the solution" in text, "a changed assignment's solution was not checked again"
 assert record("ann")["max_score"] == 20
 
 # 6. check --assignment and grade: the same rows, points and exit code for one student.

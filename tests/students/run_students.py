@@ -25,7 +25,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 VERDICTS = ("PASS", "FAIL", "ERROR", "MISSING")
 # How bad a verdict is; a stage is as bad as its worst row.
-SEVERITY = {"SKIP": 0, "PASS": 1, "FAIL": 2, "ERROR": 3, "TIMEOUT": 3, "CRASH": 3, "MISSING": 3}
+SEVERITY = {"SKIP": 0, "PASS": 1, "FAIL": 2, "ERROR": 3, "TIMEOUT": 3, "CRASH": 3, "MISSING": 3,
+            "NOT GRADED": 4}
 # check's one line for a submission that replaces no shipped file at all (exit 2, no report):
 # for the stage graded, nothing was handed in.
 NOTHING_REPLACED = "no file replaces a shipped shader"
@@ -116,7 +117,7 @@ def grade(case, exe, work):
     rows = []
     if os.path.exists(report):
         with open(report) as f:
-            rows = rows_of(json.load(f).get("results", []), case["stage"])
+            rows = rows_of(json.load(f).get("stages", []), case["stage"])  # report v2
     if not rows:  # no report: the exit code is all there is (docs/check.md)
         if proc.returncode == 2:
             if any(NOTHING_REPLACED in line for line in output):
