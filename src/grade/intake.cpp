@@ -230,14 +230,22 @@ std::string nearMiss(const std::string& path, const std::map<std::string, std::s
 }  // namespace
 
 // Editor and archive leftovers: never a shader, never mentioned.
-bool isJunkName(const std::string& name) {
-    if (name.empty() || name[0] == '.') return true;  // .DS_Store, .lit.frag.swp, .git, ._x
-    if (name == "__MACOSX" || name == "Thumbs.db" || name == "desktop.ini") return true;
-    if (name.back() == '~') return true;  // emacs, gedit backups
-    if (name.size() > 1 && name[0] == '#' && name.back() == '#') return true;  // emacs autosave
+std::string junkReason(const std::string& name) {
+    if (name.empty()) return "no name";
+    const std::string low = lower(name);
+    if (low == "__macosx" || low == "thumbs.db" || low == "desktop.ini" || low == ".ds_store" ||
+        low.rfind("._", 0) == 0)
+        return "operating-system leftovers";
+    if (name[0] == '.') return "a hidden name";           // .lit.frag.swp, .git, .hidden
+    if (name.back() == '~') return "an editor's backup";  // emacs, gedit
+    if (name.size() > 1 && name[0] == '#' && name.back() == '#') return "an editor's autosave";
     for (const char* ext : {".swp", ".swo", ".bak", ".orig"})
-        if (endsWith(lower(name), ext)) return true;
-    return false;
+        if (endsWith(low, ext)) return "an editor's backup";
+    return "";
+}
+
+bool isJunkName(const std::string& name) {
+    return !junkReason(name).empty();
 }
 
 std::set<std::string> shippedFiles(const std::string& treeRoot) {

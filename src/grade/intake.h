@@ -43,7 +43,13 @@ struct Submission {
 
 // Editor and archive leftovers (`__MACOSX`, `.DS_Store` and other hidden names, `*~`, `#x#`,
 // `.swp`, `.bak`...): never a shader, never mentioned.
+// The one junk list, inside a submission and at the class level alike.
 bool isJunkName(const std::string& name);
+
+// Why `name` is junk, in a few words ("a hidden name", "an editor's backup", "operating-system
+// leftovers"), or "" when it is not: what the class page and grade's summary say of an entry
+// left out.
+std::string junkReason(const std::string& name);
 
 // The relative paths of every shipped file under `treeRoot` (e.g. "margin/lit.frag").
 std::set<std::string> shippedFiles(const std::string& treeRoot);
