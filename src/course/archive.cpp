@@ -3,6 +3,8 @@
 #include <archive.h>
 #include <archive_entry.h>
 #include <fcntl.h>
+#include <limits.h>
+#include <locale.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -18,8 +20,9 @@ namespace {
 // "" when `name` is a relative path of plain parts; else why not.
 std::string pathProblem(const std::string& name) {
     if (name.empty()) return "an entry without a name";
-    if (name[0] == '/' || name.find('\\') != std::string::npos ||
-        name.find(':') != std::string::npos)
+    // ':' is an ordinary character here ("Screen Shot 10:30.png"); '\\' would be a folder on
+    // the student's Windows, so it is not taken as part of a name.
+    if (name[0] == '/' || name.find('\\') != std::string::npos)
         return "'" + printableName(name) + "' is not a plain relative path";
     std::size_t start = 0;
     while (start <= name.size()) {
@@ -51,10 +54,51 @@ bool makeParents(const std::string& root, const std::string& rel) {
     return true;
 }
 
+// The longest part of `name` exceeds what a file name may hold (NAME_MAX bytes).
+bool partTooLong(const std::string& name) {
+    std::size_t start = 0;
+    while (start <= name.size()) {
+        std::size_t end = name.find('/', start);
+        if (end == std::string::npos) end = name.size();
+        if (end - start > NAME_MAX) return true;
+        start = end + 1;
+    }
+    return false;
+}
+
+// While alive, this thread reads names as UTF-8 (libarchive converts through the thread's
+// locale: under the C locale a non-ASCII name cannot be converted and comes back empty).
+class Utf8Names {
+  public:
+    Utf8Names() {
+        utf8_ = ::newlocale(LC_CTYPE_MASK, "C.UTF-8", nullptr);
+        if (utf8_) previous_ = ::uselocale(utf8_);
+    }
+    ~Utf8Names() {
+        if (!utf8_) return;
+        ::uselocale(previous_);
+        ::freelocale(utf8_);
+    }
+    Utf8Names(const Utf8Names&) = delete;
+    Utf8Names& operator=(const Utf8Names&) = delete;
+
+  private:
+    locale_t utf8_ = nullptr, previous_ = nullptr;
+};
+
+// The entry's name as UTF-8 (the zip's UTF-8 flag, else as stored), or its bytes as stored.
+std::string entryName(archive_entry* entry) {
+    if (const char* utf8 = archive_entry_pathname_utf8(entry)) return utf8;
+    const char* raw = archive_entry_pathname(entry);
+    return raw ? raw : "";
+}
+
 }  // namespace
 
-std::string unpackZip(const std::string& zip, const std::string& target,
-                      const UnpackLimits& limits) {
+std::string unpackZip(const std::string& zip, const std::string& target, const UnpackLimits& limits,
+                      std::vector<std::string>* notes) {
+    const Utf8Names utf8Names;
+    std::size_t leftOut = 0;
     struct stat st;
     if (::stat(zip.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return "not a regular file";
     if (std::size_t(st.st_size) > limits.maxArchiveBytes)
@@ -70,16 +114,26 @@ std::string unpackZip(const std::string& zip, const std::string& target,
     for (;;) {
         int status = archive_read_next_header(a.get(), &entry);
         if (status == ARCHIVE_EOF) break;
+        if (archive_read_has_encrypted_entries(a.get()) > 0 && status != ARCHIVE_OK &&
+            status != ARCHIVE_WARN)
+            return "the archive is encrypted: hand it in without a password";
         if (status != ARCHIVE_OK && status != ARCHIVE_WARN)
             return std::string("a damaged archive (") + archive_error_string(a.get()) + ")";
         if (++entries > limits.maxEntries)
             return "more than " + std::to_string(limits.maxEntries) + " entries";
-        const char* raw = archive_entry_pathname(entry);
-        std::string name = raw ? raw : "";
+        std::string name = entryName(entry);
         while (name.size() > 1 && name.back() == '/') name.pop_back();
         while (name.rfind("./", 0) == 0) name = name.substr(2);
         std::string problem = pathProblem(name);
         if (!problem.empty()) return problem;
+        if (archive_entry_is_encrypted(entry))
+            return "'" + printableName(name) + "' is encrypted: hand it in without a password";
+        if (partTooLong(name)) {  // never a shipped file's name: left out, said once per entry
+            if (notes && ++leftOut <= 5)
+                notes->push_back("'" + printableName(name.substr(0, 60)) +
+                                 "...' left out: its name is too long for a file name");
+            continue;
+        }
         if (archive_entry_hardlink(entry) || archive_entry_symlink(entry))
             return "'" + printableName(name) + "' is a link (links are not accepted)";
         mode_t type = archive_entry_filetype(entry);
@@ -124,6 +178,8 @@ std::string unpackZip(const std::string& zip, const std::string& target,
         ::close(fd);
         if (!err.empty()) return err;
     }
+    if (notes && leftOut > 5)
+        notes->push_back(std::to_string(leftOut - 5) + " more entries left out: names too long");
     return "";
 }
 
