@@ -3,7 +3,9 @@
 #include <filesystem>
 #include <sstream>
 
+#include "course/class_entries.h"
 #include "io/files.h"
+#include "scene/scene_json.h"
 
 namespace sl {
 
@@ -121,6 +123,18 @@ std::string stripSolutions(const std::string& text, const std::string& origin,
 
 std::vector<std::string> writeRelease(const Assignment& a, const std::string& assignmentPath,
                                       const std::string& outDir) {
+    // The release is never written into what it is made from (release --gradescope packs these
+    // folders: a release inside them would pack itself), nor over the data tree.
+    const std::string data = dataDir();
+    if (liesWithin(data, outDir))
+        throw UsageError("release --out " + printableName(outDir) + ": holds shadowlab's data (" +
+                         printableName(data) + "): give a folder outside it");
+    for (const char* top : {"src", "shaders_core", "shaders_legacy", "scenes", "scripts",
+                            "slides_examples", "assignments", "cmake", "docs", "tests"})
+        if (liesWithin(outDir, data + "/" + top))
+            throw UsageError("release --out " + printableName(outDir) + ": lies inside " +
+                             printableName(data + "/" + top) +
+                             " (what the release is made from): give a folder outside it");
     std::error_code ec;
     if (std::filesystem::exists(outDir, ec) && !std::filesystem::is_empty(outDir, ec))
         throw UsageError("release --out " + printableName(outDir) +
