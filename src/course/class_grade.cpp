@@ -86,8 +86,9 @@ std::string skippedList(const ClassListing& listing) {
     return list;
 }
 
-// One grade run per --out at a time: an flock held until the run ends (its jobs inherit it), the
-// holder's pid written in the lock file for the refusal to name.
+// One grade run per --out at a time: an flock held by the run's own process until it ends (its
+// jobs let go of their copy, so a killed run frees --out at once), the holder's pid written in
+// the lock file for the refusal to name.
 class OutLock {
   public:
     explicit OutLock(const std::string& out) {
@@ -110,6 +111,10 @@ class OutLock {
             pid.clear();  // no pid to name: the lock holds all the same
     }
     ~OutLock() { ::close(fd_); }
+    void closeInJob() {  // in a forked job: the lock stays the parent's alone
+        ::close(fd_);
+        fd_ = -1;
+    }
     OutLock(const OutLock&) = delete;
     OutLock& operator=(const OutLock&) = delete;
 
@@ -148,7 +153,7 @@ int runClassGrade(const ClassGradeArgs& args) {
             (listing.skipped.empty() ? "" : " (left out: " + skippedList(listing) + ")"));
     std::error_code mkdirError;
     fs::create_directories(args.out, mkdirError);
-    const OutLock lock(args.out);
+    OutLock lock(args.out);
     for (const char* sub : {"/students", "/feedback", "/work", "/logs"}) {
         std::error_code ec;
         fs::create_directories(args.out + sub, ec);
@@ -231,6 +236,7 @@ int runClassGrade(const ClassGradeArgs& args) {
         if (pid < 0) throw std::runtime_error("grade: cannot start a job process");
         if (pid == 0) {
             ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed grade leaves no job behind
+            lock.closeInJob();
             std::string log = args.out + "/logs/job-" + std::to_string(j) + ".log";
             int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
             if (fd >= 0) {
