@@ -14,7 +14,7 @@ Each case asserts what a careful instructor expects (docs/robustness.md, "A clas
   encrypted zip says so; a nested zip's messages name the student's archive, never our work
   folder; --out inside, equal to or holding the submissions folder is refused before any work;
   release --out inside the data tree is refused; a second grade on a locked --out is refused
-  naming the holder's pid.
+  naming the holder's pid; the same zips through `check` under LC_ALL=C.
 usage: test_class_hostile.py SHADOWLAB REPO WORKDIR"""
 import csv, fcntl, io, json, os, shutil, subprocess, sys, zipfile
 
@@ -228,4 +228,13 @@ fcntl.flock(holder, fcntl.LOCK_UN)
 holder.close()
 check("a locked --out is refused naming the holder's pid",
       r.returncode == 2 and "in use by another grade run (pid %d)" % os.getpid() in r.stderr, r.stderr)
+# ---- the same zips through `check` (and so run_autograder), under LC_ALL=C
+for zip_name, code, want in (("utf.zip", 0, "total: 10 of 10 points"),
+                             ("locked.zip", 2, "encrypted: hand it in without a password"),
+                             ("nest.zip", 2, "nest.zip/l2.zip: no file replaces")):
+    r = subprocess.run([exe, "check", "--assignment", lab, "--shaders", os.path.join(cls, zip_name)],
+                       capture_output=True, text=True, timeout=300, env=ENV)
+    check("check %s under LC_ALL=C: exit %d, '%s'" % (zip_name, code, want),
+          r.returncode == code and want in r.stdout + r.stderr and "unpacked-inner" not in r.stderr,
+          (r.returncode, r.stdout[-500:], r.stderr[-500:]))
 print("course_class_hostile: ok, %d checks" % len(checks))
