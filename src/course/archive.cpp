@@ -8,9 +8,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <memory>
 #include <vector>
 
+#include "grade/intake.h"
 #include "io/files.h"
 
 namespace sl {
@@ -93,6 +95,11 @@ std::string entryName(archive_entry* entry) {
     return raw ? raw : "";
 }
 
+// A write that failed for want of space is the machine's fault, never the archive's.
+void throwIfMachine(int err) {
+    if (err == ENOSPC || err == EDQUOT || err == EIO) throw SnapshotWriteError(err);
+}
+
 }  // namespace
 
 std::string unpackZip(const std::string& zip, const std::string& target, const UnpackLimits& limits,
@@ -103,7 +110,10 @@ std::string unpackZip(const std::string& zip, const std::string& target, const U
     if (::stat(zip.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return "not a regular file";
     if (std::size_t(st.st_size) > limits.maxArchiveBytes)
         return "the archive is larger than " + std::to_string(limits.maxArchiveBytes >> 20) + " MB";
-    if (::mkdir(target.c_str(), 0700) != 0) return "cannot create the folder to unpack into";
+    if (::mkdir(target.c_str(), 0700) != 0) {
+        throwIfMachine(errno);
+        return "cannot create the folder to unpack into";
+    }
     std::unique_ptr<archive, int (*)(archive*)> a(archive_read_new(), archive_read_free);
     archive_read_support_format_zip(a.get());
     if (archive_read_open_filename(a.get(), zip.c_str(), 64 * 1024) != ARCHIVE_OK)
@@ -138,17 +148,24 @@ std::string unpackZip(const std::string& zip, const std::string& target, const U
             return "'" + printableName(name) + "' is a link (links are not accepted)";
         mode_t type = archive_entry_filetype(entry);
         if (type == AE_IFDIR) {
-            if (!makeParents(target, name + "/"))
+            if (!makeParents(target, name + "/")) {
+                throwIfMachine(errno);
                 return "'" + printableName(name) + "': cannot create it";
+            }
             continue;
         }
         if (type != AE_IFREG)
             return "'" + printableName(name) + "' is not a regular file or folder";
-        if (!makeParents(target, name))
+        if (!makeParents(target, name)) {
+            throwIfMachine(errno);
             return "'" + printableName(name) + "': cannot create its folder";
+        }
         std::string path = target + "/" + name;
         int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
-        if (fd < 0) return "'" + printableName(name) + "' is there twice or cannot be written";
+        if (fd < 0) {
+            throwIfMachine(errno);
+            return "'" + printableName(name) + "' is there twice or cannot be written";
+        }
         std::size_t fileBytes = 0;
         std::string err;
         for (;;) {
@@ -170,12 +187,16 @@ std::string unpackZip(const std::string& zip, const std::string& target, const U
                       std::to_string(limits.maxTotalBytes >> 20) + " MB (a zip bomb?)";
                 break;
             }
-            if (::write(fd, buffer.data(), std::size_t(n)) != n) {
+            if (ssize_t wrote = ::write(fd, buffer.data(), std::size_t(n)); wrote != n) {
+                int why = wrote < 0 ? errno : ENOSPC;  // a short write: the disk is full
+                ::close(fd);
+                throwIfMachine(why);
                 err = "cannot write '" + printableName(name) + "'";
+                fd = -1;
                 break;
             }
         }
-        ::close(fd);
+        if (fd >= 0) ::close(fd);
         if (!err.empty()) return err;
     }
     if (notes && leftOut > 5)

@@ -78,7 +78,9 @@ std::string submissionName(const std::string& path) {
     return base;
 }
 
-StudentWork intakeSubmission(const std::string& path, const std::string& workDir) {
+namespace {
+
+StudentWork intakeOrThrow(const std::string& path, const std::string& workDir) {
     StudentWork s;
     s.name = submissionName(path);
     std::error_code ec;
@@ -134,6 +136,22 @@ StudentWork intakeSubmission(const std::string& path, const std::string& workDir
         s.overlay.clear();
     }
     return s;
+}
+
+}  // namespace
+
+StudentWork intakeSubmission(const std::string& path, const std::string& workDir) {
+    try {
+        return intakeOrThrow(path, workDir);
+    } catch (const SnapshotWriteError& e) {  // a full disk: NOT GRADED, never a score
+        std::error_code ec;
+        fs::remove_all(workDir, ec);  // the part copied: the space the records still need
+        StudentWork s;
+        s.name = submissionName(path);
+        s.error = e.what();
+        s.platformFailure = true;
+        return s;
+    }
 }
 
 }  // namespace sl

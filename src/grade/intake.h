@@ -25,6 +25,13 @@ class IntakeError : public std::runtime_error {
     explicit IntakeError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// The grading machine could not write the private copy (a full disk, a quota): never the
+// student's fault; what() says so, and a full disk as such.
+class SnapshotWriteError : public std::runtime_error {
+  public:
+    explicit SnapshotWriteError(int err);
+};
+
 // The submission was read, but no file in it replaces a shipped one (empty, a README, only near
 // misses): for `check` exit 2; for an assignment every due stage is MISSING.
 class NothingHandedIn : public IntakeError {

@@ -14,7 +14,8 @@ Each case asserts what a careful instructor expects (docs/robustness.md, "A clas
   encrypted zip says so; a nested zip's messages name the student's archive, never our work
   folder; --out inside, equal to or holding the submissions folder is refused before any work;
   release --out inside the data tree is refused; a second grade on a locked --out is refused
-  naming the holder's pid; the same zips through `check` under LC_ALL=C.
+  naming the holder's pid; the same zips through `check` under LC_ALL=C; a full disk under --out
+  (a tmpfs, as root) makes a folder's and a zip's hand-ins NOT GRADED, saying the disk is full.
 usage: test_class_hostile.py SHADOWLAB REPO WORKDIR"""
 import csv, fcntl, io, json, os, shutil, subprocess, sys, zipfile
 
@@ -196,7 +197,8 @@ shown += [("stdout", r.stdout.encode()), ("stderr", r.stderr.encode())]
 shown += [(name, json.dumps([rec.get("notes"), rec.get("message"),
                              [st.get("message") for st in rec["stages"]]]).encode())
           for name, (f, rec) in records.items()]
-internal = [p for p, data in shown if b"/unpacked" in data or b"/work/" in data]
+ours = [b"/unpacked", (out + "/work/").encode(), (os.path.abspath(out) + "/work/").encode()]
+internal = [p for p, data in shown if any(o in data for o in ours)]
 check("no page, gradebook, terminal line or message names our work folders", internal == [],
       internal[:5])
 summary = [l for l in r.stdout.splitlines() if l.startswith("left out, not hand-ins:")]
@@ -237,4 +239,30 @@ for zip_name, code, want in (("utf.zip", 0, "total: 10 of 10 points"),
     check("check %s under LC_ALL=C: exit %d, '%s'" % (zip_name, code, want),
           r.returncode == code and want in r.stdout + r.stderr and "unpacked-inner" not in r.stderr,
           (r.returncode, r.stdout[-500:], r.stderr[-500:]))
+# ---- a full disk under --out (a tmpfs of 256 KiB; root only): NOT GRADED, never a score
+if os.geteuid() != 0:
+    print("skipped: the full-disk case needs root (mount -t tmpfs); CI runs as root")
+else:
+    full_cls, mnt = work + "/full-class", work + "/full"
+    big = shipped + b"\n// " + b"x" * (900 << 10) + b"\n"  # under the 1 MiB bound, over the disk
+    os.makedirs(full_cls + "/bigdir/margin")
+    open(full_cls + "/bigdir/margin/lit.frag", "wb").write(big)
+    with zipfile.ZipFile(full_cls + "/bigzip.zip", "w", zipfile.ZIP_DEFLATED) as z:
+        z.writestr("margin/lit.frag", big)
+    os.makedirs(mnt)
+    subprocess.run(["mount", "-t", "tmpfs", "-o", "size=256k", "tmpfs", mnt], check=True)
+    try:
+        r = grade(subs=full_cls, dest=mnt + "/out")
+        check("a full disk: exit 3, 'not graded: rerun'",
+              r.returncode == 3 and "2 not graded: rerun" in r.stdout, (r.returncode, r.stdout))
+        rows = {row["student"]: row for row in csv.DictReader(open(mnt + "/out/grades.csv"))}
+        for name in ("bigdir", "bigzip"):
+            rec = json.load(open(mnt + "/out/students/%s.json" % name))
+            check("a full disk: %s NOT GRADED, no score, 'the disk is full'" % name,
+                  rec["status"] == "NOT GRADED" and rec["max_score"] == 0 and
+                  rows[name]["total"] == "" and "disk is full" in rows[name]["not_graded"] and
+                  "not the submission's fault" in rows[name]["not_graded"],
+                  (rec["status"], rows.get(name)))
+    finally:
+        subprocess.run(["umount", mnt])
 print("course_class_hostile: ok, %d checks" % len(checks))
