@@ -37,3 +37,7 @@ add_test(NAME course_autograder
          COMMAND python3 ${SL_COURSE_PY}/test_autograder.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/autograder)
 set_tests_properties(course_assignment_errors course_zip_safety PROPERTIES LABELS course TIMEOUT 300)
 set_tests_properties(course_release_core course_release_legacy course_autograder PROPERTIES LABELS course TIMEOUT 1200)
+# Hostile and careless class folders: links, junk, names, resume, overlaps, zips, the lock (issue 26).
+add_test(NAME course_class_hostile
+         COMMAND python3 ${SL_COURSE_PY}/test_class_hostile.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/class-hostile)
+set_tests_properties(course_class_hostile PROPERTIES LABELS course TIMEOUT 1200)

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace sl {
 
@@ -17,8 +18,12 @@ struct UnpackLimits {
 };
 
 // Unpacks `zip` into the folder `target` (created; must not exist). Returns "" or why the
-// archive was refused (one line, naming the entry); on refusal `target` may hold a part.
+// archive was refused (one line, naming the entry); on refusal `target` may hold a part. Names
+// are read as UTF-8 whatever the process's locale; an entry whose name no file system can hold
+// (a part longer than NAME_MAX) is left out with a line in `notes` (never a shipped file's
+// name); an encrypted entry refuses the archive, saying so. Throws SnapshotWriteError
+// (grade/intake.h) when the disk is full: the machine's fault, not the archive's.
 std::string unpackZip(const std::string& zip, const std::string& target,
-                      const UnpackLimits& limits = {});
+                      const UnpackLimits& limits = {}, std::vector<std::string>* notes = nullptr);
 
 }  // namespace sl

@@ -3,6 +3,7 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -12,12 +13,13 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <optional>
-#include <iostream>
 #include <set>
 #include <thread>
 
+#include "course/class_entries.h"
 #include "course/feedback_html.h"
 #include "course/intake_adapter.h"
 #include "course/solution_check.h"
@@ -33,42 +35,36 @@ using nlohmann::json;
 
 namespace {
 
-bool isJunkEntry(const std::string& n) {
-    return n.empty() || n[0] == '.' || n == "__MACOSX" || n.back() == '~';
-}
-
-// A student's name as a file name: [A-Za-z0-9._-] only, unique in the class.
-std::string fileNameFor(const std::string& name, std::set<std::string>& taken) {
-    std::string s;
-    for (char c : name)
-        s += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' ? c : '_';
-    if (s.empty() || s[0] == '.') s = "_" + s;
-    std::string unique = s;
-    for (int k = 2; !taken.insert(unique).second; ++k) unique = s + "-" + std::to_string(k);
-    return unique;
-}
-
 void writeOrThrow(const std::string& path, const std::string& text) {
     std::string err = writeFileAtomically(path, text.data(), text.size());
     if (!err.empty()) throw UsageError("grade: " + err);
 }
 
-// The record kept at `path`, if it can be read as one.
-std::optional<StudentRecord> keptRecord(const std::string& path) {
+// The record kept at `path` for the student named exactly `student`, if it can be read as one.
+std::optional<StudentRecord> keptRecord(const std::string& path, const std::string& student) {
     std::string text;
-    if (!readRegularFile(path, 64u << 20, text).empty()) return std::nullopt;
+    if (!readRegularFile(path, 64u << 20, text, true).empty()) return std::nullopt;
     try {
-        return recordFromJson(json::parse(text));
+        StudentRecord r = recordFromJson(json::parse(text));
+        if (r.student != student) return std::nullopt;  // another name's record: not theirs
+        return r;
     } catch (const std::exception&) {  // malformed, an older version, a lesson since renamed
         return std::nullopt;
     }
 }
 
-// The hand-in's content as given: a zip's bytes, a folder's regular files (io/content_hash.h).
+// The hand-in's content as given: a zip's bytes, a folder's regular files (io/content_hash.h);
+// of a link or a device, only its kind and, for a link, where it points (never followed).
 std::string handInHash(const std::string& path) {
     struct stat st;
     if (::lstat(path.c_str(), &st) != 0) return "";
     if (S_ISDIR(st.st_mode)) return contentHash(path);
+    if (S_ISLNK(st.st_mode)) {
+        char target[4096];
+        ssize_t n = ::readlink(path.c_str(), target, sizeof target);
+        return fnv1aHex("link: " + std::string(target, n > 0 ? std::size_t(n) : 0));
+    }
+    if (!S_ISREG(st.st_mode)) return fnv1aHex("mode: " + std::to_string(st.st_mode));
     std::string bytes;
     std::string err = readRegularFile(path, std::size_t(1) << 30, bytes, true);
     return fnv1aHex(err.empty() ? bytes : "unreadable: " + err);
@@ -85,6 +81,48 @@ std::string whyGrade(const std::optional<StudentRecord>& kept, const std::string
     if (kept->handInHash != handIn) return "the hand-in changed";
     return "";
 }
+
+std::string skippedList(const ClassListing& listing) {
+    std::string list;
+    for (const std::string& s : listing.skipped) list += (list.empty() ? "" : ", ") + s;
+    return list;
+}
+
+// One grade run per --out at a time: an flock held by the run's own process until it ends (its
+// jobs let go of their copy, so a killed run frees --out at once), the holder's pid written in
+// the lock file for the refusal to name.
+class OutLock {
+  public:
+    explicit OutLock(const std::string& out) {
+        std::string path = out + "/.grade.lock";
+        fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+        if (fd_ < 0) throw UsageError("--out: cannot write " + printableName(path));
+        if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+            char pid[32] = {};
+            ssize_t n = ::pread(fd_, pid, sizeof pid - 1, 0);
+            ::close(fd_);
+            std::string holder = n > 0 ? std::string(pid, std::size_t(n)) : "?";
+            holder.erase(holder.find_last_not_of(" \n") + 1);
+            throw UsageError("--out: " + printableName(out) +
+                             " is in use by another grade run (pid " + printable(holder) +
+                             "): wait for it to end or give another --out");
+        }
+        // The pid is only for another run's message; the lock itself is the flock.
+        std::string pid = std::to_string(::getpid()) + "\n";
+        if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0)
+            pid.clear();  // no pid to name: the lock holds all the same
+    }
+    ~OutLock() { ::close(fd_); }
+    void closeInJob() {  // in a forked job: the lock stays the parent's alone
+        ::close(fd_);
+        fd_ = -1;
+    }
+    OutLock(const OutLock&) = delete;
+    OutLock& operator=(const OutLock&) = delete;
+
+  private:
+    int fd_ = -1;
+};
 
 std::string duration(double s) {
     char t[32];
@@ -122,14 +160,12 @@ int runClassGrade(const ClassGradeArgs& args) {
         throw UsageError(
             "grade: " + printableName(args.submissions) +
             " is not a folder (give the folder holding one folder or .zip per student)");
-    std::vector<std::string> entries;
-    for (const auto& e : fs::directory_iterator(args.submissions)) {
-        std::string n = e.path().filename().string();
-        if (!isJunkEntry(n)) entries.push_back(e.path().string());
-    }
-    std::sort(entries.begin(), entries.end());
-    if (entries.empty())
-        throw UsageError("grade: " + printableName(args.submissions) + " holds no submission");
+    refuseOverlap(args.submissions, args.out);
+    const ClassListing listing = listClass(args.submissions);
+    if (listing.handIns.empty())
+        throw UsageError(
+            "grade: " + printableName(args.submissions) + " holds no submission" +
+            (listing.skipped.empty() ? "" : " (left out: " + skippedList(listing) + ")"));
     SolutionTrees trees = solutionTrees(args.solutions);
     const std::string checkKey = solutionCheckKey(assignmentHash, trees);
     const bool checked = solutionCheckPassed(args.out, checkKey);
@@ -142,21 +178,26 @@ int runClassGrade(const ClassGradeArgs& args) {
                   << std::flush;
         verifySolution(a, trees, args.settings);
     }
-    for (const char* sub : {"", "/students", "/feedback", "/work", "/logs"}) {
+    std::error_code mkdirError;
+    fs::create_directories(args.out, mkdirError);
+    OutLock lock(args.out);
+    for (const char* sub : {"/students", "/feedback", "/work", "/logs"}) {
         std::error_code ec;
         fs::create_directories(args.out + sub, ec);
         if (ec) throw UsageError("--out: cannot create " + printableName(args.out + sub));
     }
     if (!checked) {
         std::string line = checkKey + "\n";
-        std::string err = writeFileAtomically(args.out + "/solution_check.txt", line.data(), line.size());
+        std::string err =
+            writeFileAtomically(args.out + "/solution_check.txt", line.data(), line.size());
         if (!err.empty()) throw std::runtime_error("grade: " + err);
     }
-    std::set<std::string> taken;
-    std::vector<std::string> names, files;
-    for (const auto& e : entries) {
-        names.push_back(submissionName(e));
-        files.push_back(fileNameFor(names.back(), taken));
+    std::vector<std::string> entries, names, files, refusals;
+    for (const ClassEntry& e : listing.handIns) {
+        entries.push_back(e.path);
+        names.push_back(e.student);
+        files.push_back(e.key);
+        refusals.push_back(e.refusal);
     }
     for (const std::string& wanted : args.regrade)
         if (std::find(names.begin(), names.end(), wanted) == names.end())
@@ -169,9 +210,10 @@ int runClassGrade(const ClassGradeArgs& args) {
     std::map<std::string, int> reasons;  // why students are graded in this run
     for (std::size_t k = 0; k < n; ++k) {
         hashes[k] = handInHash(entries[k]);
-        bool asked = args.regradeAll ||
-                     std::find(args.regrade.begin(), args.regrade.end(), names[k]) != args.regrade.end();
-        std::string why = whyGrade(keptRecord(recordPath(k)), hashes[k], assignmentHash, asked);
+        bool asked = args.regradeAll || std::find(args.regrade.begin(), args.regrade.end(),
+                                                  names[k]) != args.regrade.end();
+        std::string why =
+            whyGrade(keptRecord(recordPath(k), names[k]), hashes[k], assignmentHash, asked);
         if (why.empty()) continue;
         todo.push_back(k);
         ++reasons[why];
@@ -187,12 +229,20 @@ int runClassGrade(const ClassGradeArgs& args) {
             why += (why.empty() ? " (" : ", ") + std::to_string(count) + " " + reason;
         if (!why.empty()) std::cout << why << ")";
     }
-    std::cout << "\n" << std::flush;
+    std::cout << "\n";
+    if (!listing.skipped.empty())
+        std::cout << "left out, not hand-ins: " << skippedList(listing) << "\n";
+    std::cout << std::flush;
 
     // Intake in the parent (no GL here): every pending submission's snapshot.
     std::vector<StudentWork> subs(n);
     for (std::size_t k : todo) {
-        subs[k] = intakeSubmission(entries[k], args.out + "/work/" + files[k]);
+        if (refusals[k].empty()) {
+            subs[k] = intakeSubmission(entries[k], args.out + "/work/" + files[k]);
+        } else {
+            subs[k] = StudentWork();
+            subs[k].error = refusals[k];  // nothing of it is read, followed or copied
+        }
         subs[k].name = names[k];
         subs[k].hash = hashes[k];
         std::error_code ec;
@@ -219,6 +269,7 @@ int runClassGrade(const ClassGradeArgs& args) {
         if (pid < 0) throw std::runtime_error("grade: cannot start a job process");
         if (pid == 0) {
             ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed grade leaves no job behind
+            lock.closeInJob();
             std::string log = args.out + "/logs/job-" + std::to_string(j) + ".log";
             int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
             if (fd >= 0) {
@@ -261,7 +312,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     int exitCode = 0;
     std::size_t running = pids.size();
     auto isFresh = [&](std::size_t k, std::optional<StudentRecord>& r) {
-        r = keptRecord(recordPath(k));
+        r = keptRecord(recordPath(k), names[k]);
         return r && r->handInHash == hashes[k] && r->assignmentHash == assignmentHash;
     };
     auto poll = [&]() {
@@ -314,7 +365,7 @@ int runClassGrade(const ClassGradeArgs& args) {
         writeOrThrow(args.out + "/" + pages.back(), studentPage(*r));
     }
     writeOrThrow(args.out + "/grades.csv", gradesCsv(records));
-    writeOrThrow(args.out + "/class.html", classPage(a.name, records, pages));
+    writeOrThrow(args.out + "/class.html", classPage(a.name, records, pages, listing.skipped));
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "graded " << n - notGraded << " of " << n;

@@ -227,7 +227,8 @@ std::string failureOf(const StageRecord& st) {
 }  // namespace
 
 std::string classPage(const std::string& assignment, const std::vector<StudentRecord>& records,
-                      const std::vector<std::string>& pages) {
+                      const std::vector<std::string>& pages,
+                      const std::vector<std::string>& skipped) {
     std::ostringstream h;
     h << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << esc(assignment)
       << ": the class</title>" << kStyle << "</head><body>\n<h1>" << esc(assignment) << "</h1>\n";
@@ -291,6 +292,11 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
         h << "<h2>Notes from the source rules (for the instructor: not a score)</h2>\n"
              "<table><tr><th>student</th><th>stage</th><th>note</th></tr>\n"
           << notes.str() << "</table>\n";
+    if (!skipped.empty()) {
+        h << "<h2>Left out of the class folder (not hand-ins)</h2>\n<ul>\n";
+        for (const std::string& s : skipped) h << "<li>" << esc(s) << "</li>\n";
+        h << "</ul>\n";
+    }
     h << "</body></html>\n";
     return h.str();
 }

@@ -21,9 +21,11 @@ std::string plainWords(const RowRecord& row);
 std::string studentPage(const StudentRecord& record);
 
 // The class page: students by stages, coloured by points, each linked to `pageOf(student)`;
-// per stage its most common failure and how many students had it.
+// per stage its most common failure and how many students had it; `skipped`: the class folder's
+// entries left out ("NAME (why)"), listed so none is silently dropped.
 std::string classPage(const std::string& assignment, const std::vector<StudentRecord>& records,
-                      const std::vector<std::string>& pages);
+                      const std::vector<std::string>& pages,
+                      const std::vector<std::string>& skipped = {});
 
 // grades.csv (RFC 4180, CRLF): student, status, one column per due stage's points, total, max,
 // and why a student is not graded (their NOT GRADED stages' cells, total and max left empty).

@@ -56,6 +56,18 @@ std::string innerZip(std::string root) {
     return "";
 }
 
+// `text` with each private folder of ours named as the student's own file (`shownAs`), longest
+// first: a message never names the grader's work folder.
+std::string namedAsHandedIn(std::string text,
+                            const std::vector<std::pair<std::string, std::string>>& shownAs) {
+    for (const auto& [folder, shown] : shownAs)
+        for (std::size_t at = 0; (at = text.find(folder, at)) != std::string::npos;) {
+            text.replace(at, folder.size(), shown);
+            at += shown.size();
+        }
+    return text;
+}
+
 }  // namespace
 
 std::string submissionName(const std::string& path) {
@@ -66,7 +78,9 @@ std::string submissionName(const std::string& path) {
     return base;
 }
 
-StudentWork intakeSubmission(const std::string& path, const std::string& workDir) {
+namespace {
+
+StudentWork intakeOrThrow(const std::string& path, const std::string& workDir) {
     StudentWork s;
     s.name = submissionName(path);
     std::error_code ec;
@@ -78,13 +92,16 @@ StudentWork intakeSubmission(const std::string& path, const std::string& workDir
         return s;
     }
     std::string root;
+    const std::string handedIn = printableName(fs::path(path).filename().string());
+    std::vector<std::pair<std::string, std::string>> shownAs;  // inner zip first: longer path
     if (S_ISREG(st.st_mode) && endsWithZip(path)) {
-        std::string err = unpackZip(path, workDir + "/unpacked");
+        std::string err = unpackZip(path, workDir + "/unpacked", {}, &s.notes);
         if (!err.empty()) {
-            s.error = printableName(s.name) + ".zip refused: " + err;
+            s.error = handedIn + " refused: " + err;
             return s;
         }
         root = workDir + "/unpacked";
+        shownAs.emplace_back(root, handedIn);
     } else if (S_ISDIR(st.st_mode)) {
         root = path;
     } else {
@@ -92,13 +109,16 @@ StudentWork intakeSubmission(const std::string& path, const std::string& workDir
         return s;
     }
     if (std::string zip = innerZip(root); !zip.empty()) {
-        std::string err = unpackZip(zip, workDir + "/unpacked-inner");
+        // The inner zip as the student knows it: inside their own archive or folder.
+        std::string inner = handedIn + zip.substr(root.size());
+        std::string err = unpackZip(zip, workDir + "/unpacked-inner", {}, &s.notes);
         if (!err.empty()) {
-            s.error = printableName(fs::path(zip).filename().string()) + " refused: " + err;
+            s.error = printableName(inner) + " refused: " + err;
             return s;
         }
-        s.notes.push_back("unpacked '" + printableName(fs::path(zip).filename().string()) + "'");
+        s.notes.push_back("unpacked '" + printableName(inner) + "'");
         root = workDir + "/unpacked-inner";
+        shownAs.insert(shownAs.begin(), {root, printableName(inner)});
     }
     std::string snapshot = workDir + "/snapshot";
     fs::create_directories(snapshot, ec);
@@ -107,14 +127,31 @@ StudentWork intakeSubmission(const std::string& path, const std::string& workDir
     try {
         Submission sub = takeSubmission(root, snapshot, shippedTrees().both);
         s.files = sub.files;
-        s.notes.insert(s.notes.end(), sub.notes.begin(), sub.notes.end());
+        for (const std::string& note : sub.notes) s.notes.push_back(namedAsHandedIn(note, shownAs));
     } catch (const NothingHandedIn& e) {
-        s.notes.push_back(e.what());  // every due stage MISSING, 0 points
+        s.notes.push_back(namedAsHandedIn(e.what(), shownAs));  // every due stage MISSING
     } catch (const IntakeError& e) {
-        s.error = e.what();  // too many, too large, unreadable: the submission is an ERROR
+        // too many, too large, unreadable: the submission is an ERROR
+        s.error = namedAsHandedIn(e.what(), shownAs);
         s.overlay.clear();
     }
     return s;
+}
+
+}  // namespace
+
+StudentWork intakeSubmission(const std::string& path, const std::string& workDir) {
+    try {
+        return intakeOrThrow(path, workDir);
+    } catch (const SnapshotWriteError& e) {  // a full disk: NOT GRADED, never a score
+        std::error_code ec;
+        fs::remove_all(workDir, ec);  // the part copied: the space the records still need
+        StudentWork s;
+        s.name = submissionName(path);
+        s.error = e.what();
+        s.platformFailure = true;
+        return s;
+    }
 }
 
 }  // namespace sl

@@ -13,6 +13,8 @@ namespace sl {
 
 // Reads the folder or .zip at `path` into a snapshot under `workDir` (created; emptied first).
 // A zip, or a folder whose only entry (below lone wrapper folders) is a zip, is unpacked first.
+// A full disk is the machine's failure: `error` says so and `platformFailure` is set (NOT
+// GRADED, never a score); every message names the student's own file or archive.
 StudentWork intakeSubmission(const std::string& path, const std::string& workDir);
 
 // The student's name for an entry of a class folder: its base name, without ".zip".

@@ -7,8 +7,10 @@
 #include <regex>
 #include <sstream>
 
+#include "course/class_entries.h"
 #include "io/files.h"
 #include "render/request.h"
+#include "scene/scene_json.h"
 
 namespace sl {
 
@@ -246,6 +248,18 @@ std::vector<StudentFile> releasedShaders(const Assignment& a, const SolutionTree
 }
 
 void checkReleaseOut(const std::string& outDir) {
+    // The release is never written into what it is made from (release --gradescope packs these
+    // folders: a release inside them would pack itself), nor over the data tree.
+    const std::string data = dataDir();
+    if (liesWithin(data, outDir))
+        throw UsageError("release --out " + printableName(outDir) + ": holds shadowlab's data (" +
+                         printableName(data) + "): give a folder outside it");
+    for (const char* top : {"src", "shaders_core", "shaders_legacy", "scenes", "scripts",
+                            "slides_examples", "assignments", "cmake", "docs", "tests"})
+        if (liesWithin(outDir, data + "/" + top))
+            throw UsageError("release --out " + printableName(outDir) + ": lies inside " +
+                             printableName(data + "/" + top) +
+                             " (what the release is made from): give a folder outside it");
     std::error_code ec;
     if (fs::exists(outDir, ec) && !fs::is_empty(outDir, ec))
         throw UsageError("release --out " + printableName(outDir) +

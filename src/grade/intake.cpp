@@ -160,16 +160,12 @@ void copyTree(Walk& w, int fd, const std::string& rel, int outFd, int depth) {
                               " MiB of files; a submission is a few shader files");
         Fd out(::openat(outFd, name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
                         0600));
-        if (out.fd < 0)
-            throw std::runtime_error("intake: cannot write the snapshot: " +
-                                     std::string(std::strerror(errno)));
+        if (out.fd < 0) throw SnapshotWriteError(errno);
         std::size_t done = 0;
         while (done < text.size()) {
             ssize_t n = ::write(out.fd, text.data() + done, text.size() - done);
             if (n < 0 && errno == EINTR) continue;
-            if (n <= 0)
-                throw std::runtime_error("intake: cannot write the snapshot: " +
-                                         std::string(std::strerror(errno)));
+            if (n <= 0) throw SnapshotWriteError(n < 0 ? errno : ENOSPC);
             done += static_cast<std::size_t>(n);
         }
         w.files.push_back(path);
@@ -230,14 +226,31 @@ std::string nearMiss(const std::string& path, const std::map<std::string, std::s
 }  // namespace
 
 // Editor and archive leftovers: never a shader, never mentioned.
-bool isJunkName(const std::string& name) {
-    if (name.empty() || name[0] == '.') return true;  // .DS_Store, .lit.frag.swp, .git, ._x
-    if (name == "__MACOSX" || name == "Thumbs.db" || name == "desktop.ini") return true;
-    if (name.back() == '~') return true;  // emacs, gedit backups
-    if (name.size() > 1 && name[0] == '#' && name.back() == '#') return true;  // emacs autosave
+SnapshotWriteError::SnapshotWriteError(int err)
+    : std::runtime_error(
+          err == ENOSPC || err == EDQUOT
+              ? "the grading machine's disk is full (" + std::string(std::strerror(err)) +
+                    "): the hand-in could not be copied; not the submission's fault: free space "
+                    "and grade again"
+              : "the grading machine could not copy the hand-in (" +
+                    std::string(std::strerror(err)) + "): not the submission's fault") {}
+
+std::string junkReason(const std::string& name) {
+    if (name.empty()) return "no name";
+    const std::string low = lower(name);
+    if (low == "__macosx" || low == "thumbs.db" || low == "desktop.ini" || low == ".ds_store" ||
+        low.rfind("._", 0) == 0)
+        return "operating-system leftovers";
+    if (name[0] == '.') return "a hidden name";           // .lit.frag.swp, .git, .hidden
+    if (name.back() == '~') return "an editor's backup";  // emacs, gedit
+    if (name.size() > 1 && name[0] == '#' && name.back() == '#') return "an editor's autosave";
     for (const char* ext : {".swp", ".swo", ".bak", ".orig"})
-        if (endsWith(lower(name), ext)) return true;
-    return false;
+        if (endsWith(low, ext)) return "an editor's backup";
+    return "";
+}
+
+bool isJunkName(const std::string& name) {
+    return !junkReason(name).empty();
 }
 
 std::set<std::string> shippedFiles(const std::string& treeRoot) {

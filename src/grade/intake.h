@@ -25,6 +25,13 @@ class IntakeError : public std::runtime_error {
     explicit IntakeError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// The grading machine could not write the private copy (a full disk, a quota): never the
+// student's fault; what() says so, and a full disk as such.
+class SnapshotWriteError : public std::runtime_error {
+  public:
+    explicit SnapshotWriteError(int err);
+};
+
 // The submission was read, but no file in it replaces a shipped one (empty, a README, only near
 // misses): for `check` exit 2; for an assignment every due stage is MISSING.
 class NothingHandedIn : public IntakeError {
@@ -43,7 +50,13 @@ struct Submission {
 
 // Editor and archive leftovers (`__MACOSX`, `.DS_Store` and other hidden names, `*~`, `#x#`,
 // `.swp`, `.bak`...): never a shader, never mentioned.
+// The one junk list, inside a submission and at the class level alike.
 bool isJunkName(const std::string& name);
+
+// Why `name` is junk, in a few words ("a hidden name", "an editor's backup", "operating-system
+// leftovers"), or "" when it is not: what the class page and grade's summary say of an entry
+// left out.
+std::string junkReason(const std::string& name);
 
 // The relative paths of every shipped file under `treeRoot` (e.g. "margin/lit.frag").
 std::set<std::string> shippedFiles(const std::string& treeRoot);

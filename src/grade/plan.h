@@ -43,6 +43,7 @@ struct StudentWork {
     std::vector<std::string> files;  // relative paths of the student's regular files in it
     std::vector<std::string> notes;  // wrapper folders descended, near misses, links skipped, ...
     std::string error;               // why the submission could not be read at all ("" = ok)
+    bool platformFailure = false;    // `error` is the grading machine's (a full disk): NOT GRADED
     std::string hash;                // the content hash of the snapshot's files ("" = none)
     bool has(const std::string& rel) const;
 };

@@ -184,7 +184,8 @@ StudentRecord unreadableRecord(const GradingPlan& plan, const StudentWork& s) {
         StageRecord st = stageOf(p);
         st.missingFiles.clear();
         for (const RowPlan& row : p.rows) {
-            st.rows.push_back(unrenderedRow(row, Status::Error, s.error));
+            st.rows.push_back(unrenderedRow(
+                row, s.platformFailure ? Status::NotGraded : Status::Error, s.error));
             score(st.rows.back(), row);
         }
         st.message = s.error;
