@@ -56,6 +56,36 @@ std::string innerZip(std::string root) {
     return "";
 }
 
+// `text` with every instructor's path in `paths` (longest first) replaced by what the student
+// calls it: the hand-in's own name.
+std::string withStudentNames(std::string text,
+                             const std::vector<std::pair<std::string, std::string>>& paths) {
+    for (const auto& [path, shown] : paths)
+        for (std::size_t at;
+             path.find('/') != std::string::npos && (at = text.find(path)) != std::string::npos;)
+            text.replace(at, path.size(), shown);
+    return text;
+}
+
+// Notes and error of `s` without the instructor's paths: the hand-in at `path` as the student
+// named it, its unpacked copies under `workDir` as the zip's name.
+void hideInstructorPaths(StudentWork& s, const std::string& path, const std::string& workDir) {
+    std::string handIn = path;
+    while (handIn.size() > 1 && handIn.back() == '/') handIn.pop_back();
+    handIn = handIn.substr(handIn.find_last_of('/') + 1);
+    std::vector<std::pair<std::string, std::string>> paths = {
+        {printableName(workDir + "/unpacked-inner"), handIn},
+        {workDir + "/unpacked-inner", handIn},
+        {printableName(workDir + "/unpacked"), handIn},
+        {workDir + "/unpacked", handIn},
+        {printableName(workDir), handIn},
+        {workDir, handIn},
+        {printableName(path), handIn},
+        {path, handIn}};
+    for (std::string& n : s.notes) n = withStudentNames(n, paths);
+    s.error = withStudentNames(s.error, paths);
+}
+
 }  // namespace
 
 std::string submissionName(const std::string& path) {
@@ -66,7 +96,10 @@ std::string submissionName(const std::string& path) {
     return base;
 }
 
-StudentWork intakeSubmission(const std::string& path, const std::string& workDir) {
+namespace {
+
+StudentWork intakeInto(const std::string& path, const std::string& workDir,
+                       const std::vector<std::string>& stages) {
     StudentWork s;
     s.name = submissionName(path);
     std::error_code ec;
@@ -105,7 +138,7 @@ StudentWork intakeSubmission(const std::string& path, const std::string& workDir
     fs::permissions(snapshot, fs::perms::owner_all, ec);
     s.overlay = snapshot;
     try {
-        Submission sub = takeSubmission(root, snapshot, shippedTrees().both);
+        Submission sub = takeSubmission(root, snapshot, shippedTrees().both, stages);
         s.files = sub.files;
         s.notes.insert(s.notes.end(), sub.notes.begin(), sub.notes.end());
     } catch (const NothingHandedIn& e) {
@@ -114,6 +147,15 @@ StudentWork intakeSubmission(const std::string& path, const std::string& workDir
         s.error = e.what();  // too many, too large, unreadable: the submission is an ERROR
         s.overlay.clear();
     }
+    return s;
+}
+
+}  // namespace
+
+StudentWork intakeSubmission(const std::string& path, const std::string& workDir,
+                             const std::vector<std::string>& stages) {
+    StudentWork s = intakeInto(path, workDir, stages);
+    hideInstructorPaths(s, path, workDir);
     return s;
 }
 

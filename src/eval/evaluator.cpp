@@ -220,6 +220,7 @@ Accuracy Evaluator::mirrorAccuracy() {
     a.mirrorIdPct = mirrorIdAgreementPct(ref, seen);
     a.mirrorPsnrDb = psnrInMask(shown, exact, mask);
     a.errorPct = 100.0 - a.mirrorIdPct;
+    mirrorPictures_ = {std::move(shown), std::move(exact), std::move(mask)};
     return a;
 }
 

@@ -81,6 +81,14 @@ class Evaluator {
     // pixel is shadowed where the render is clearly darker than the all-lit one, or the all-lit
     // one clearly darker than our lighting (dark without a caster).
     ShadowEvidence shadowEvidence();
+    // The pictures behind the last mirror figures (accuracy() of the mirror stage): the
+    // submission's render, our exact stencil reflection and where the mirror is, so a feedback
+    // page can show a student what their mirror got wrong.
+    struct MirrorPictures {
+        Image shown, exact;
+        std::vector<std::uint8_t> mask;
+    };
+    const MirrorPictures& mirrorPictures() const { return mirrorPictures_; }
 
   private:
     Accuracy mirrorAccuracy();
@@ -98,6 +106,7 @@ class Evaluator {
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<Renderer> shipped_[3];  // by Shipped
     glm::vec3 sceneLight_{0};
+    MirrorPictures mirrorPictures_;
     // The references of the views seen so far, kept across overlays and shader errors (a
     // reference depends on the scene, size, camera and light only): grading a class in one
     // evaluator traces each view once. Bounded (kMaxTruths, oldest dropped first).
