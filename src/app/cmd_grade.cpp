@@ -25,6 +25,9 @@ Command addGradeCommand(CLI::App& app) {
     cmd->add_option("--regrade", args->regrade,
                     "grade these students again (hand-in names), whatever their records say");
     cmd->add_flag("--regrade-all", args->regradeAll, "grade every student again");
+    cmd->add_option("--roster", args->roster,
+                    "a CSV of id,name,email,hand-in: carried into records, grades.csv and "
+                    "pages; a student with no hand-in gets a row");
     cmd->add_option("--backend", *backend, "headless GL: auto, osmesa or egl");
     cmd->add_option("--seed", *seed,
                     "the displaced views' seed, one for the class (in every record); default: "

@@ -18,8 +18,11 @@
 #include <set>
 #include <thread>
 
+#include "course/copy_flags.h"
 #include "course/feedback_html.h"
+#include "course/release.h"
 #include "course/intake_adapter.h"
+#include "course/roster.h"
 #include "course/student_grade.h"
 #include "io/content_hash.h"
 #include "io/files.h"
@@ -93,11 +96,87 @@ std::string duration(double s) {
     return t;
 }
 
+// --roster's file, read before any work so that a malformed one costs nothing (exit 2).
+std::optional<Roster> rosterOf(const ClassGradeArgs& args) {
+    if (args.roster.empty()) return std::nullopt;
+    return loadRoster(args.roster);
+}
+
+// The roster's students with no hand-in get a record and a page ("no hand-in", every stage
+// MISSING) so the gradebook is complete; hand-ins the roster does not list are named.
+void addRosterStudents(const Roster& roster, const Assignment& a,
+                       const std::vector<std::string>& names, const std::string& out,
+                       std::set<std::string>& taken, std::vector<StudentRecord>& records,
+                       std::vector<std::string>& pages) {
+    for (const RosterEntry* e : rosterWithoutHandIn(roster, names)) {
+        records.push_back(noHandInRecord(a, *e));
+        pages.push_back("feedback/" + fileNameFor(e->handIn, taken) + ".html");
+        writeOrThrow(out + "/" + pages.back(), studentPage(records.back()));
+    }
+    std::vector<std::string> strangers = handInsNotOnRoster(roster, names);
+    if (strangers.empty()) return;
+    std::cout << strangers.size() << " hand-in" << (strangers.size() == 1 ? "" : "s")
+              << " not on the roster:";
+    for (const std::string& n : strangers) std::cout << " " << printableName(n);
+    std::cout << "\n";
+}
+
+// The class's copy flags by hand-in name, from the due files of each hand-in's snapshot
+// (course/copy_flags.h): against the shipped solution (whole file), never for the starter.
+std::map<std::string, std::vector<std::string>> copyFlagsOf(const Assignment& a,
+                                                            const std::vector<std::string>& names,
+                                                            const std::vector<std::string>& files,
+                                                            const std::string& out) {
+    std::map<std::string, std::string> solutions, starters;
+    for (const AssignmentStage* st : a.due())
+        for (const std::string& f : st->files) {
+            std::string text;
+            const GlslTree tree = st->tree == "legacy" ? GlslTree::Legacy : GlslTree::Core;
+            if (!readRegularFile(shaderTreeRoot(tree) + "/" + f, 1u << 20, text).empty()) continue;
+            solutions[f] = text;
+            try {
+                starters[f] = stripSolutions(text, f);
+            } catch (const std::exception&) {  // markers out of place: the release refuses it
+            }
+        }
+    std::vector<HandInFiles> handIns;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        HandInFiles h{names[k], {}};
+        for (const auto& [f, solution] : solutions) {
+            std::string text;
+            if (readRegularFile(out + "/work/" + files[k] + "/snapshot/" + f, 1u << 20, text, true)
+                    .empty())
+                h.files[f] = text;
+        }
+        handIns.push_back(std::move(h));
+    }
+    std::map<std::string, std::vector<std::string>> flags;
+    for (const CopyFlag& f : findCopies(handIns, solutions, starters))
+        flags[f.student].push_back(f.text());
+    return flags;
+}
+
+// What the class adds to a kept record when outputs are drawn (its roster entry, its copy
+// flags): true when that changed it, so that it is written again.
+bool annotateRecord(const std::optional<Roster>& roster,
+                    const std::map<std::string, std::vector<std::string>>& flags,
+                    const std::string& name, StudentRecord& r) {
+    bool changed = roster && attachRoster(*roster, name, r);
+    auto it = flags.find(name);
+    std::vector<std::string> mine = it == flags.end() ? std::vector<std::string>() : it->second;
+    if (mine != r.flags) {
+        r.flags = mine;
+        changed = true;
+    }
+    return changed;
+}
+
 }  // namespace
 
 int runClassGrade(const ClassGradeArgs& args) {
     if (args.jobs < 1 || args.jobs > 64) throw UsageError("--jobs: give 1 to 64");
     Assignment a = loadAssignment(args.assignment);
+    const std::optional<Roster> roster = rosterOf(args);
     std::string assignmentText;
     readRegularFile(args.assignment, 1u << 20, assignmentText);
     // A record stands on a rerun only for the same assignment text and the same hand-in.
@@ -160,7 +239,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     // Intake in the parent (no GL here): every pending submission's snapshot.
     std::vector<StudentWork> subs(n);
     for (std::size_t k : todo) {
-        subs[k] = intakeSubmission(entries[k], args.out + "/work/" + files[k]);
+        subs[k] = intakeForAssignment(a, entries[k], args.out + "/work/" + files[k]);
         subs[k].name = names[k];
         subs[k].hash = hashes[k];
         std::error_code ec;
@@ -264,6 +343,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     poll();
 
     // The class's outputs from every record (those of earlier runs too).
+    const auto flags = copyFlagsOf(a, names, files, args.out);
     std::vector<StudentRecord> records;
     std::vector<std::string> pages;
     std::size_t notGraded = 0;
@@ -277,10 +357,14 @@ int runClassGrade(const ClassGradeArgs& args) {
             continue;
         }
         if (!r->graded()) ++notGraded;
+        if (annotateRecord(roster, flags, names[k], *r))
+            writeOrThrow(recordPath(k),
+                         recordJson(*r).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
         records.push_back(*r);
         pages.push_back("feedback/" + files[k] + ".html");
         writeOrThrow(args.out + "/" + pages.back(), studentPage(*r));
     }
+    if (roster) addRosterStudents(*roster, a, names, args.out, taken, records, pages);
     writeOrThrow(args.out + "/grades.csv", gradesCsv(records));
     writeOrThrow(args.out + "/class.html", classPage(a.name, records, pages));
     double seconds =

@@ -19,6 +19,7 @@ struct ClassGradeArgs {
     int jobs = 1;
     std::vector<std::string> regrade;  // --regrade NAME...: these students again
     bool regradeAll = false;           // --regrade-all
+    std::string roster;                // --roster roster.csv (course/roster.h), or ""
     GradeSettings settings;
 };
 

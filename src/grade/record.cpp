@@ -148,8 +148,7 @@ StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
     // Messages name the student's files as handed in, not by the private snapshot's path.
     const std::string snapshot = overlay.empty() ? "" : overlay + "/";
     st.message = withoutPrefix(st.message, snapshot);
-    for (RowRecord& row : st.rows)
-        row.result.message = withoutPrefix(row.result.message, snapshot);
+    for (RowRecord& row : st.rows) row.result.message = withoutPrefix(row.result.message, snapshot);
     return st;
 }
 
@@ -247,6 +246,9 @@ json recordJson(const StudentRecord& r) {
                           {"rows", rows}});
     }
     RowCounts c = countRows(r);
+    json roster;
+    if (r.roster)
+        roster = {{"id", r.roster->id}, {"name", r.roster->name}, {"email", r.roster->email}};
     return {{"tool", r.tool},
             {"report_version", 2},
             {"assignment", r.assignment},
@@ -262,6 +264,8 @@ json recordJson(const StudentRecord& r) {
             {"seed", r.seed ? json(*r.seed) : json()},
             {"machine", {{"backend", r.backend}, {"renderer", r.machine}}},
             {"hashes", {{"hand_in", r.handInHash}, {"assignment", r.assignmentHash}}},
+            {"roster", roster},
+            {"flags", r.flags},
             {"summary",
              {{"checked", c.total},
               {"passed", c.passed},
@@ -292,6 +296,11 @@ StudentRecord recordFromJson(const json& j) {
         r.machine = j.at("machine").at("renderer").get<std::string>();
         r.handInHash = j.at("hashes").at("hand_in").get<std::string>();
         r.assignmentHash = j.at("hashes").at("assignment").get<std::string>();
+        if (j.contains("flags")) r.flags = j["flags"].get<std::vector<std::string>>();
+        if (j.contains("roster") && !j["roster"].is_null())
+            r.roster = RosterInfo{j["roster"].at("id").get<std::string>(),
+                                  j["roster"].at("name").get<std::string>(),
+                                  j["roster"].at("email").get<std::string>()};
         for (const json& s : j.at("stages")) {
             StageRecord st;
             st.stage = s.at("stage").get<std::string>();

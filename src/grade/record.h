@@ -17,7 +17,7 @@
 namespace sl {
 
 struct RowRecord {
-    CheckResult result;  // settings, figures, status, message, student files, images
+    CheckResult result;                // settings, figures, status, message, student files, images
     double points = 0, maxPoints = 0;  // both 0 for a NOT GRADED row
     std::string visibility = "visible";
     bool extraView = false;
@@ -33,6 +33,14 @@ struct StageRecord {
     std::vector<RowRecord> rows;
 };
 
+// Who a hand-in is, from the class roster (course/roster.h): drawn into grades.csv and pages.
+struct RosterInfo {
+    std::string id, name, email;
+    bool operator==(const RosterInfo& o) const {
+        return id == o.id && name == o.name && email == o.email;
+    }
+};
+
 struct StudentRecord {
     std::string tool = "shadowlab grade";
     std::string assignment, student;
@@ -46,6 +54,10 @@ struct StudentRecord {
     // Content hashes: the hand-in's files and the assignment's text. A rerun regrades a student
     // whose hand-in or assignment changed (course/class_grade.h).
     std::string handInHash, assignmentHash;
+    std::optional<RosterInfo> roster;  // --roster's entry for this hand-in, when there is one
+    // Copy flags (course/copy_flags.h): due files equal to the published solution or a
+    // classmate's once whitespace, comments and names are set aside. Never a score.
+    std::vector<std::string> flags;
 
     Status status() const;  // the worst stage's (PASS when there is none)
     int exitCode() const { return exitCodeOf(status()); }
