@@ -30,6 +30,10 @@ endif()
 add_test(NAME course_roster
          COMMAND python3 ${SL_COURSE_PY}/test_roster.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/roster)
 set_tests_properties(course_roster PROPERTIES LABELS course TIMEOUT 600)
+# The late policy: a late hand-in loses exactly the policy's points, within the grace nothing.
+add_test(NAME course_late
+         COMMAND python3 ${SL_COURSE_PY}/test_late.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/late)
+set_tests_properties(course_late PROPERTIES LABELS course TIMEOUT 1200)
 # A platform failure is never a score, and a rerun grades exactly what changed (issue 25).
 add_test(NAME course_not_graded
          COMMAND python3 ${SL_COURSE_PY}/test_regrade.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/regrade)

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -22,6 +23,7 @@
 #include "course/feedback_html.h"
 #include "course/release.h"
 #include "course/intake_adapter.h"
+#include "course/late_policy.h"
 #include "course/roster.h"
 #include "course/student_grade.h"
 #include "io/content_hash.h"
@@ -156,12 +158,44 @@ std::map<std::string, std::vector<std::string>> copyFlagsOf(const Assignment& a,
     return flags;
 }
 
+// --times's manifest, read before any work (exit 2 when malformed, or without a late policy).
+std::map<std::string, long long> timesOf(const ClassGradeArgs& args, const Assignment& a) {
+    if (args.times.empty()) return {};
+    if (!a.late)
+        throw UsageError("--times: " + printableName(args.assignment) +
+                         " has no late policy (\"late\", docs/assignment.md)");
+    return loadTimes(args.times);
+}
+
+// The late record of hand-in `name` at `entry` under the assignment's policy: its time from
+// --times, else the newest time of its files (the record says which).
+std::optional<LateRecord> lateOf(const Assignment& a, const std::map<std::string, long long>& times,
+                                 const std::string& name, const std::string& entry,
+                                 const StudentRecord& r) {
+    if (!a.late) return std::nullopt;
+    if (auto it = times.find(name); it != times.end())
+        return lateFor(*a.late, it->second, "--times", r.maxScore, r.score);
+    std::optional<long long> t = newestFileTime(entry);
+    if (!t) return std::nullopt;
+    return lateFor(*a.late, *t, "file times", r.maxScore, r.score);
+}
+
 // What the class adds to a kept record when outputs are drawn (its roster entry, its copy
-// flags): true when that changed it, so that it is written again.
+// flags, its lateness): true when that changed it, so that it is written again.
 bool annotateRecord(const std::optional<Roster>& roster,
                     const std::map<std::string, std::vector<std::string>>& flags,
-                    const std::string& name, StudentRecord& r) {
+                    const std::optional<LateRecord>& late, const std::string& name,
+                    StudentRecord& r) {
     bool changed = roster && attachRoster(*roster, name, r);
+    auto same = [](const std::optional<LateRecord>& x, const std::optional<LateRecord>& y) {
+        return x.has_value() == y.has_value() &&
+               (!x || (x->handedIn == y->handedIn && x->source == y->source &&
+                       x->days == y->days && std::abs(x->penalty - y->penalty) < 1e-9));
+    };
+    if (!same(late, r.late)) {
+        r.late = late;
+        changed = true;
+    }
     auto it = flags.find(name);
     std::vector<std::string> mine = it == flags.end() ? std::vector<std::string>() : it->second;
     if (mine != r.flags) {
@@ -177,6 +211,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     if (args.jobs < 1 || args.jobs > 64) throw UsageError("--jobs: give 1 to 64");
     Assignment a = loadAssignment(args.assignment);
     const std::optional<Roster> roster = rosterOf(args);
+    const std::map<std::string, long long> times = timesOf(args, a);
     std::string assignmentText;
     readRegularFile(args.assignment, 1u << 20, assignmentText);
     // A record stands on a rerun only for the same assignment text and the same hand-in.
@@ -357,7 +392,7 @@ int runClassGrade(const ClassGradeArgs& args) {
             continue;
         }
         if (!r->graded()) ++notGraded;
-        if (annotateRecord(roster, flags, names[k], *r))
+        if (annotateRecord(roster, flags, lateOf(a, times, names[k], entries[k], *r), names[k], *r))
             writeOrThrow(recordPath(k),
                          recordJson(*r).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
         records.push_back(*r);

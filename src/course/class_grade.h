@@ -20,6 +20,7 @@ struct ClassGradeArgs {
     std::vector<std::string> regrade;  // --regrade NAME...: these students again
     bool regradeAll = false;           // --regrade-all
     std::string roster;                // --roster roster.csv (course/roster.h), or ""
+    std::string times;                 // --times times.csv (course/late_policy.h), or ""
     GradeSettings settings;
 };
 

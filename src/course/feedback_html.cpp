@@ -216,6 +216,21 @@ std::string picturesOf(const CheckResult& row) {
     return h.str();
 }
 
+// The late policy's line: when the hand-in came and what it cost.
+std::string lateLine(const LateRecord& late, const StudentRecord& r) {
+    std::ostringstream h;
+    h << "<p>Handed in " << esc(late.handedIn) << " (from " << esc(late.source) << "): ";
+    if (late.days == 0)
+        h << "on time.";
+    else
+        h << num(late.minutes / 60.0, 1) << " hours late, " << late.days
+          << (late.days == 1 ? " day" : " days")
+          << " charged by the late policy: " << num(late.penalty) << " points off, "
+          << num(r.total()) << " of " << num(r.maxScore) << " points after the penalty.";
+    h << "</p>\n";
+    return h.str();
+}
+
 std::string pointsOf(double points, double max, Status status) {
     return status == Status::NotGraded ? "not graded" : num(points) + " of " + num(max) + " points";
 }
@@ -235,6 +250,7 @@ std::string studentPage(const StudentRecord& record) {
                           : std::string("not graded yet (the grading machine could not run "
                                         "every check; it will be graded again)"))
       << "</p>\n";
+    if (record.late) h << lateLine(*record.late, record);
     if (!record.error.empty()) h << "<p class=\"ERROR\">" << esc(record.error) << "</p>\n";
     for (const std::string& n : record.notes) h << "<p>Note: " << esc(n) << "</p>\n";
     for (const StageRecord& st : record.stages) {
@@ -404,7 +420,7 @@ std::string gradesCsv(const std::vector<StudentRecord>& records) {
     if (!records.empty())
         for (const StageRecord& st : records.front().stages)
             out << "," << csvCell(st.stage + "/" + st.tree);
-    out << ",total,max,not_graded\r\n";
+    out << ",late_penalty,total,max,not_graded\r\n";
     for (const StudentRecord& r : records) {
         const RosterInfo who = r.roster.value_or(RosterInfo{});
         out << csvCell(r.student) << "," << csvCell(who.id) << "," << csvCell(who.name) << ","
@@ -420,8 +436,9 @@ std::string gradesCsv(const std::vector<StudentRecord>& records) {
                 out << "," << num(st.points, 3);
             }
         }
+        out << "," << (r.late ? num(r.late->penalty, 3) : "");
         if (r.graded())
-            out << "," << num(r.score, 3) << "," << num(r.maxScore, 3) << ",";
+            out << "," << num(r.total(), 3) << "," << num(r.maxScore, 3) << ",";
         else
             out << ",,," << csvCell(reasons);
         out << "\r\n";

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <map>
 
+#include "course/csv.h"
 #include "course/student_grade.h"
 #include "io/files.h"
 #include "render/request.h"
@@ -12,80 +13,7 @@ namespace sl {
 
 namespace {
 
-constexpr std::size_t kMaxRosterBytes = 16u << 20;
-constexpr std::size_t kMaxRosterRows = 100000;
-
-struct CsvRecord {
-    std::vector<std::string> fields;
-    int line = 0;  // the line it starts on
-};
-
-// RFC 4180 records of `text` (CRLF or LF line ends; a quoted field may hold commas, quotes
-// doubled and line breaks). Blank lines are skipped. `fail(line, what)` throws.
-template <class Fail>
-std::vector<CsvRecord> csvRecords(const std::string& text, Fail fail) {
-    std::vector<CsvRecord> out;
-    int line = 1;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        if (text[i] == '\n' || (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n')) {
-            i += text[i] == '\r' ? 2 : 1;  // a blank line
-            ++line;
-            continue;
-        }
-        CsvRecord rec;
-        rec.line = line;
-        for (;;) {  // one field per round
-            std::string field;
-            if (i < text.size() && text[i] == '"') {
-                const int opened = line;
-                for (++i;; ++i) {
-                    if (i >= text.size()) fail(opened, "a quoted field is never closed");
-                    if (text[i] == '"') {
-                        if (i + 1 < text.size() && text[i + 1] == '"') {
-                            field += '"';
-                            ++i;
-                            continue;
-                        }
-                        ++i;
-                        break;
-                    }
-                    if (text[i] == '\n') ++line;
-                    field += text[i];
-                }
-                if (i < text.size() && text[i] != ',' && text[i] != '\n' && text[i] != '\r')
-                    fail(line, "text after a closing quote (a quote inside a field is doubled)");
-            } else {
-                while (i < text.size() && text[i] != ',' && text[i] != '\n' && text[i] != '\r') {
-                    if (text[i] == '"')
-                        fail(line,
-                             "a quote inside an unquoted field (quote the field, double "
-                             "the quote)");
-                    field += text[i++];
-                }
-            }
-            rec.fields.push_back(field);
-            if (i < text.size() && text[i] == ',') {
-                ++i;
-                continue;
-            }
-            if (i < text.size() && text[i] == '\r') {
-                if (i + 1 >= text.size() || text[i + 1] != '\n')
-                    fail(line, "a carriage return that does not end a line");
-                ++i;
-            }
-            if (i < text.size() && text[i] == '\n') {
-                ++i;
-                ++line;
-            }
-            break;
-        }
-        out.push_back(std::move(rec));
-        if (out.size() > kMaxRosterRows + 1)
-            fail(line, "more than " + std::to_string(kMaxRosterRows) + " students");
-    }
-    return out;
-}
+constexpr std::size_t kMaxRosterRows = 100000;  // students
 
 std::string trimmed(const std::string& s) {
     std::size_t b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
@@ -107,19 +35,8 @@ const RosterEntry* Roster::find(const std::string& name) const {
 }
 
 Roster parseRoster(const std::string& input, const std::string& origin) {
-    auto fail = [&](int line, const std::string& what) {
-        throw UsageError(printableName(origin) + ": line " + std::to_string(line) + ": " + what);
-    };
-    std::string text = input;
-    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a byte order mark
-    if (validUtf8(text) != text) {
-        std::size_t at = 0;
-        std::string good = validUtf8(text);
-        while (at < text.size() && at < good.size() && text[at] == good[at]) ++at;
-        fail(int(std::count(text.begin(), text.begin() + long(at), '\n')) + 1,
-             "not UTF-8 (save the file as UTF-8)");
-    }
-    std::vector<CsvRecord> records = csvRecords(text, fail);
+    auto fail = [&](int line, const std::string& what) { csvFail(origin, line, what); };
+    std::vector<CsvRecord> records = parseCsv(input, origin, kMaxRosterRows + 1);
     if (records.empty())
         fail(1, "empty: give a header row id,name,email,hand-in and a student per row");
     static const std::vector<std::vector<std::string>> kHeader = {
@@ -164,7 +81,7 @@ Roster parseRoster(const std::string& input, const std::string& origin) {
 
 Roster loadRoster(const std::string& path) {
     std::string text;
-    std::string err = readRegularFile(path, kMaxRosterBytes, text);
+    std::string err = readRegularFile(path, kCsvMaxBytes, text);
     if (!err.empty()) throw UsageError("--roster: " + printableName(path) + ": " + err);
     return parseRoster(text, path);
 }

@@ -266,6 +266,12 @@ json recordJson(const StudentRecord& r) {
             {"hashes", {{"hand_in", r.handInHash}, {"assignment", r.assignmentHash}}},
             {"roster", roster},
             {"flags", r.flags},
+            {"late", r.late ? json{{"handed_in", r.late->handedIn},
+                                   {"source", r.late->source},
+                                   {"minutes", rounded(r.late->minutes)},
+                                   {"days", r.late->days},
+                                   {"penalty", rounded(r.late->penalty)}}
+                            : json()},
             {"summary",
              {{"checked", c.total},
               {"passed", c.passed},
@@ -297,6 +303,12 @@ StudentRecord recordFromJson(const json& j) {
         r.handInHash = j.at("hashes").at("hand_in").get<std::string>();
         r.assignmentHash = j.at("hashes").at("assignment").get<std::string>();
         if (j.contains("flags")) r.flags = j["flags"].get<std::vector<std::string>>();
+        if (j.contains("late") && !j["late"].is_null()) {
+            const json& l = j["late"];
+            r.late = LateRecord{l.at("handed_in").get<std::string>(),
+                                l.at("source").get<std::string>(), l.at("minutes").get<double>(),
+                                l.at("days").get<int>(), l.at("penalty").get<double>()};
+        }
         if (j.contains("roster") && !j["roster"].is_null())
             r.roster = RosterInfo{j["roster"].at("id").get<std::string>(),
                                   j["roster"].at("name").get<std::string>(),

@@ -41,6 +41,16 @@ struct RosterInfo {
     }
 };
 
+// A late hand-in under the assignment's late policy (course/late_policy.h): applied when the
+// outputs are drawn (grades.csv's total, the page), the graded score is kept as it is.
+struct LateRecord {
+    std::string handedIn;  // ISO 8601, UTC
+    std::string source;    // where the time came from: a manifest, file times, Gradescope
+    double minutes = 0;    // after the deadline (0 within the grace)
+    int days = 0;          // days or parts of a day charged
+    double penalty = 0;    // points lost
+};
+
 struct StudentRecord {
     std::string tool = "shadowlab grade";
     std::string assignment, student;
@@ -58,6 +68,8 @@ struct StudentRecord {
     // Copy flags (course/copy_flags.h): due files equal to the published solution or a
     // classmate's once whitespace, comments and names are set aside. Never a score.
     std::vector<std::string> flags;
+    std::optional<LateRecord> late;  // when the assignment has a late policy
+    double total() const { return late ? score - late->penalty : score; }
 
     Status status() const;  // the worst stage's (PASS when there is none)
     int exitCode() const { return exitCodeOf(status()); }

@@ -16,6 +16,8 @@ snapshot's; the copy flags are in the records and on the class page, not on a st
 import json, os, re, shutil, subprocess, sys, zipfile
 
 sys.path.insert(0, os.path.dirname(__file__))
+from expect import expect, finish, grade
+
 import pages
 
 exe, repo, work = sys.argv[1:4]
@@ -59,15 +61,9 @@ put(klass, "twin/mirror/surface.frag", twin)
 put(klass, "sol/mirror/surface.frag", "/* written by me */\n" + surface.replace("    ", "  "))
 
 out = os.path.join(work, "out")
-r = subprocess.run([exe, "grade", klass, "--assignment", lab, "--out", out, "--jobs", "1",
-                    "--time-limit", "300"], capture_output=True, text=True, timeout=1100)
-print(r.stdout, r.stderr)
+r = grade(exe, klass, lab, out, "--jobs", "1", "--time-limit", "300")
 assert r.returncode == 0, r.returncode
 
-failures = []
-def expect(ok, what):
-    if not ok:
-        failures.append(what)
 
 dim = json.load(open(os.path.join(out, "students", "dim.json")))
 mirror = [st for st in dim["stages"] if st["stage"] == "mirror"][0]
@@ -133,7 +129,4 @@ print("dim.html in Chromium:", found)
 expect(found["images"] >= 3 and found["broken"] == 0, "images not decoded: %s" % found)
 expect(found["overflowing"] == 0 and not found["pageWider"], "the page overflows: %s" % found)
 
-if failures:
-    print("FAILED:\n  " + "\n  ".join(failures))
-    sys.exit(1)
-print("feedback: the failing figures named, the mirror's pictures shown, notes right, no paths")
+finish("feedback: the failing figures named, the mirror's pictures shown, notes right, no paths")

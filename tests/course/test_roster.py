@@ -11,6 +11,9 @@ rosters: exit 2, one line naming the file and the line, nothing graded.
 usage: test_roster.py SHADOWLAB REPO WORKDIR"""
 import csv, json, os, shutil, subprocess, sys, zipfile
 
+sys.path.insert(0, os.path.dirname(__file__))
+from expect import expect, finish, grade
+
 exe, repo, work = sys.argv[1:4]
 work = os.path.abspath(work)
 shutil.rmtree(work, ignore_errors=True)
@@ -28,15 +31,9 @@ open(roster, "wb").write(
     "1002,Béa Šimić,bea@example.edu,bea\r\n"
     "1003,\"Carl \"\"C\"\" Org\",carl@example.edu,carl\r\n".encode("utf-8"))
 
-failures = []
-def expect(ok, what):
-    if not ok:
-        failures.append(what)
 
 out = os.path.join(work, "out")
-r = subprocess.run([exe, "grade", klass, "--assignment", lab, "--out", out, "--roster", roster,
-                    "--time-limit", "300"], capture_output=True, text=True, timeout=600)
-print(r.stdout, r.stderr)
+r = grade(exe, klass, lab, out, "--roster", roster, "--time-limit", "300")
 expect(r.returncode == 0, "exit %d" % r.returncode)
 expect("1 hand-in not on the roster: zed" in r.stdout, "zed not named in the summary")
 
@@ -44,7 +41,7 @@ rows = list(csv.reader(open(os.path.join(out, "grades.csv"), encoding="utf-8", n
 header = rows[0]
 expect(header[:5] == ["student", "id", "name", "email", "status"], "header %s" % header)
 due = [s["stage"] + "/" + s["tree"] for s in json.load(open(lab))["stages"] if s.get("due", True)]
-expect(header[5:] == due + ["total", "max", "not_graded"], "header %s" % header)
+expect(header[5:] == due + ["late_penalty", "total", "max", "not_graded"], "header %s" % header)
 by = {row[0]: dict(zip(header, row)) for row in rows[1:]}
 expect(sorted(by) == ["ann", "bea", "carl", "zed"], "rows %s" % sorted(by))
 want = {"ann": ("1001", "Ng, Ann", "ann@example.edu"),
@@ -93,7 +90,4 @@ for name, (text, message) in bad.items():
     expect(not os.path.exists(work + "/bad/students") or not os.listdir(work + "/bad/students"),
            name + ": graded although the roster is malformed")
 
-if failures:
-    print("FAILED:\n  " + "\n  ".join(failures))
-    sys.exit(1)
-print("roster: columns, records, the student with no hand-in, malformed rosters refused")
+finish("roster: columns, records, the student with no hand-in, malformed rosters refused")
