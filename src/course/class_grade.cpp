@@ -21,6 +21,7 @@
 
 #include "course/copy_flags.h"
 #include "course/feedback_html.h"
+#include "course/gradebook_exports.h"
 #include "course/release.h"
 #include "course/intake_adapter.h"
 #include "course/late_policy.h"
@@ -401,6 +402,8 @@ int runClassGrade(const ClassGradeArgs& args) {
     }
     if (roster) addRosterStudents(*roster, a, names, args.out, taken, records, pages);
     writeOrThrow(args.out + "/grades.csv", gradesCsv(records));
+    writeOrThrow(args.out + "/gradebook-canvas.csv", canvasCsv(a.name, records));
+    writeOrThrow(args.out + "/gradebook-moodle.csv", moodleCsv(a.name, records));
     writeOrThrow(args.out + "/class.html", classPage(a.name, records, pages));
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -56,6 +56,10 @@ for who, (penalty, total, source, days) in want.items():
     expect(row["late_penalty"] == penalty and row["total"] == total,
            "%s: penalty %s total %s, expected %s %s" % (who, row["late_penalty"], row["total"], penalty, total))
     expect(rec["late"]["source"] == source and rec["late"]["days"] == days, "%s: %s" % (who, rec["late"]))
+# The LMS exports carry the total after the penalty (no roster: Canvas's Student is the hand-in).
+canvas = {row[0]: row[5] for row in csv.reader(open(os.path.join(out, "gradebook-canvas.csv")))}
+expect(canvas == {"Student": "Late lab", "late": "16.00", "grace": "20.00", "filetime": "14.00"},
+       "canvas export %s" % canvas)
 page = open(os.path.join(out, "feedback", "late.html"), encoding="utf-8").read()
 expect("36.0 hours late, 2 days charged by the late policy: 4.00 points off, 16.00 of 20.00" in page,
        "late's page does not say what the policy took")

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""ctest course_roster: `grade --roster` (issue 29, docs/assignment.md "Roster"). A roster with a
+"""ctest course_roster: `grade --roster` and the LMS exports (issue 29, docs/assignment.md
+"Roster", "Gradebook exports"). A roster with a
 byte order mark, a quoted name holding a comma and a non-ASCII name; hand-ins that need no
 rendering (a README only, an empty zip) so the test is quick:
   ann       on the roster, a README only        -> her row: id, name, email, MISSING, 0
@@ -69,6 +70,21 @@ page = open(os.path.join(out, "feedback", "bea.html"), encoding="utf-8").read()
 expect("Béa Šimić" in page, "bea's page does not name her")
 expect("Ng, Ann" in open(os.path.join(out, "class.html"), encoding="utf-8").read(),
        "the class page does not name Ann")
+
+# The LMS exports: Canvas's Gradebook import columns and Moodle's CSV grade import, exactly.
+title = json.load(open(lab))["name"]
+canvas = list(csv.reader(open(os.path.join(out, "gradebook-canvas.csv"), encoding="utf-8", newline="")))
+expect(canvas[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", title],
+       "canvas header %s" % canvas[0])
+expect(sorted(canvas[1:]) == sorted([["Ng, Ann", "", "1001", "", "", "0.00"],
+                                     ["Béa Šimić", "", "1002", "", "", "0.00"],
+                                     ['Carl "C" Org', "", "1003", "", "", "0.00"],
+                                     ["zed", "", "", "", "", "0.00"]]), "canvas rows %s" % canvas[1:])
+moodle = list(csv.reader(open(os.path.join(out, "gradebook-moodle.csv"), encoding="utf-8", newline="")))
+expect(moodle[0] == ["ID number", "Email address", title], "moodle header %s" % moodle[0])
+expect(sorted(moodle[1:]) == sorted([["1001", "ann@example.edu", "0.00"], ["1002", "bea@example.edu", "0.00"],
+                                     ["1003", "carl@example.edu", "0.00"], ["", "", "0.00"]]),
+       "moodle rows %s" % moodle[1:])
 
 # Malformed rosters: exit 2, one line naming the file and the line.
 bad = {
