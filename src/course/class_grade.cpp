@@ -19,12 +19,13 @@
 #include <set>
 #include <thread>
 
+#include "course/adjustments.h"
 #include "course/copy_flags.h"
 #include "course/feedback_html.h"
 #include "course/gradebook_exports.h"
-#include "course/release.h"
 #include "course/intake_adapter.h"
 #include "course/late_policy.h"
+#include "course/release.h"
 #include "course/roster.h"
 #include "course/student_grade.h"
 #include "io/content_hash.h"
@@ -181,17 +182,44 @@ std::optional<LateRecord> lateOf(const Assignment& a, const std::map<std::string
     return lateFor(*a.late, *t, "file times", r.maxScore, r.score);
 }
 
+// The class's adjustments (--adjust, or those kept in DIR/adjustments.csv by an earlier run).
+std::map<std::string, std::vector<Adjustment>> adjustmentsOf(
+    const ClassGradeArgs& args, const Assignment& a, const std::vector<std::string>& names) {
+    std::vector<std::string> stages;
+    for (const AssignmentStage* st : a.due()) {
+        stages.push_back(st->stage);
+        stages.push_back(st->stage + "/" + st->tree);
+    }
+    return loadAdjustments(args.adjust, args.out + "/adjustments.csv", names, stages);
+}
+
 // What the class adds to a kept record when outputs are drawn (its roster entry, its copy
-// flags, its lateness): true when that changed it, so that it is written again.
+// flags, its lateness, its adjustments): true when that changed it, so it is written again.
 bool annotateRecord(const std::optional<Roster>& roster,
                     const std::map<std::string, std::vector<std::string>>& flags,
-                    const std::optional<LateRecord>& late, const std::string& name,
-                    StudentRecord& r) {
+                    const std::optional<LateRecord>& late,
+                    const std::map<std::string, std::vector<Adjustment>>& adjustments,
+                    const std::string& name, StudentRecord& r) {
     bool changed = roster && attachRoster(*roster, name, r);
+    auto given = adjustments.find(name);
+    std::vector<Adjustment> mineAdjusted =
+        given == adjustments.end() ? std::vector<Adjustment>() : given->second;
+    auto sameAdjustments = [](const std::vector<Adjustment>& x, const std::vector<Adjustment>& y) {
+        if (x.size() != y.size()) return false;
+        for (std::size_t i = 0; i < x.size(); ++i)
+            if (x[i].stage != y[i].stage || x[i].points != y[i].points ||
+                x[i].reason != y[i].reason)
+                return false;
+        return true;
+    };
+    if (!sameAdjustments(mineAdjusted, r.adjustments)) {
+        r.adjustments = mineAdjusted;
+        changed = true;
+    }
     auto same = [](const std::optional<LateRecord>& x, const std::optional<LateRecord>& y) {
         return x.has_value() == y.has_value() &&
-               (!x || (x->handedIn == y->handedIn && x->source == y->source &&
-                       x->days == y->days && std::abs(x->penalty - y->penalty) < 1e-9));
+               (!x || (x->handedIn == y->handedIn && x->source == y->source && x->days == y->days &&
+                       std::abs(x->penalty - y->penalty) < 1e-9));
     };
     if (!same(late, r.late)) {
         r.late = late;
@@ -241,6 +269,7 @@ int runClassGrade(const ClassGradeArgs& args) {
         names.push_back(submissionName(e));
         files.push_back(fileNameFor(names.back(), taken));
     }
+    const auto adjustments = adjustmentsOf(args, a, names);
     for (const std::string& wanted : args.regrade)
         if (std::find(names.begin(), names.end(), wanted) == names.end())
             throw UsageError("--regrade: no hand-in named '" + printableName(wanted) + "' in " +
@@ -393,7 +422,8 @@ int runClassGrade(const ClassGradeArgs& args) {
             continue;
         }
         if (!r->graded()) ++notGraded;
-        if (annotateRecord(roster, flags, lateOf(a, times, names[k], entries[k], *r), names[k], *r))
+        if (annotateRecord(roster, flags, lateOf(a, times, names[k], entries[k], *r), adjustments,
+                           names[k], *r))
             writeOrThrow(recordPath(k),
                          recordJson(*r).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
         records.push_back(*r);

@@ -21,6 +21,7 @@ struct ClassGradeArgs {
     bool regradeAll = false;           // --regrade-all
     std::string roster;                // --roster roster.csv (course/roster.h), or ""
     std::string times;                 // --times times.csv (course/late_policy.h), or ""
+    std::string adjust;                // --adjust adjust.csv (course/adjustments.h), or ""
     GradeSettings settings;
 };
 

@@ -251,6 +251,12 @@ std::string studentPage(const StudentRecord& record) {
                                         "every check; it will be graded again)"))
       << "</p>\n";
     if (record.late) h << lateLine(*record.late, record);
+    for (const Adjustment& a : record.adjustments)
+        h << "<p>Adjusted by your teaching staff: " << (a.points >= 0 ? "+" : "") << num(a.points)
+          << " points on " << esc(a.stage) << ": " << esc(a.reason) << "</p>\n";
+    if (!record.adjustments.empty() && record.graded())
+        h << "<p>Your total: " << num(record.total()) << " of " << num(record.maxScore)
+          << " points.</p>\n";
     if (!record.error.empty()) h << "<p class=\"ERROR\">" << esc(record.error) << "</p>\n";
     for (const std::string& n : record.notes) h << "<p>Note: " << esc(n) << "</p>\n";
     for (const StageRecord& st : record.stages) {
@@ -420,7 +426,7 @@ std::string gradesCsv(const std::vector<StudentRecord>& records) {
     if (!records.empty())
         for (const StageRecord& st : records.front().stages)
             out << "," << csvCell(st.stage + "/" + st.tree);
-    out << ",late_penalty,total,max,not_graded\r\n";
+    out << ",adjustments,late_penalty,total,max,not_graded\r\n";
     for (const StudentRecord& r : records) {
         const RosterInfo who = r.roster.value_or(RosterInfo{});
         out << csvCell(r.student) << "," << csvCell(who.id) << "," << csvCell(who.name) << ","
@@ -436,7 +442,10 @@ std::string gradesCsv(const std::vector<StudentRecord>& records) {
                 out << "," << num(st.points, 3);
             }
         }
-        out << "," << (r.late ? num(r.late->penalty, 3) : "");
+        double adjusted = 0;
+        for (const Adjustment& a : r.adjustments) adjusted += a.points;
+        out << "," << (r.adjustments.empty() ? "" : num(adjusted, 3)) << ","
+            << (r.late ? num(r.late->penalty, 3) : "");
         if (r.graded())
             out << "," << num(r.total(), 3) << "," << num(r.maxScore, 3) << ",";
         else

@@ -81,6 +81,12 @@ void sumStudent(StudentRecord& r) {
 
 }  // namespace
 
+double StudentRecord::total() const {
+    double t = score - (late ? late->penalty : 0.0);
+    for (const Adjustment& a : adjustments) t += a.points;
+    return rounded(std::clamp(t, 0.0, std::max(maxScore, 0.0)));
+}
+
 Status StudentRecord::status() const {
     Status s = Status::Pass;
     for (const StageRecord& st : stages) s = worst(s, st.status);
@@ -222,6 +228,13 @@ RowCounts countRows(const StudentRecord& r) {
     return c;
 }
 
+static json adjustmentsJson(const std::vector<Adjustment>& adjustments) {
+    json out = json::array();
+    for (const Adjustment& a : adjustments)
+        out.push_back({{"stage", a.stage}, {"points", a.points}, {"reason", a.reason}});
+    return out;
+}
+
 json recordJson(const StudentRecord& r) {
     json stages = json::array();
     for (const StageRecord& st : r.stages) {
@@ -266,6 +279,7 @@ json recordJson(const StudentRecord& r) {
             {"hashes", {{"hand_in", r.handInHash}, {"assignment", r.assignmentHash}}},
             {"roster", roster},
             {"flags", r.flags},
+            {"adjustments", adjustmentsJson(r.adjustments)},
             {"late", r.late ? json{{"handed_in", r.late->handedIn},
                                    {"source", r.late->source},
                                    {"minutes", rounded(r.late->minutes)},
@@ -303,6 +317,11 @@ StudentRecord recordFromJson(const json& j) {
         r.handInHash = j.at("hashes").at("hand_in").get<std::string>();
         r.assignmentHash = j.at("hashes").at("assignment").get<std::string>();
         if (j.contains("flags")) r.flags = j["flags"].get<std::vector<std::string>>();
+        if (j.contains("adjustments"))
+            for (const json& a : j["adjustments"])
+                r.adjustments.push_back({a.at("stage").get<std::string>(),
+                                         a.at("points").get<double>(),
+                                         a.at("reason").get<std::string>()});
         if (j.contains("late") && !j["late"].is_null()) {
             const json& l = j["late"];
             r.late = LateRecord{l.at("handed_in").get<std::string>(),

@@ -51,6 +51,14 @@ struct LateRecord {
     double penalty = 0;    // points lost
 };
 
+// A TA's adjustment of one stage (course/adjustments.h): points added (or taken off, < 0) and
+// the reason the student reads. Applied when the outputs are drawn.
+struct Adjustment {
+    std::string stage;  // as the TA wrote it: "margin" or "margin/core"
+    double points = 0;
+    std::string reason;
+};
+
 struct StudentRecord {
     std::string tool = "shadowlab grade";
     std::string assignment, student;
@@ -69,7 +77,9 @@ struct StudentRecord {
     // classmate's once whitespace, comments and names are set aside. Never a score.
     std::vector<std::string> flags;
     std::optional<LateRecord> late;  // when the assignment has a late policy
-    double total() const { return late ? score - late->penalty : score; }
+    std::vector<Adjustment> adjustments;
+    // The score with the adjustments and the late penalty, within [0, maxScore].
+    double total() const;
 
     Status status() const;  // the worst stage's (PASS when there is none)
     int exitCode() const { return exitCodeOf(status()); }

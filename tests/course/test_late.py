@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""ctest course_late: the assignment's late policy in `grade` (docs/assignment.md "Late policy").
+"""ctest course_late: the assignment's late policy and TAs' adjustments in `grade`
+(docs/assignment.md "Late policy", "Adjustments").
 Deadline 2026-12-04T23:59:00+01:00, grace 15 minutes, 10 % of the points per day or part of a
 day, cap 30 %; rgb due (20 points, one lesson in one view, so it renders quickly); every student
 hands in the shipped (correct) rgb/lit.frag:
@@ -7,7 +8,8 @@ hands in the shipped (correct) rgb/lit.frag:
   grace     --times: 10 minutes after               -> on time: total 20
   filetime  not in --times; its file's time 3 days late -> capped at 30 %: 6 off, total 14
 Checks grades.csv's late_penalty and total, each record's `late` (with its source), the page;
-then a malformed --times and --times without a late policy: exit 2 naming file and line.
+then --adjust (totals without a regrade, reasons on the page, kept across a regrade, [0, max]);
+then a malformed --times or --adjust and --times without a late policy: exit 2 with the line.
 usage: test_late.py SHADOWLAB REPO WORKDIR"""
 import calendar, csv, json, os, shutil, subprocess, sys, time
 
@@ -63,6 +65,35 @@ expect(canvas == {"Student": "Late lab", "late": "16.00", "grace": "20.00", "fil
 page = open(os.path.join(out, "feedback", "late.html"), encoding="utf-8").read()
 expect("36.0 hours late, 2 days charged by the late policy: 4.00 points off, 16.00 of 20.00" in page,
        "late's page does not say what the policy took")
+
+# TAs' adjustments: applied to the totals without regrading, shown with their reason, kept for
+# later runs (a regrade without --adjust keeps them), the total within [0, max].
+adjust = os.path.join(work, "adjust.csv")
+open(adjust, "w").write('hand-in,stage,points,reason\n'
+                        'late,rgb,+2,extra credit for the write-up\n'
+                        'grace,rgb/core,-1.5,"README missing, see the syllabus"\n'
+                        'filetime,rgb,100,a generous TA\n')
+r = grade(exe, klass, lab, out, "--times", times, "--adjust", adjust, "--time-limit", "300")
+expect(r.returncode == 0 and "3 already graded, 0 to grade" in r.stdout, "adjustments regraded someone")
+totals = {row["student"]: (row["adjustments"], row["total"])
+          for row in csv.DictReader(open(os.path.join(out, "grades.csv")))}
+want = {"late": ("2.000", "18.000"), "grace": ("-1.500", "18.500"), "filetime": ("100.000", "20.000")}
+expect(totals == want, "adjusted totals %s, expected %s" % (totals, want))
+page = open(os.path.join(out, "feedback", "grace.html"), encoding="utf-8").read()
+expect("-1.50 points on rgb/core: README missing, see the syllabus" in page, "grace's page: no reason")
+r = grade(exe, klass, lab, out, "--times", times, "--regrade", "late", "--time-limit", "300")
+totals = {row["student"]: (row["adjustments"], row["total"])
+          for row in csv.DictReader(open(os.path.join(out, "grades.csv")))}
+expect(r.returncode == 0 and r.stdout.count("[student ") == 1, "the regrade: %s" % r.stdout)
+expect(totals == want, "after a regrade without --adjust: %s, expected %s" % (totals, want))
+rec = json.load(open(os.path.join(out, "students", "late.json")))
+expect(rec["adjustments"] == [{"stage": "rgb", "points": 2.0, "reason": "extra credit for the write-up"}],
+       "late's record: %s" % rec["adjustments"])
+open(adjust, "w").write("hand-in,stage,points,reason\nlate,rgb,2,ok\nnobody,rgb,1,x\n")
+r = subprocess.run([exe, "grade", klass, "--assignment", lab, "--out", out, "--adjust", adjust],
+                   capture_output=True, text=True, timeout=120)
+expect(r.returncode == 2 and "adjust.csv: line 3: no hand-in named 'nobody' in the class" in r.stderr,
+       "bad adjust: exit %d %s" % (r.returncode, r.stderr))
 
 # Malformed manifests and a manifest without a policy: exit 2, one line with file and line.
 bad = os.path.join(work, "bad.csv")

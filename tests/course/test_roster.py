@@ -42,7 +42,7 @@ rows = list(csv.reader(open(os.path.join(out, "grades.csv"), encoding="utf-8", n
 header = rows[0]
 expect(header[:5] == ["student", "id", "name", "email", "status"], "header %s" % header)
 due = [s["stage"] + "/" + s["tree"] for s in json.load(open(lab))["stages"] if s.get("due", True)]
-expect(header[5:] == due + ["late_penalty", "total", "max", "not_graded"], "header %s" % header)
+expect(header[5:] == due + ["adjustments", "late_penalty", "total", "max", "not_graded"], "header %s" % header)
 by = {row[0]: dict(zip(header, row)) for row in rows[1:]}
 expect(sorted(by) == ["ann", "bea", "carl", "zed"], "rows %s" % sorted(by))
 want = {"ann": ("1001", "Ng, Ann", "ann@example.edu"),
