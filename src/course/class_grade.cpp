@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -19,13 +18,10 @@
 #include <set>
 #include <thread>
 
-#include "course/adjustments.h"
-#include "course/copy_flags.h"
+#include "course/class_annotations.h"
 #include "course/feedback_html.h"
 #include "course/gradebook_exports.h"
 #include "course/intake_adapter.h"
-#include "course/late_policy.h"
-#include "course/release.h"
 #include "course/roster.h"
 #include "course/student_grade.h"
 #include "io/content_hash.h"
@@ -100,12 +96,6 @@ std::string duration(double s) {
     return t;
 }
 
-// --roster's file, read before any work so that a malformed one costs nothing (exit 2).
-std::optional<Roster> rosterOf(const ClassGradeArgs& args) {
-    if (args.roster.empty()) return std::nullopt;
-    return loadRoster(args.roster);
-}
-
 // The roster's students with no hand-in get a record and a page ("no hand-in", every stage
 // MISSING) so the gradebook is complete; hand-ins the roster does not list are named.
 void addRosterStudents(const Roster& roster, const Assignment& a,
@@ -125,122 +115,11 @@ void addRosterStudents(const Roster& roster, const Assignment& a,
     std::cout << "\n";
 }
 
-// The class's copy flags by hand-in name, from the due files of each hand-in's snapshot
-// (course/copy_flags.h): against the shipped solution (whole file), never for the starter.
-std::map<std::string, std::vector<std::string>> copyFlagsOf(const Assignment& a,
-                                                            const std::vector<std::string>& names,
-                                                            const std::vector<std::string>& files,
-                                                            const std::string& out) {
-    std::map<std::string, std::string> solutions, starters;
-    for (const AssignmentStage* st : a.due())
-        for (const std::string& f : st->files) {
-            std::string text;
-            const GlslTree tree = st->tree == "legacy" ? GlslTree::Legacy : GlslTree::Core;
-            if (!readRegularFile(shaderTreeRoot(tree) + "/" + f, 1u << 20, text).empty()) continue;
-            solutions[f] = text;
-            try {
-                starters[f] = stripSolutions(text, f);
-            } catch (const std::exception&) {  // markers out of place: the release refuses it
-            }
-        }
-    std::vector<HandInFiles> handIns;
-    for (std::size_t k = 0; k < names.size(); ++k) {
-        HandInFiles h{names[k], {}};
-        for (const auto& [f, solution] : solutions) {
-            std::string text;
-            if (readRegularFile(out + "/work/" + files[k] + "/snapshot/" + f, 1u << 20, text, true)
-                    .empty())
-                h.files[f] = text;
-        }
-        handIns.push_back(std::move(h));
-    }
-    std::map<std::string, std::vector<std::string>> flags;
-    for (const CopyFlag& f : findCopies(handIns, solutions, starters))
-        flags[f.student].push_back(f.text());
-    return flags;
-}
-
-// --times's manifest, read before any work (exit 2 when malformed, or without a late policy).
-std::map<std::string, long long> timesOf(const ClassGradeArgs& args, const Assignment& a) {
-    if (args.times.empty()) return {};
-    if (!a.late)
-        throw UsageError("--times: " + printableName(args.assignment) +
-                         " has no late policy (\"late\", docs/assignment.md)");
-    return loadTimes(args.times);
-}
-
-// The late record of hand-in `name` at `entry` under the assignment's policy: its time from
-// --times, else the newest time of its files (the record says which).
-std::optional<LateRecord> lateOf(const Assignment& a, const std::map<std::string, long long>& times,
-                                 const std::string& name, const std::string& entry,
-                                 const StudentRecord& r) {
-    if (!a.late) return std::nullopt;
-    if (auto it = times.find(name); it != times.end())
-        return lateFor(*a.late, it->second, "--times", r.maxScore, r.score);
-    std::optional<long long> t = newestFileTime(entry);
-    if (!t) return std::nullopt;
-    return lateFor(*a.late, *t, "file times", r.maxScore, r.score);
-}
-
-// The class's adjustments (--adjust, or those kept in DIR/adjustments.csv by an earlier run).
-std::map<std::string, std::vector<Adjustment>> adjustmentsOf(
-    const ClassGradeArgs& args, const Assignment& a, const std::vector<std::string>& names) {
-    std::vector<std::string> stages;
-    for (const AssignmentStage* st : a.due()) {
-        stages.push_back(st->stage);
-        stages.push_back(st->stage + "/" + st->tree);
-    }
-    return loadAdjustments(args.adjust, args.out + "/adjustments.csv", names, stages);
-}
-
-// What the class adds to a kept record when outputs are drawn (its roster entry, its copy
-// flags, its lateness, its adjustments): true when that changed it, so it is written again.
-bool annotateRecord(const std::optional<Roster>& roster,
-                    const std::map<std::string, std::vector<std::string>>& flags,
-                    const std::optional<LateRecord>& late,
-                    const std::map<std::string, std::vector<Adjustment>>& adjustments,
-                    const std::string& name, StudentRecord& r) {
-    bool changed = roster && attachRoster(*roster, name, r);
-    auto given = adjustments.find(name);
-    std::vector<Adjustment> mineAdjusted =
-        given == adjustments.end() ? std::vector<Adjustment>() : given->second;
-    auto sameAdjustments = [](const std::vector<Adjustment>& x, const std::vector<Adjustment>& y) {
-        if (x.size() != y.size()) return false;
-        for (std::size_t i = 0; i < x.size(); ++i)
-            if (x[i].stage != y[i].stage || x[i].points != y[i].points ||
-                x[i].reason != y[i].reason)
-                return false;
-        return true;
-    };
-    if (!sameAdjustments(mineAdjusted, r.adjustments)) {
-        r.adjustments = mineAdjusted;
-        changed = true;
-    }
-    auto same = [](const std::optional<LateRecord>& x, const std::optional<LateRecord>& y) {
-        return x.has_value() == y.has_value() &&
-               (!x || (x->handedIn == y->handedIn && x->source == y->source && x->days == y->days &&
-                       std::abs(x->penalty - y->penalty) < 1e-9));
-    };
-    if (!same(late, r.late)) {
-        r.late = late;
-        changed = true;
-    }
-    auto it = flags.find(name);
-    std::vector<std::string> mine = it == flags.end() ? std::vector<std::string>() : it->second;
-    if (mine != r.flags) {
-        r.flags = mine;
-        changed = true;
-    }
-    return changed;
-}
-
 }  // namespace
 
 int runClassGrade(const ClassGradeArgs& args) {
     if (args.jobs < 1 || args.jobs > 64) throw UsageError("--jobs: give 1 to 64");
     Assignment a = loadAssignment(args.assignment);
-    const std::optional<Roster> roster = rosterOf(args);
-    const std::map<std::string, long long> times = timesOf(args, a);
     std::string assignmentText;
     readRegularFile(args.assignment, 1u << 20, assignmentText);
     // A record stands on a rerun only for the same assignment text and the same hand-in.
@@ -269,7 +148,8 @@ int runClassGrade(const ClassGradeArgs& args) {
         names.push_back(submissionName(e));
         files.push_back(fileNameFor(names.back(), taken));
     }
-    const auto adjustments = adjustmentsOf(args, a, names);
+    // The roster, --times and the adjustments: read (and refused, exit 2) before any work.
+    ClassAnnotations annotations = readAnnotations(args, a, names);
     for (const std::string& wanted : args.regrade)
         if (std::find(names.begin(), names.end(), wanted) == names.end())
             throw UsageError("--regrade: no hand-in named '" + printableName(wanted) + "' in " +
@@ -408,7 +288,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     poll();
 
     // The class's outputs from every record (those of earlier runs too).
-    const auto flags = copyFlagsOf(a, names, files, args.out);
+    annotations.flags = copyFlagsOf(a, names, files, args.out);
     std::vector<StudentRecord> records;
     std::vector<std::string> pages;
     std::size_t notGraded = 0;
@@ -422,15 +302,15 @@ int runClassGrade(const ClassGradeArgs& args) {
             continue;
         }
         if (!r->graded()) ++notGraded;
-        if (annotateRecord(roster, flags, lateOf(a, times, names[k], entries[k], *r), adjustments,
-                           names[k], *r))
+        if (annotateRecord(annotations, a, names[k], entries[k], *r))
             writeOrThrow(recordPath(k),
                          recordJson(*r).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
         records.push_back(*r);
         pages.push_back("feedback/" + files[k] + ".html");
         writeOrThrow(args.out + "/" + pages.back(), studentPage(*r));
     }
-    if (roster) addRosterStudents(*roster, a, names, args.out, taken, records, pages);
+    if (annotations.roster)
+        addRosterStudents(*annotations.roster, a, names, args.out, taken, records, pages);
     writeOrThrow(args.out + "/grades.csv", gradesCsv(records));
     writeOrThrow(args.out + "/gradebook-canvas.csv", canvasCsv(a.name, records));
     writeOrThrow(args.out + "/gradebook-moodle.csv", moodleCsv(a.name, records));
