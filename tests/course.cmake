@@ -22,9 +22,22 @@ if(SL_CHROMIUM)
   add_test(NAME course_grade
            COMMAND python3 ${SL_COURSE_PY}/test_grade.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/grade)
   set_tests_properties(course_grade PROPERTIES LABELS course TIMEOUT 1200)
+  # Feedback that tells the student what to fix: failing figures, the mirror's pictures, notes,
+  # no instructor path (issue 29).
+  add_test(NAME course_feedback
+           COMMAND python3 ${SL_COURSE_PY}/test_feedback.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/feedback)
+  set_tests_properties(course_feedback PROPERTIES LABELS course TIMEOUT 1200)
 else()
   message(WARNING "chromium not found: course_grade (the feedback pages in a browser) is not run")
 endif()
+# The roster's columns in grades.csv, records and pages; malformed rosters refused (issue 29).
+add_test(NAME course_roster
+         COMMAND python3 ${SL_COURSE_PY}/test_roster.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/roster)
+set_tests_properties(course_roster PROPERTIES LABELS course TIMEOUT 600)
+# The late policy: a late hand-in loses exactly the policy's points, within the grace nothing.
+add_test(NAME course_late
+         COMMAND python3 ${SL_COURSE_PY}/test_late.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/late)
+set_tests_properties(course_late PROPERTIES LABELS course TIMEOUT 1200)
 # A platform failure is never a score, and a rerun grades exactly what changed (issue 25).
 add_test(NAME course_not_graded
          COMMAND python3 ${SL_COURSE_PY}/test_regrade.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/regrade)

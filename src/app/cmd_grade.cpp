@@ -26,6 +26,15 @@ Command addGradeCommand(CLI::App& app) {
     cmd->add_option("--regrade", args->regrade,
                     "grade these students again (hand-in names), whatever their records say");
     cmd->add_flag("--regrade-all", args->regradeAll, "grade every student again");
+    cmd->add_option("--roster", args->roster,
+                    "a CSV of id,name,email,hand-in: carried into records, grades.csv and "
+                    "pages; a student with no hand-in gets a row");
+    cmd->add_option("--times", args->times,
+                    "a CSV of hand-in,time (ISO 8601): when each hand-in came, for the "
+                    "assignment's late policy (default: the newest time of its files)");
+    cmd->add_option("--adjust", args->adjust,
+                    "a CSV of hand-in,stage,points,reason: TAs' adjustments, kept for later "
+                    "runs and applied to the totals");
     cmd->add_option("--backend", *backend, "headless GL: auto, osmesa or egl");
     cmd->add_option("--seed", *seed,
                     "the displaced views' seed, one for the class (in every record); default: "

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "course/json_lines.h"
+#include "course/late_policy.h"
 #include "io/files.h"
 #include "io/json_fields.h"
 #include "scene/scene_json.h"
@@ -126,6 +127,25 @@ std::set<std::string> viewNamesOf(const std::string& stage, const std::string& t
     const StageInfo* info = findStage(stage);
     if (info && !info->needsMirror) names.insert("displaced");
     return names;
+}
+
+LatePolicy readLate(const Reader& in, const json& j) {
+    in.allowKeys(j, "/late", {"deadline", "grace_minutes", "penalty_per_day", "cap"});
+    LatePolicy p;
+    if (!j.contains("deadline")) in.fail("/late/deadline", "missing (ISO 8601 with a zone)");
+    p.deadlineText = in.text(j["deadline"], "/late/deadline");
+    std::optional<long long> t = parseIsoTime(p.deadlineText);
+    if (!t)
+        in.fail("/late/deadline",
+                "'" + p.deadlineText + "' is not ISO 8601 with a zone (2026-12-04T23:59:00+01:00)");
+    p.deadline = *t;
+    if (j.contains("grace_minutes"))
+        p.graceMinutes = in.number(j["grace_minutes"], "/late/grace_minutes", 0, 525600);
+    if (!j.contains("penalty_per_day"))
+        in.fail("/late/penalty_per_day", "missing (percent of the points per day late)");
+    p.penaltyPerDayPct = in.number(j["penalty_per_day"], "/late/penalty_per_day", 0, 100);
+    if (j.contains("cap")) p.capPct = in.number(j["cap"], "/late/cap", 0, 100);
+    return p;
 }
 
 AssignmentStage readStage(const Reader& in, const json& j, const std::string& path) {
@@ -278,11 +298,12 @@ Assignment parseAssignment(const std::string& text, const std::string& origin) {
     Assignment a;
     a.lines = jsonValueLines(text);
     Reader in(origin, a.lines);
-    in.allowKeys(j, "", {"name", "due_date", "stages", "extra_views", "comment"});
+    in.allowKeys(j, "", {"name", "due_date", "stages", "extra_views", "comment", "late"});
     a.origin = origin;
     if (!j.contains("name")) in.fail("/name", "missing (the assignment's name)");
     a.name = in.text(j["name"], "/name");
     if (j.contains("due_date")) a.dueDate = in.text(j["due_date"], "/due_date");
+    if (j.contains("late")) a.late = readLate(in, j["late"]);
     if (!j.contains("stages")) in.fail("/stages", "missing (the stages of the assignment)");
     if (!j["stages"].is_array() || j["stages"].empty() || j["stages"].size() > 64)
         in.fail("/stages", "must be an array of 1 to 64 stages");

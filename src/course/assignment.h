@@ -48,8 +48,20 @@ struct ExtraView {
     double weight = 1;
 };
 
+// The assignment's late policy ("late", docs/assignment.md "Late policy"): a hand-in after the
+// deadline plus the grace loses penalty_per_day percent of the assignment's points for each day
+// or part of a day after the deadline, at most cap percent, never below 0 points.
+struct LatePolicy {
+    std::string deadlineText;  // as written: ISO 8601 with its zone
+    long long deadline = 0;    // seconds since 1970-01-01 UTC
+    double graceMinutes = 0;
+    double penaltyPerDayPct = 0;  // percent of the assignment's points per day late
+    double capPct = 100;          // the most it loses, in percent of its points
+};
+
 struct Assignment {
     std::string name, dueDate, origin;
+    std::optional<LatePolicy> late;
     std::vector<AssignmentStage> stages;
     std::vector<ExtraView> extraViews;
     nlohmann::json publicJson;         // what a student may see: no extra views, no hidden weights

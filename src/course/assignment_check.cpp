@@ -19,7 +19,7 @@ int runAssignmentCheck(const AssignmentCheckArgs& args) {
     validateOutputs(args.out, args.shaders);
     Assignment a = loadAssignment(args.assignment);
     PrivateDir work("shadowlab-intake");
-    StudentWork s = intakeSubmission(args.shaders, work.path() + "/s");
+    StudentWork s = intakeForAssignment(a, args.shaders, work.path() + "/s");
     for (const auto& n : s.notes) std::cerr << "shadowlab: note: " << printable(n) << "\n";
     if (!s.error.empty()) std::cerr << "shadowlab: " << printable(s.error) << "\n";
     GradeSettings settings = args.settings;

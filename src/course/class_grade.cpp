@@ -20,9 +20,12 @@
 #include <thread>
 
 #include "course/class_entries.h"
+#include "course/class_annotations.h"
 #include "course/feedback_html.h"
+#include "course/gradebook_exports.h"
 #include "course/intake_adapter.h"
 #include "course/solution_check.h"
+#include "course/roster.h"
 #include "course/student_grade.h"
 #include "io/content_hash.h"
 #include "io/files.h"
@@ -146,6 +149,25 @@ bool solutionCheckPassed(const std::string& out, const std::string& key) {
     return readRegularFile(out + "/solution_check.txt", 4096, text).empty() && text == key + "\n";
 }
 
+// The roster's students with no hand-in get a record and a page ("no hand-in", every stage
+// MISSING) so the gradebook is complete; hand-ins the roster does not list are named.
+void addRosterStudents(const Roster& roster, const Assignment& a,
+                       const std::vector<std::string>& names, const std::string& out,
+                       std::vector<StudentRecord>& records,
+                       std::vector<std::string>& pages) {
+    for (const RosterEntry* e : rosterWithoutHandIn(roster, names)) {
+        records.push_back(noHandInRecord(a, *e));
+        pages.push_back("feedback/" + recordKey(e->handIn) + ".html");
+        writeOrThrow(out + "/" + pages.back(), studentPage(records.back()));
+    }
+    std::vector<std::string> strangers = handInsNotOnRoster(roster, names);
+    if (strangers.empty()) return;
+    std::cout << strangers.size() << " hand-in" << (strangers.size() == 1 ? "" : "s")
+              << " not on the roster:";
+    for (const std::string& n : strangers) std::cout << " " << printableName(n);
+    std::cout << "\n";
+}
+
 }  // namespace
 
 int runClassGrade(const ClassGradeArgs& args) {
@@ -199,6 +221,8 @@ int runClassGrade(const ClassGradeArgs& args) {
         files.push_back(e.key);
         refusals.push_back(e.refusal);
     }
+    // The roster, --times and the adjustments: read (and refused, exit 2) before any work.
+    ClassAnnotations annotations = readAnnotations(args, a, names);
     for (const std::string& wanted : args.regrade)
         if (std::find(names.begin(), names.end(), wanted) == names.end())
             throw UsageError("--regrade: no hand-in named '" + printableName(wanted) + "' in " +
@@ -238,7 +262,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     std::vector<StudentWork> subs(n);
     for (std::size_t k : todo) {
         if (refusals[k].empty()) {
-            subs[k] = intakeSubmission(entries[k], args.out + "/work/" + files[k]);
+            subs[k] = intakeForAssignment(a, entries[k], args.out + "/work/" + files[k]);
         } else {
             subs[k] = StudentWork();
             subs[k].error = refusals[k];  // nothing of it is read, followed or copied
@@ -347,6 +371,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     poll();
 
     // The class's outputs from every record (those of earlier runs too).
+    annotations.flags = copyFlagsOf(a, names, files, args.out, trees);
     std::vector<StudentRecord> records;
     std::vector<std::string> pages;
     std::size_t notGraded = 0;
@@ -360,11 +385,18 @@ int runClassGrade(const ClassGradeArgs& args) {
             continue;
         }
         if (!r->graded()) ++notGraded;
+        if (annotateRecord(annotations, a, names[k], entries[k], *r))
+            writeOrThrow(recordPath(k),
+                         recordJson(*r).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
         records.push_back(*r);
         pages.push_back("feedback/" + files[k] + ".html");
         writeOrThrow(args.out + "/" + pages.back(), studentPage(*r));
     }
+    if (annotations.roster)
+        addRosterStudents(*annotations.roster, a, names, args.out, records, pages);
     writeOrThrow(args.out + "/grades.csv", gradesCsv(records));
+    writeOrThrow(args.out + "/gradebook-canvas.csv", canvasCsv(a.name, records));
+    writeOrThrow(args.out + "/gradebook-moodle.csv", moodleCsv(a.name, records));
     writeOrThrow(args.out + "/class.html", classPage(a.name, records, pages, listing.skipped));
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -20,6 +20,9 @@ struct ClassGradeArgs {
     int jobs = 1;
     std::vector<std::string> regrade;  // --regrade NAME...: these students again
     bool regradeAll = false;           // --regrade-all
+    std::string roster;                // --roster roster.csv (course/roster.h), or ""
+    std::string times;                 // --times times.csv (course/late_policy.h), or ""
+    std::string adjust;                // --adjust adjust.csv (course/adjustments.h), or ""
     GradeSettings settings;
 };
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -88,6 +89,52 @@ table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding
 td.msg{max-width:520px;overflow-wrap:anywhere}
 </style>)";
 
+// A bound as a judge writes it (">= 32", "<= 5", "in [0, 5]") in words.
+std::string boundInWords(const std::string& bound) {
+    if (bound.rfind(">= ", 0) == 0) return "at least " + bound.substr(3);
+    if (bound.rfind("<= ", 0) == 0) return "at most " + bound.substr(3);
+    std::smatch m;
+    static const std::regex range(R"(in \[(\S+), (\S+)\])");
+    if (std::regex_match(bound, m, range)) return "between " + m[1].str() + " and " + m[2].str();
+    return bound;
+}
+
+// One failing figure in plain words: what it measures, its value and the bound it missed.
+std::string figureInWords(const std::string& figure, const std::string& value,
+                          const std::string& bound) {
+    static const std::map<std::string, std::pair<std::string, std::string>> kWords = {
+        {"false_shadow_pct", {"the surfaces the light reaches drawn in shadow", " %"}},
+        {"false_lit_pct", {"the true shadows drawn lit", " %"}},
+        {"false_shadow_band_pct", {"false shadow near the shadow edges", " %"}},
+        {"false_lit_band_pct", {"false light near the shadow edges", " %"}},
+        {"edge_mean_px", {"the mean distance of your shadow edges from the truth", " px"}},
+        {"edge_p95_px", {"the distance within which 95 % of your shadow edges lie", " px"}},
+        {"dark_without_caster_pct", {"the picture drawn dark where nothing casts a shadow", " %"}},
+        {"false_shadow_speckle_pct", {"speckled false shadow (acne)", " %"}},
+        {"shadow_level_off_pct", {"the shadows at the wrong darkness", " %"}},
+        {"lit_light_lost_pct", {"the lit surfaces that lost light", " %"}},
+        {"lit_too_bright_pct", {"the lit surfaces drawn too bright", " %"}},
+        {"mirror_id_pct", {"the mirror showing the right object", " %"}},
+        {"mirror_psnr_db", {"your mirror's PSNR against the exact (stencil) reflection", " dB"}}};
+    auto it = kWords.find(figure);
+    std::string what = it == kWords.end() ? figure : it->second.first;
+    std::string unit = it == kWords.end() ? "" : it->second.second;
+    return what + " is " + value + unit + ", and should be " + boundInWords(bound) + unit;
+}
+
+// The figures a judge's message names as failing ("mirror_psnr_db 12.5 not >= 32", possibly
+// with widened bounds in a displaced view), each in plain words.
+std::vector<std::string> failedFigures(const std::string& message) {
+    static const std::regex failing(R"(([a-z_0-9]+) (\S+) not (>= \S+|<= \S+|in \[\S+, \S+\]))");
+    std::vector<std::string> out;
+    for (std::sregex_iterator it(message.begin(), message.end(), failing), end; it != end; ++it) {
+        std::string bound = (*it)[3].str();
+        if (!bound.empty() && bound.back() == ',') bound.pop_back();
+        out.push_back(figureInWords((*it)[1].str(), (*it)[2].str(), bound));
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string plainWords(const RowRecord& rr) {
@@ -111,7 +158,8 @@ std::string plainWords(const RowRecord& rr) {
         out << "This setting should show: " << row.expectation.entry->outcome << ". ";
     const Accuracy& f = row.figures;
     if (!std::isnan(f.falseShadowPct))
-        out << num(f.falseShadowPct, 1) << " % of the surfaces the light reaches are drawn in shadow"
+        out << num(f.falseShadowPct, 1)
+            << " % of the surfaces the light reaches are drawn in shadow"
             << (f.falseShadowPct > 5 ? " (acne, or shadows too large)" : "") << "; ";
     if (!std::isnan(f.falseLitPct))
         out << num(f.falseLitPct, 1) << " % of the true shadows are drawn lit"
@@ -121,8 +169,14 @@ std::string plainWords(const RowRecord& rr) {
             << " px of the truth for 95 % of them. ";
     if (!std::isnan(f.mirrorIdPct))
         out << num(f.mirrorIdPct, 1) << " % of the mirror shows the right object. ";
-    out << (earnsPoints(row.status) ? "That is what this check expects."
-                                    : "That is not what this check expects.");
+    if (earnsPoints(row.status)) {
+        out << "That is what this check expects.";
+        return out.str();
+    }
+    out << "That is not what this check expects";
+    std::vector<std::string> failed = failedFigures(row.message);
+    for (std::size_t i = 0; i < failed.size(); ++i) out << (i == 0 ? ": " : "; ") << failed[i];
+    out << ".";
     return out.str();
 }
 
@@ -132,6 +186,49 @@ namespace {
 // hidden one (or one of a hidden stage) is shown; hidden rows are counted, never shown.
 bool shownToStudent(const StageRecord& st, const RowRecord& row) {
     return st.visibility != "hidden" && row.visibility != "hidden";
+}
+
+// The three pictures of a row's check, side by side, with the legend of its difference picture
+// (the mirror's is its difference from our exact stencil reflection).
+std::string picturesOf(const CheckResult& row) {
+    const bool mirror = row.stage == "mirror";
+    const std::pair<const char*, std::string> pictures[] = {
+        {"your picture", imageUri(row, "render")},
+        {mirror ? "the exact reflection (stencil method, our shaders)" : "the truth (ray traced)",
+         imageUri(row, "truth")},
+        {mirror ? "the difference inside the mirror" : "the difference", imageUri(row, "")}};
+    std::ostringstream h;
+    h << "<p>Pictures of the check <b>" << esc(row.view) << " " << esc(row.lesson)
+      << "</b>:</p>\n<div class=\"pics\">";
+    for (const auto& [caption, uri] : pictures)
+        if (!uri.empty())
+            h << "<figure><img alt=\"" << caption << "\" src=\"" << uri << "\"><figcaption>"
+              << caption << "</figcaption></figure>";
+    h << "</div>\n<p class=\"legend\">";
+    if (mirror)
+        h << "<span style=\"background:#d22\">red</span>your mirror differs from the exact "
+             "reflection (the brighter, the larger) <span style=\"background:#000\">black</span>"
+             "agrees <span style=\"background:#888\">grey</span>outside the mirror</p>\n";
+    else
+        h << "<span style=\"background:#d22\">red</span>drawn in shadow, truly lit "
+             "<span style=\"background:#22d\">blue</span>drawn lit, truly in shadow "
+             "<span style=\"background:#888\">grey</span>agrees with the truth</p>\n";
+    return h.str();
+}
+
+// The late policy's line: when the hand-in came and what it cost.
+std::string lateLine(const LateRecord& late, const StudentRecord& r) {
+    std::ostringstream h;
+    h << "<p>Handed in " << esc(late.handedIn) << " (from " << esc(late.source) << "): ";
+    if (late.days == 0)
+        h << "on time.";
+    else
+        h << num(late.minutes / 60.0, 1) << " hours late, " << late.days
+          << (late.days == 1 ? " day" : " days")
+          << " charged by the late policy: " << num(late.penalty) << " points off, "
+          << num(r.total()) << " of " << num(r.maxScore) << " points after the penalty.";
+    h << "</p>\n";
+    return h.str();
 }
 
 std::string pointsOf(double points, double max, Status status) {
@@ -145,11 +242,21 @@ std::string studentPage(const StudentRecord& record) {
     h << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>"
       << esc(record.student) << ": " << esc(record.assignment) << "</title>" << kStyle
       << "</head><body>\n";
-    h << "<h1>" << esc(record.assignment) << "</h1>\n<p><b>" << esc(record.student) << "</b>: "
+    h << "<h1>" << esc(record.assignment) << "</h1>\n<p><b>" << esc(record.student) << "</b>"
+      << (record.roster ? " (" + esc(record.roster->name) + ", " + esc(record.roster->id) + ")"
+                        : std::string())
+      << ": "
       << (record.graded() ? num(record.score) + " of " + num(record.maxScore) + " points"
                           : std::string("not graded yet (the grading machine could not run "
                                         "every check; it will be graded again)"))
       << "</p>\n";
+    if (record.late) h << lateLine(*record.late, record);
+    for (const Adjustment& a : record.adjustments)
+        h << "<p>Adjusted by your teaching staff: " << (a.points >= 0 ? "+" : "") << num(a.points)
+          << " points on " << esc(a.stage) << ": " << esc(a.reason) << "</p>\n";
+    if (!record.adjustments.empty() && record.graded())
+        h << "<p>Your total: " << num(record.total()) << " of " << num(record.maxScore)
+          << " points.</p>\n";
     if (!record.error.empty()) h << "<p class=\"ERROR\">" << esc(record.error) << "</p>\n";
     for (const std::string& n : record.notes) h << "<p>Note: " << esc(n) << "</p>\n";
     for (const StageRecord& st : record.stages) {
@@ -178,32 +285,12 @@ std::string studentPage(const StudentRecord& record) {
                 shown = &row;
             h << "<tr><td>" << esc(row.result.view) << "</td><td>" << esc(row.result.lesson)
               << "</td><td class=\"" << esc(statusName(v)) << "\">" << esc(statusName(v))
-              << "</td><td>"
-              << (isScored(v) ? num(row.points) + " / " + num(row.maxPoints) : "-")
+              << "</td><td>" << (isScored(v) ? num(row.points) + " / " + num(row.maxPoints) : "-")
               << "</td><td class=\"msg\">" << esc(plainWords(row)) << "</td></tr>\n";
         }
         h << "</table>\n";
         if (hidden) h << "<p>" << hidden << " more checks of this stage are hidden.</p>\n";
-        if (shown && !shown->result.diffFile.empty()) {
-            std::string mine = imageUri(shown->result, "render"),
-                        truth = imageUri(shown->result, "truth"),
-                        diff = imageUri(shown->result, "");
-            h << "<p>Pictures of the check <b>" << esc(shown->result.view) << " "
-              << esc(shown->result.lesson) << "</b>:</p>\n<div class=\"pics\">";
-            if (!mine.empty())
-                h << "<figure><img alt=\"your picture\" src=\"" << mine
-                  << "\"><figcaption>your picture</figcaption></figure>";
-            if (!truth.empty())
-                h << "<figure><img alt=\"the truth\" src=\"" << truth
-                  << "\"><figcaption>the truth (ray traced)</figcaption></figure>";
-            if (!diff.empty())
-                h << "<figure><img alt=\"the difference\" src=\"" << diff
-                  << "\"><figcaption>the difference</figcaption></figure>";
-            h << "</div>\n<p class=\"legend\"><span style=\"background:#d22\">red</span>drawn in "
-                 "shadow, "
-                 "truly lit <span style=\"background:#22d\">blue</span>drawn lit, truly in shadow "
-                 "<span style=\"background:#888\">grey</span>agrees with the truth</p>\n";
-        }
+        if (shown && !shown->result.diffFile.empty()) h << picturesOf(shown->result);
     }
     h << "</body></html>\n";
     return h.str();
@@ -214,7 +301,8 @@ namespace {
 // What a student's stage shows as its failure, in a few words (the class page counts these).
 std::string failureOf(const StageRecord& st) {
     if (st.status == Status::Missing) return "not handed in";
-    if (unjudged(st.status)) return std::string(statusName(st.status)) + ": " + st.message.substr(0, 120);
+    if (unjudged(st.status))
+        return std::string(statusName(st.status)) + ": " + st.message.substr(0, 120);
     for (const RowRecord& row : st.rows)
         if (row.status() == Status::Fail) {
             std::string outcome =
@@ -222,6 +310,21 @@ std::string failureOf(const StageRecord& st) {
             return "FAIL at '" + row.result.lesson + "' (expected " + outcome + ")";
         }
     return "";
+}
+
+// The copy flags of the class (course/copy_flags.h), one row per student and file: for the
+// instructor to look at, never a score, never on a student's page.
+std::string copyFlagsTable(const std::vector<StudentRecord>& records,
+                           const std::vector<std::string>& pages) {
+    std::ostringstream rows;
+    for (std::size_t k = 0; k < records.size(); ++k)
+        for (const std::string& f : records[k].flags)
+            rows << "<tr><td><a href=\"" << esc(pages[k]) << "\">" << esc(records[k].student)
+                 << "</a></td><td class=\"msg\">" << esc(f) << "</td></tr>\n";
+    if (rows.str().empty()) return "";
+    return "<h2>Possible copies (for the instructor: not a score)</h2>\n"
+           "<table><tr><th>student</th><th>file and what it equals</th></tr>\n" +
+           rows.str() + "</table>\n";
 }
 
 }  // namespace
@@ -234,14 +337,16 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
       << ": the class</title>" << kStyle << "</head><body>\n<h1>" << esc(assignment) << "</h1>\n";
     std::vector<std::string> stages;
     if (!records.empty())
-        for (const StageRecord& st : records.front().stages) stages.push_back(st.stage + "/" + st.tree);
+        for (const StageRecord& st : records.front().stages)
+            stages.push_back(st.stage + "/" + st.tree);
     h << "<p>" << records.size() << " students</p>\n<table><tr><th>student</th>";
     for (const auto& s : stages) h << "<th>" << esc(s) << "</th>";
     h << "<th>total</th></tr>\n";
     std::vector<std::map<std::string, int>> failures(stages.size());
     for (std::size_t k = 0; k < records.size(); ++k) {
         const StudentRecord& r = records[k];
-        h << "<tr><td><a href=\"" << esc(pages[k]) << "\">" << esc(r.student) << "</a></td>";
+        h << "<tr><td><a href=\"" << esc(pages[k]) << "\">" << esc(r.student) << "</a>"
+          << (r.roster ? " " + esc(r.roster->name) : std::string()) << "</td>";
         std::size_t i = 0;
         for (const StageRecord& st : r.stages) {
             double p = st.points, m = st.maxPoints;
@@ -292,6 +397,7 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
         h << "<h2>Notes from the source rules (for the instructor: not a score)</h2>\n"
              "<table><tr><th>student</th><th>stage</th><th>note</th></tr>\n"
           << notes.str() << "</table>\n";
+    h << copyFlagsTable(records, pages);
     if (!skipped.empty()) {
         h << "<h2>Left out of the class folder (not hand-ins)</h2>\n<ul>\n";
         for (const std::string& s : skipped) h << "<li>" << esc(s) << "</li>\n";
@@ -306,9 +412,9 @@ std::string csvCell(const std::string& s) {
     // A spreadsheet evaluates a cell that starts with = + - @, a TAB or a CR, or their
     // full-width forms (U+FF1D = , U+FF0B + , U+FF0D - , U+FF20 @): prefixed, never a formula
     // (OWASP's CSV injection rule).
-    static const char* const kFormulaStarts[] = {"=",  "+",  "-",  "@",  "\t", "\r",
-                                                "\xEF\xBC\x9D", "\xEF\xBC\x8B", "\xEF\xBC\x8D",
-                                                "\xEF\xBC\xA0"};
+    static const char* const kFormulaStarts[] = {
+        "=",           "+", "-", "@", "\t", "\r", "\xEF\xBC\x9D", "\xEF\xBC\x8B", "\xEF\xBC\x8D",
+        "\xEF\xBC\xA0"};
     for (const char* start : kFormulaStarts)
         if (v.rfind(start, 0) == 0) {
             v = "'" + v;
@@ -323,26 +429,32 @@ std::string csvCell(const std::string& s) {
 
 std::string gradesCsv(const std::vector<StudentRecord>& records) {
     std::ostringstream out;
-    out << "student,status";
+    out << "student,id,name,email,status";
     if (!records.empty())
         for (const StageRecord& st : records.front().stages)
             out << "," << csvCell(st.stage + "/" + st.tree);
-    out << ",total,max,not_graded\r\n";
+    out << ",adjustments,late_penalty,total,max,not_graded\r\n";
     for (const StudentRecord& r : records) {
-        out << csvCell(r.student) << "," << csvCell(statusName(r.status()));
+        const RosterInfo who = r.roster.value_or(RosterInfo{});
+        out << csvCell(r.student) << "," << csvCell(who.id) << "," << csvCell(who.name) << ","
+            << csvCell(who.email) << "," << csvCell(statusName(r.status()));
         std::string reasons;
         for (const StageRecord& st : r.stages) {
             // A stage that is not graded has no points, not 0: an empty cell, the reason last.
             if (st.status == Status::NotGraded) {
                 out << ",";
-                reasons += (reasons.empty() ? "" : "; ") + st.stage + "/" + st.tree + ": " +
-                           st.message;
+                reasons +=
+                    (reasons.empty() ? "" : "; ") + st.stage + "/" + st.tree + ": " + st.message;
             } else {
                 out << "," << num(st.points, 3);
             }
         }
+        double adjusted = 0;
+        for (const Adjustment& a : r.adjustments) adjusted += a.points;
+        out << "," << (r.adjustments.empty() ? "" : num(adjusted, 3)) << ","
+            << (r.late ? num(r.late->penalty, 3) : "");
         if (r.graded())
-            out << "," << num(r.score, 3) << "," << num(r.maxScore, 3) << ",";
+            out << "," << num(r.total(), 3) << "," << num(r.maxScore, 3) << ",";
         else
             out << ",,," << csvCell(reasons);
         out << "\r\n";

@@ -68,6 +68,25 @@ std::string namedAsHandedIn(std::string text,
     return text;
 }
 
+// Notes and error of `s` without the instructor's paths: the hand-in at `path` as the student
+// named it, its unpacked copies under `workDir` as the zip's name.
+void hideInstructorPaths(StudentWork& s, const std::string& path, const std::string& workDir) {
+    std::string handIn = path;
+    while (handIn.size() > 1 && handIn.back() == '/') handIn.pop_back();
+    handIn = handIn.substr(handIn.find_last_of('/') + 1);
+    std::vector<std::pair<std::string, std::string>> paths = {
+        {printableName(workDir + "/unpacked-inner"), handIn},
+        {workDir + "/unpacked-inner", handIn},
+        {printableName(workDir + "/unpacked"), handIn},
+        {workDir + "/unpacked", handIn},
+        {printableName(workDir), handIn},
+        {workDir, handIn},
+        {printableName(path), handIn},
+        {path, handIn}};
+    for (std::string& n : s.notes) n = namedAsHandedIn(n, paths);
+    s.error = namedAsHandedIn(s.error, paths);
+}
+
 }  // namespace
 
 std::string submissionName(const std::string& path) {
@@ -80,7 +99,8 @@ std::string submissionName(const std::string& path) {
 
 namespace {
 
-StudentWork intakeOrThrow(const std::string& path, const std::string& workDir) {
+StudentWork intakeOrThrow(const std::string& path, const std::string& workDir,
+                          const std::vector<std::string>& stages) {
     StudentWork s;
     s.name = submissionName(path);
     std::error_code ec;
@@ -125,7 +145,7 @@ StudentWork intakeOrThrow(const std::string& path, const std::string& workDir) {
     fs::permissions(snapshot, fs::perms::owner_all, ec);
     s.overlay = snapshot;
     try {
-        Submission sub = takeSubmission(root, snapshot, shippedTrees().both);
+        Submission sub = takeSubmission(root, snapshot, shippedTrees().both, stages);
         s.files = sub.files;
         for (const std::string& note : sub.notes) s.notes.push_back(namedAsHandedIn(note, shownAs));
     } catch (const NothingHandedIn& e) {
@@ -140,9 +160,12 @@ StudentWork intakeOrThrow(const std::string& path, const std::string& workDir) {
 
 }  // namespace
 
-StudentWork intakeSubmission(const std::string& path, const std::string& workDir) {
+StudentWork intakeSubmission(const std::string& path, const std::string& workDir,
+                             const std::vector<std::string>& stages) {
     try {
-        return intakeOrThrow(path, workDir);
+        StudentWork s = intakeOrThrow(path, workDir, stages);
+        hideInstructorPaths(s, path, workDir);
+        return s;
     } catch (const SnapshotWriteError& e) {  // a full disk: NOT GRADED, never a score
         std::error_code ec;
         fs::remove_all(workDir, ec);  // the part copied: the space the records still need

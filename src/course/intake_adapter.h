@@ -14,8 +14,11 @@ namespace sl {
 // Reads the folder or .zip at `path` into a snapshot under `workDir` (created; emptied first).
 // A zip, or a folder whose only entry (below lone wrapper folders) is a zip, is unpacked first.
 // A full disk is the machine's failure: `error` says so and `platformFailure` is set (NOT
-// GRADED, never a score); every message names the student's own file or archive.
-StudentWork intakeSubmission(const std::string& path, const std::string& workDir);
+// GRADED, never a score). `stages`: the assignment's due stages, the only ones a near-miss note
+// suggests. Notes and the error name the hand-in by its own name, never by the instructor's
+// paths (`path`, `workDir`).
+StudentWork intakeSubmission(const std::string& path, const std::string& workDir,
+                             const std::vector<std::string>& stages = {});
 
 // The student's name for an entry of a class folder: its base name, without ".zip".
 std::string submissionName(const std::string& path);

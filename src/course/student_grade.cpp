@@ -1,5 +1,10 @@
 #include "course/student_grade.h"
 
+#include <algorithm>
+
+#include "course/intake_adapter.h"
+#include "grade/bounds.h"
+
 namespace sl {
 
 GradingPlan planStudent(const Assignment& a, const StudentWork& s,
@@ -20,6 +25,47 @@ GradingPlan planStudent(const Assignment& a, const StudentWork& s,
         plan.stages.push_back(std::move(p));
     }
     return plan;
+}
+
+std::vector<std::string> dueStageNames(const Assignment& a) {
+    std::vector<std::string> out;
+    for (const AssignmentStage* st : a.due())
+        if (std::find(out.begin(), out.end(), st->stage) == out.end()) out.push_back(st->stage);
+    return out;
+}
+
+std::vector<std::string> unlistedFileNotes(const Assignment& a, const StudentWork& s) {
+    auto named = [&](const std::string& f) {
+        for (const std::string& n : s.notes)
+            if (n.find("`" + f + "`") != std::string::npos) return true;
+        return false;
+    };
+    std::vector<std::string> out;
+    for (const std::string& stage : dueStageNames(a)) {
+        std::vector<std::string> listed, unlisted;
+        for (const AssignmentStage* st : a.due())
+            if (st->stage == stage) listed.insert(listed.end(), st->files.begin(), st->files.end());
+        for (const std::string& f : s.files)
+            if (f.rfind(stage + "/", 0) == 0 &&
+                std::find(listed.begin(), listed.end(), f) == listed.end() && !named(f))
+                unlisted.push_back("`" + f + "`");
+        if (unlisted.empty()) continue;
+        std::string files, wanted;
+        for (const std::string& f : cappedList(unlisted)) files += (files.empty() ? "" : ", ") + f;
+        for (const std::string& f : listed)
+            wanted += (wanted.empty() ? "" : ", ") + ("`" + f + "`");
+        out.push_back(files + (unlisted.size() == 1 ? " is" : " are") +
+                      " not graded: this assignment grades only " + wanted + " of " + stage + "/");
+    }
+    return out;
+}
+
+StudentWork intakeForAssignment(const Assignment& a, const std::string& path,
+                                const std::string& workDir) {
+    StudentWork s = intakeSubmission(path, workDir, dueStageNames(a));
+    std::vector<std::string> more = unlistedFileNotes(a, s);
+    s.notes.insert(s.notes.end(), more.begin(), more.end());
+    return s;
 }
 
 }  // namespace sl

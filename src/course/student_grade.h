@@ -11,4 +11,17 @@ namespace sl {
 GradingPlan planStudent(const Assignment& a, const StudentWork& s,
                         std::optional<std::uint64_t> seed);
 
+// The due stages' names, in the assignment's order.
+std::vector<std::string> dueStageNames(const Assignment& a);
+
+// A note per due stage whose folder holds files of the student's that the assignment does not
+// list (`hardware/lit_pcf3x3.frag` when it grades `hardware/lit.frag`): they are not graded, and
+// the student should know. Files another note already names (a near miss) are left out.
+std::vector<std::string> unlistedFileNotes(const Assignment& a, const StudentWork& s);
+
+// The hand-in at `path` read for `a` (course/intake_adapter.h): near misses suggest only its due
+// stages, and unlisted files of their folders are noted.
+StudentWork intakeForAssignment(const Assignment& a, const std::string& path,
+                                const std::string& workDir);
+
 }  // namespace sl

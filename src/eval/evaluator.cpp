@@ -319,6 +319,7 @@ Accuracy Evaluator::mirrorAccuracy() {
     a.mirrorIdPct = mirrorIdAgreementPct(ref, seen);
     a.mirrorPsnrDb = psnrInMask(shown, stencil, mask);
     a.errorPct = 100.0 - a.mirrorIdPct;
+    mirrorPictures_ = {shown, std::move(stencil), std::move(mask)};
     return a;
 }
 

@@ -85,6 +85,14 @@ class Evaluator {
     // pixel is shadowed where the render is clearly darker than the all-lit one, or the all-lit
     // one clearly darker than our lighting (dark without a caster).
     ShadowEvidence shadowEvidence();
+    // The pictures behind the last mirror figures (accuracy() of the mirror stage): the
+    // submission's render, our exact stencil reflection and where the mirror is, so a feedback
+    // page can show a student what their mirror got wrong.
+    struct MirrorPictures {
+        Image shown, exact;
+        std::vector<std::uint8_t> mask;
+    };
+    const MirrorPictures& mirrorPictures() const { return mirrorPictures_; }
 
   private:
     // What the figures of a view take from our shipped shaders and the truth, whoever's shaders
@@ -116,6 +124,7 @@ class Evaluator {
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<Renderer> shipped_[3];  // by Shipped
     glm::vec3 sceneLight_{0};
+    MirrorPictures mirrorPictures_;
     // The references of the views seen so far and what follows from them alone, kept across
     // overlays and shader errors (a reference depends on the scene, its displacement, the size,
     // camera and light only): grading a class in one evaluator traces and measures each view's

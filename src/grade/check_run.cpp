@@ -10,9 +10,10 @@
 
 #include "gl/machine.h"
 #include "grade/bounds.h"
-#include "grade/reports.h"
 #include "grade/judge.h"
+#include "grade/reports.h"
 #include "io/files.h"
+#include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
 #include "stages/stage.h"
 
@@ -182,6 +183,21 @@ std::string besideDiff(const std::string& diffPath, const std::string& kind) {
     return stem + "." + kind + ".png";
 }
 
+// The mirror's difference picture at `diffPath` and, with `pictures`, the student's render and
+// our stencil reflection beside it (as for a shadow stage); a disk error is a note on the row.
+void writeMirrorPictures(const Evaluator::MirrorPictures& p, const std::string& diffPath,
+                         bool pictures, CheckResult& r) {
+    std::string err = writePng(diffPath, mirrorDifferencePicture(p.shown, p.exact, p.mask));
+    if (err.empty() && pictures) {
+        err = writePng(besideDiff(diffPath, "render"), p.shown);
+        if (err.empty()) err = writePng(besideDiff(diffPath, "truth"), p.exact);
+    }
+    if (err.empty())
+        r.diffFile = diffPath;
+    else
+        r.note = "no diff image: " + err;
+}
+
 }  // namespace
 
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
@@ -204,8 +220,7 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
     try {
         if (request.stage == "mirror") {
             r.figures = rig.accuracy();
-            if (!diffPath.empty())
-                r.note = "no diff image: the mirror is judged by id agreement and PSNR";
+            if (!diffPath.empty()) writeMirrorPictures(rig.mirrorPictures(), diffPath, pictures, r);
         } else {
             ShadowEvidence e = rig.shadowEvidence();
             r.figures = shadowAccuracy(e.figures);

@@ -50,13 +50,15 @@ struct CheckResult {
 CheckResult checkResultFor(const RenderRequest& request);
 
 // Renders and judges `request` (its view must be final); writes the diff image to `diffPath`
-// when not empty (shadow stages only). A shader that does not build is caught: the result is an
-// ERROR with the compiler's first line, the full message goes to stderr and the rig is reset.
+// when not empty (the mirror's: its difference from our stencil reflection). A shader that does
+// not build is caught: the result is an ERROR with the compiler's first line, the full message
+// goes to stderr and the rig is reset.
 // Other failures propagate (bad input: UsageError; GL: std::runtime_error).
 // A displaced case (RenderRequest::displaceSeed) is judged against the wider of the lesson's
 // bounds and `shipped`, our shipped shaders' figures in the same view (the case's own when null).
-// With `pictures`, a shadow stage's render and the truth's shading are written beside the diff
-// image too (DIFF.render.png, DIFF.truth.png: a feedback page shows the three side by side).
+// With `pictures`, the render and the truth's shading (the mirror: our stencil reflection) are
+// written beside the diff image too (DIFF.render.png, DIFF.truth.png: a feedback page shows
+// the three side by side).
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
                      const std::map<std::string, double>* shipped = nullptr, bool pictures = false);
 

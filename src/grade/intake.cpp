@@ -200,27 +200,32 @@ std::vector<std::string> respellings(const std::string& path) {
 
 // The shipped file a student's `path` nearly names, or "": the same path in another case or
 // spelling, under a copied shaders_core/ or shaders_legacy/ folder, or a file at the top whose
-// name is a stage file's (the stages being graded first).
+// name is a stage file's. With `stages` (those being graded), only their files are suggested:
+// a hint towards a stage nobody grades sends the student the wrong way.
 std::string nearMiss(const std::string& path, const std::map<std::string, std::string>& byLower,
                      const std::set<std::string>& shipped, const std::vector<std::string>& stages) {
+    auto graded = [&](const std::string& file) {
+        return stages.empty() ||
+               std::find(stages.begin(), stages.end(), stageOf(file)) != stages.end();
+    };
     std::string p = path;
     for (const char* tree : {"shaders_core/", "shaders_legacy/"})
         if (lower(p).rfind(tree, 0) == 0) p = p.substr(std::strlen(tree));
     for (const std::string& r : respellings(p)) {
         auto it = byLower.find(lower(r));
-        if (it != byLower.end()) return it->second;
+        if (it != byLower.end()) return graded(it->second) ? it->second : "";
     }
     if (p.find('/') != std::string::npos) return "";
-    // At the top: a shipped file of that name in some stage's folder.
-    std::vector<std::string> candidates;
+    // At the top: a shipped file of that name in a graded stage's folder (the first graded).
+    for (const std::string& stage : stages)
+        for (const std::string& r : respellings(p))
+            for (const std::string& s : shipped)
+                if (stageOf(s) == stage && lower(baseName(s)) == lower(r)) return s;
+    if (!stages.empty()) return "";
     for (const std::string& r : respellings(p))
         for (const std::string& s : shipped)
-            if (lower(baseName(s)) == lower(r)) candidates.push_back(s);
-    if (candidates.empty()) return "";
-    for (const std::string& stage : stages)
-        for (const std::string& c : candidates)
-            if (stageOf(c) == stage) return c;
-    return candidates.front();
+            if (lower(baseName(s)) == lower(r)) return s;
+    return "";
 }
 
 }  // namespace

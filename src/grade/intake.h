@@ -73,7 +73,7 @@ const ShippedTrees& shippedTrees();
 
 // Resolves `folder` and copies its files into `privateDir` (an existing, empty folder of ours).
 // `shipped`: the shipped files of every tree (a near miss is judged against them); `stages`: the
-// stages being graded, suggested first when a near miss fits several ("did you mean
+// stages being graded, the only ones a near miss suggests when given ("did you mean
 // `margin/lit.frag`?"). Throws IntakeError when nothing replaces a shipped file.
 Submission takeSubmission(const std::string& folder, const std::string& privateDir,
                           const std::set<std::string>& shipped,

@@ -81,6 +81,12 @@ void sumStudent(StudentRecord& r) {
 
 }  // namespace
 
+double StudentRecord::total() const {
+    double t = score - (late ? late->penalty : 0.0);
+    for (const Adjustment& a : adjustments) t += a.points;
+    return rounded(std::clamp(t, 0.0, std::max(maxScore, 0.0)));
+}
+
 Status StudentRecord::status() const {
     Status s = Status::Pass;
     for (const StageRecord& st : stages) s = worst(s, st.status);
@@ -148,8 +154,7 @@ StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
     // Messages name the student's files as handed in, not by the private snapshot's path.
     const std::string snapshot = overlay.empty() ? "" : overlay + "/";
     st.message = withoutPrefix(st.message, snapshot);
-    for (RowRecord& row : st.rows)
-        row.result.message = withoutPrefix(row.result.message, snapshot);
+    for (RowRecord& row : st.rows) row.result.message = withoutPrefix(row.result.message, snapshot);
     return st;
 }
 
@@ -224,6 +229,13 @@ RowCounts countRows(const StudentRecord& r) {
     return c;
 }
 
+static json adjustmentsJson(const std::vector<Adjustment>& adjustments) {
+    json out = json::array();
+    for (const Adjustment& a : adjustments)
+        out.push_back({{"stage", a.stage}, {"points", a.points}, {"reason", a.reason}});
+    return out;
+}
+
 json recordJson(const StudentRecord& r) {
     json stages = json::array();
     for (const StageRecord& st : r.stages) {
@@ -248,6 +260,9 @@ json recordJson(const StudentRecord& r) {
                           {"rows", rows}});
     }
     RowCounts c = countRows(r);
+    json roster;
+    if (r.roster)
+        roster = {{"id", r.roster->id}, {"name", r.roster->name}, {"email", r.roster->email}};
     return {{"tool", r.tool},
             {"report_version", 2},
             {"assignment", r.assignment},
@@ -263,6 +278,15 @@ json recordJson(const StudentRecord& r) {
             {"seed", r.seed ? json(*r.seed) : json()},
             {"machine", {{"backend", r.backend}, {"renderer", r.machine}}},
             {"hashes", {{"hand_in", r.handInHash}, {"assignment", r.assignmentHash}}},
+            {"roster", roster},
+            {"flags", r.flags},
+            {"adjustments", adjustmentsJson(r.adjustments)},
+            {"late", r.late ? json{{"handed_in", r.late->handedIn},
+                                   {"source", r.late->source},
+                                   {"minutes", rounded(r.late->minutes)},
+                                   {"days", r.late->days},
+                                   {"penalty", rounded(r.late->penalty)}}
+                            : json()},
             {"summary",
              {{"checked", c.total},
               {"passed", c.passed},
@@ -293,6 +317,22 @@ StudentRecord recordFromJson(const json& j) {
         r.machine = j.at("machine").at("renderer").get<std::string>();
         r.handInHash = j.at("hashes").at("hand_in").get<std::string>();
         r.assignmentHash = j.at("hashes").at("assignment").get<std::string>();
+        if (j.contains("flags")) r.flags = j["flags"].get<std::vector<std::string>>();
+        if (j.contains("adjustments"))
+            for (const json& a : j["adjustments"])
+                r.adjustments.push_back({a.at("stage").get<std::string>(),
+                                         a.at("points").get<double>(),
+                                         a.at("reason").get<std::string>()});
+        if (j.contains("late") && !j["late"].is_null()) {
+            const json& l = j["late"];
+            r.late = LateRecord{l.at("handed_in").get<std::string>(),
+                                l.at("source").get<std::string>(), l.at("minutes").get<double>(),
+                                l.at("days").get<int>(), l.at("penalty").get<double>()};
+        }
+        if (j.contains("roster") && !j["roster"].is_null())
+            r.roster = RosterInfo{j["roster"].at("id").get<std::string>(),
+                                  j["roster"].at("name").get<std::string>(),
+                                  j["roster"].at("email").get<std::string>()};
         for (const json& s : j.at("stages")) {
             StageRecord st;
             st.stage = s.at("stage").get<std::string>();

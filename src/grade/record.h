@@ -17,7 +17,7 @@
 namespace sl {
 
 struct RowRecord {
-    CheckResult result;  // settings, figures, status, message, student files, images
+    CheckResult result;                // settings, figures, status, message, student files, images
     double points = 0, maxPoints = 0;  // both 0 for a NOT GRADED row
     std::string visibility = "visible";
     bool extraView = false;
@@ -33,6 +33,32 @@ struct StageRecord {
     std::vector<RowRecord> rows;
 };
 
+// Who a hand-in is, from the class roster (course/roster.h): drawn into grades.csv and pages.
+struct RosterInfo {
+    std::string id, name, email;
+    bool operator==(const RosterInfo& o) const {
+        return id == o.id && name == o.name && email == o.email;
+    }
+};
+
+// A late hand-in under the assignment's late policy (course/late_policy.h): applied when the
+// outputs are drawn (grades.csv's total, the page), the graded score is kept as it is.
+struct LateRecord {
+    std::string handedIn;  // ISO 8601, UTC
+    std::string source;    // where the time came from: a manifest, file times, Gradescope
+    double minutes = 0;    // after the deadline (0 within the grace)
+    int days = 0;          // days or parts of a day charged
+    double penalty = 0;    // points lost
+};
+
+// A TA's adjustment of one stage (course/adjustments.h): points added (or taken off, < 0) and
+// the reason the student reads. Applied when the outputs are drawn.
+struct Adjustment {
+    std::string stage;  // as the TA wrote it: "margin" or "margin/core"
+    double points = 0;
+    std::string reason;
+};
+
 struct StudentRecord {
     std::string tool = "shadowlab grade";
     std::string assignment, student;
@@ -46,6 +72,14 @@ struct StudentRecord {
     // Content hashes: the hand-in's files and the assignment's text. A rerun regrades a student
     // whose hand-in or assignment changed (course/class_grade.h).
     std::string handInHash, assignmentHash;
+    std::optional<RosterInfo> roster;  // --roster's entry for this hand-in, when there is one
+    // Copy flags (course/copy_flags.h): due files equal to the published solution or a
+    // classmate's once whitespace, comments and names are set aside. Never a score.
+    std::vector<std::string> flags;
+    std::optional<LateRecord> late;  // when the assignment has a late policy
+    std::vector<Adjustment> adjustments;
+    // The score with the adjustments and the late penalty, within [0, maxScore].
+    double total() const;
 
     Status status() const;  // the worst stage's (PASS when there is none)
     int exitCode() const { return exitCodeOf(status()); }

@@ -1,6 +1,8 @@
 #include "metrics/mirror_metrics.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace sl {
@@ -102,6 +104,30 @@ std::vector<std::uint8_t> mirrorMask(const ReferenceImage& ref, const Scene& sce
     for (std::size_t k = 0; k < ref.pixels.size(); ++k)
         mask[k] = seesMirrorFront(ref.pixels[k], mirror) ? 1 : 0;
     return mask;
+}
+
+Image mirrorDifferencePicture(const Image& shown, const Image& exact,
+                              const std::vector<std::uint8_t>& mask) {
+    if (shown.width != exact.width || shown.height != exact.height ||
+        mask.size() != std::size_t(shown.width) * std::size_t(shown.height))
+        throw std::invalid_argument("mirrorDifferencePicture: sizes differ");
+    Image out(shown.width, shown.height);
+    for (int j = 0; j < shown.height; ++j)
+        for (int i = 0; i < shown.width; ++i) {
+            std::uint8_t* o = out.at(i, j);
+            o[3] = 255;
+            if (!mask[std::size_t(j) * std::size_t(shown.width) + std::size_t(i)]) {
+                auto grey = std::uint8_t(64 + shown.luma(i, j) * 0.25f);
+                o[0] = o[1] = o[2] = grey;
+                continue;
+            }
+            int most = 0;
+            for (int c = 0; c < 3; ++c)
+                most = std::max(most, std::abs(int(shown.at(i, j)[c]) - int(exact.at(i, j)[c])));
+            o[0] = std::uint8_t(std::min(255, most * 4));
+            o[1] = o[2] = 0;
+        }
+    return out;
 }
 
 }  // namespace sl

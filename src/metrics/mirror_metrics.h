@@ -24,6 +24,12 @@ double mirrorIdAgreementPct(const ReferenceImage& ref, const std::vector<int>& r
 constexpr double kPsnrIdentical = 99.0;
 double psnrInMask(const Image& a, const Image& b, const std::vector<std::uint8_t>& mask);
 
+// What differs inside the mirror, as a picture for a student: inside `mask`, black where `shown`
+// equals `exact` and red as strong as the largest channel difference (times 4, so a few levels
+// show); outside it, `shown` dimmed to grey. Throws std::invalid_argument when the sizes differ.
+Image mirrorDifferencePicture(const Image& shown, const Image& exact,
+                              const std::vector<std::uint8_t>& mask);
+
 // The object-id picture, made with the real shaders: the scene with every object painted its own
 // flat colour (ambient 1, no diffuse or specular, so any Phong shader returns objectColor
 // unchanged, shadowed or not) on a black background. Rendering it through a stage and decoding

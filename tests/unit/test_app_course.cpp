@@ -115,8 +115,8 @@ TEST(GradesCsv, QuotesAndNoFormulas) {
     r.score = 1.5;
     r.maxScore = 2;
     EXPECT_EQ(gradesCsv({r}),
-              "student,status,rgb/core,total,max,not_graded\r\n"
-              "\"'=cmd|x,y\",FAIL,1.500,1.500,2.000,\r\n");
+              "student,id,name,email,status,rgb/core,adjustments,late_penalty,total,max,not_graded\r\n"
+              "\"'=cmd|x,y\",,,,FAIL,1.500,,,1.500,2.000,\r\n");
 }
 
 TEST(GradesCsv, EveryCellASpreadsheetWouldEvaluateIsPrefixed) {
@@ -131,8 +131,8 @@ TEST(GradesCsv, ANotGradedStageIsAnEmptyCellWithTheReason) {
     StudentRecord r = oneStage("bo", "margin", Status::NotGraded, 0, 0);
     r.stages[0].message = "our shaders could not finish";
     EXPECT_EQ(gradesCsv({r}),
-              "student,status,margin/core,total,max,not_graded\r\n"
-              "bo,NOT GRADED,,,,margin/core: our shaders could not finish\r\n");
+              "student,id,name,email,status,margin/core,adjustments,late_penalty,total,max,not_graded\r\n"
+              "bo,,,,NOT GRADED,,,,,,margin/core: our shaders could not finish\r\n");
 }
 
 }  // namespace

@@ -105,7 +105,7 @@ TEST(Intake, NearMissesAreNamed) {
     f.put("margin/shadow.fs");
     f.put("lit.frag");
     f.put("shaders_core/rgb/shadow.frag");
-    Submission s = take(f, {"margin"});
+    Submission s = take(f, {"margin", "rgb"});
     EXPECT_TRUE(hasNote(s, "`Margin/lit.vert` was not used: did you mean `margin/lit.vert`?"));
     EXPECT_TRUE(hasNote(s, "`margin/shadow.fs` was not used: did you mean `margin/shadow.frag`?"));
     EXPECT_TRUE(hasNote(s, "`lit.frag` was not used: did you mean `margin/lit.frag`?"));
@@ -114,6 +114,21 @@ TEST(Intake, NearMissesAreNamed) {
                         "`rgb/shadow.frag`?"));
     EXPECT_TRUE(stageFiles(s, "margin", kShipped).empty());
     EXPECT_TRUE(stageFiles(s, "rgb", kShipped).empty());
+}
+
+// An assignment grading margin only: no hint sends the student to another stage's folder.
+TEST(Intake, NearMissesNameOnlyTheStagesGraded) {
+    Folder f;
+    f.put("margin/lit.frag");
+    f.put("Depth/lit.frag");
+    f.put("shadow.frag");
+    f.put("shaders_core/rgb/shadow.frag");
+    Submission s = take(f, {"margin"});
+    EXPECT_TRUE(hasNote(s, "`shadow.frag` was not used: did you mean `margin/shadow.frag`?"));
+    for (const std::string& n : s.notes) {
+        EXPECT_EQ(n.find("did you mean `depth/"), std::string::npos) << n;
+        EXPECT_EQ(n.find("did you mean `rgb/"), std::string::npos) << n;
+    }
 }
 
 TEST(Intake, NothingReplacedIsOneLineNamingTheNearMiss) {

@@ -1,0 +1,138 @@
+#include "course/class_annotations.h"
+
+#include <cmath>
+
+#include "course/adjustments.h"
+#include "course/copy_flags.h"
+#include "course/late_policy.h"
+#include "course/release.h"
+#include "io/files.h"
+
+namespace sl {
+
+namespace {
+
+// --roster's file, read before any work so that a malformed one costs nothing (exit 2).
+std::optional<Roster> rosterOf(const ClassGradeArgs& args) {
+    if (args.roster.empty()) return std::nullopt;
+    return loadRoster(args.roster);
+}
+
+// --times's manifest, read before any work (exit 2 when malformed, or without a late policy).
+std::map<std::string, long long> timesOf(const ClassGradeArgs& args, const Assignment& a) {
+    if (args.times.empty()) return {};
+    if (!a.late)
+        throw UsageError("--times: " + printableName(args.assignment) +
+                         " has no late policy (\"late\", docs/assignment.md)");
+    return loadTimes(args.times);
+}
+
+// The late record of hand-in `name` at `entry` under the assignment's policy: its time from
+// --times, else the newest time of its files (the record says which).
+std::optional<LateRecord> lateOf(const Assignment& a, const std::map<std::string, long long>& times,
+                                 const std::string& name, const std::string& entry,
+                                 const StudentRecord& r) {
+    if (!a.late) return std::nullopt;
+    if (auto it = times.find(name); it != times.end())
+        return lateFor(*a.late, it->second, "--times", r.maxScore, r.score);
+    std::optional<long long> t = newestFileTime(entry);
+    if (!t) return std::nullopt;
+    return lateFor(*a.late, *t, "file times", r.maxScore, r.score);
+}
+
+// The class's adjustments (--adjust, or those kept in DIR/adjustments.csv by an earlier run).
+std::map<std::string, std::vector<Adjustment>> adjustmentsOf(
+    const ClassGradeArgs& args, const Assignment& a, const std::vector<std::string>& names) {
+    std::vector<std::string> stages;
+    for (const AssignmentStage* st : a.due()) {
+        stages.push_back(st->stage);
+        stages.push_back(st->stage + "/" + st->tree);
+    }
+    return loadAdjustments(args.adjust, args.out + "/adjustments.csv", names, stages);
+}
+
+}  // namespace
+
+std::map<std::string, std::vector<std::string>> copyFlagsOf(const Assignment& a,
+                                                            const std::vector<std::string>& names,
+                                                            const std::vector<std::string>& files,
+                                                            const std::string& out,
+                                                            const SolutionTrees& trees) {
+    std::map<std::string, std::string> solutions, starters;
+    for (const AssignmentStage* st : a.due())
+        for (const std::string& f : st->files) {
+            std::string text;
+            if (!readRegularFile(trees.root(st->tree) + "/" + f, 1u << 20, text).empty()) continue;
+            solutions[f] = text;
+            try {
+                starters[f] = stripSolutions(text, f);
+            } catch (const std::exception&) {  // markers out of place: the release refuses it
+            }
+        }
+    std::vector<HandInFiles> handIns;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        HandInFiles h{names[k], {}};
+        for (const auto& [f, solution] : solutions) {
+            std::string text;
+            if (readRegularFile(out + "/work/" + files[k] + "/snapshot/" + f, 1u << 20, text, true)
+                    .empty())
+                h.files[f] = text;
+        }
+        handIns.push_back(std::move(h));
+    }
+    std::map<std::string, std::vector<std::string>> flags;
+    for (const CopyFlag& f : findCopies(handIns, solutions, starters))
+        flags[f.student].push_back(f.text());
+    return flags;
+}
+
+ClassAnnotations readAnnotations(const ClassGradeArgs& args, const Assignment& a,
+                                 const std::vector<std::string>& names) {
+    ClassAnnotations c;
+    c.roster = rosterOf(args);
+    c.times = timesOf(args, a);
+    c.adjustments = adjustmentsOf(args, a, names);
+    return c;
+}
+
+// What the class adds to a kept record when outputs are drawn (its roster entry, its copy
+// flags, its lateness, its adjustments): true when that changed it, so it is written again.
+bool annotateRecord(const ClassAnnotations& c, const Assignment& a, const std::string& name,
+                    const std::string& entry, StudentRecord& r) {
+    const auto& [roster, flags, times, adjustments] = c;
+    const std::optional<LateRecord> late = lateOf(a, times, name, entry, r);
+    bool changed = roster && attachRoster(*roster, name, r);
+    auto given = adjustments.find(name);
+    std::vector<Adjustment> mineAdjusted =
+        given == adjustments.end() ? std::vector<Adjustment>() : given->second;
+    auto sameAdjustments = [](const std::vector<Adjustment>& x, const std::vector<Adjustment>& y) {
+        if (x.size() != y.size()) return false;
+        for (std::size_t i = 0; i < x.size(); ++i)
+            if (x[i].stage != y[i].stage || x[i].points != y[i].points ||
+                x[i].reason != y[i].reason)
+                return false;
+        return true;
+    };
+    if (!sameAdjustments(mineAdjusted, r.adjustments)) {
+        r.adjustments = mineAdjusted;
+        changed = true;
+    }
+    auto same = [](const std::optional<LateRecord>& x, const std::optional<LateRecord>& y) {
+        return x.has_value() == y.has_value() &&
+               (!x || (x->handedIn == y->handedIn && x->source == y->source && x->days == y->days &&
+                       std::abs(x->penalty - y->penalty) < 1e-9));
+    };
+    if (!same(late, r.late)) {
+        r.late = late;
+        changed = true;
+    }
+    auto it = flags.find(name);
+    std::vector<std::string> mine = it == flags.end() ? std::vector<std::string>() : it->second;
+    if (mine != r.flags) {
+        r.flags = mine;
+        changed = true;
+    }
+    return changed;
+}
+
+}  // namespace sl

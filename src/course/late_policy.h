@@ -1,0 +1,36 @@
+// The late policy (docs/assignment.md "Late policy"): when a hand-in came, from a manifest
+// (`grade --times times.csv`) or else its files' times, and what the assignment's policy
+// (course/assignment.h LatePolicy) takes off for it. Never a grade of its own: a record's
+// `late` is applied when outputs are drawn (grades.csv's total and penalty, the page).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+#include "course/assignment.h"
+#include "grade/record.h"
+
+namespace sl {
+
+// Seconds since 1970-01-01 UTC of "YYYY-MM-DDTHH:MM[:SS[.fff]](Z|+HH:MM|-HH:MM|+HHMM)" (a space
+// may stand for the T); nullopt for anything else, a time without a zone included.
+std::optional<long long> parseIsoTime(const std::string& text);
+// "YYYY-MM-DDTHH:MM:SSZ".
+std::string isoUtc(long long seconds);
+
+// What `p` takes off a hand-in made at `handedIn` (from `source`): nothing within the grace;
+// after it, penalty_per_day percent of `maxPoints` for each day or part of a day after the
+// deadline, at most cap percent, and never more than `score`.
+LateRecord lateFor(const LatePolicy& p, long long handedIn, const std::string& source,
+                   double maxPoints, double score);
+
+// `--times FILE`: a CSV with the header hand-in,time and one row per hand-in (ISO 8601 with a
+// zone). Throws UsageError naming the file and the line (exit 2).
+std::map<std::string, long long> loadTimes(const std::string& path);
+
+// The newest modification time of the hand-in at `path`: a zip's own, a folder's newest regular
+// file (at most 10,000 entries looked at); nullopt when there is none.
+std::optional<long long> newestFileTime(const std::string& path);
+
+}  // namespace sl

@@ -1,0 +1,59 @@
+// The roster's CSV (course/roster.h): RFC 4180 fields, a byte order mark, errors with their line.
+#include <gtest/gtest.h>
+
+#include "course/roster.h"
+#include "render/request.h"
+
+namespace sl {
+namespace {
+
+std::string errorOf(const std::string& text) {
+    try {
+        parseRoster(text, "r.csv");
+    } catch (const UsageError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(Roster, QuotedFieldsBomAndLineEnds) {
+    Roster r = parseRoster(
+        "\xEF\xBB\xBFId,Name,E-mail,Hand-in\r\n"
+        "1,\"Ng, Ann\",a@x,ann\r\n\r\n"
+        "2,\"two\nlines \"\"q\"\"\",b@x,bo\n"
+        "3,C,c@x,  cy  \n",
+        "r.csv");
+    ASSERT_EQ(r.entries.size(), 3u);
+    EXPECT_EQ(r.entries[0].who.name, "Ng, Ann");
+    EXPECT_EQ(r.entries[1].who.name, "two\nlines \"q\"");
+    EXPECT_EQ(r.entries[1].line, 4);
+    EXPECT_EQ(r.entries[2].line, 6);  // after the quoted line break
+    EXPECT_EQ(r.entries[2].handIn, "cy");
+    ASSERT_NE(r.find("bo"), nullptr);
+    EXPECT_EQ(r.find("bo")->who.id, "2");
+    EXPECT_EQ(r.find("nobody"), nullptr);
+}
+
+TEST(Roster, MalformedNamesTheLine) {
+    const std::string head = "id,name,email,hand-in\n";
+    EXPECT_EQ(errorOf(""),
+              "r.csv: line 1: empty: give a header row id,name,email,hand-in and a "
+              "student per row");
+    EXPECT_EQ(errorOf("id,name,email\n"),
+              "r.csv: line 1: the header must be id,name,email,hand-in");
+    EXPECT_EQ(errorOf(head + "1,a,b,c,d\n"),
+              "r.csv: line 2: 5 fields, expected 4 (id,name,email,hand-in; a field holding a "
+              "comma is quoted)");
+    EXPECT_EQ(errorOf(head + "1,\"a\"b,c,d\n"),
+              "r.csv: line 2: text after a closing quote (a quote inside a field is doubled)");
+    EXPECT_EQ(errorOf(head + "1,a,b,c\n2,\"open\n"),
+              "r.csv: line 3: a quoted field is never closed");
+    EXPECT_EQ(errorOf(head + ",a,b,c\n"), "r.csv: line 2: no id");
+    EXPECT_EQ(errorOf(head + "1,a,b,\n"), "r.csv: line 2: no hand-in name");
+    EXPECT_EQ(errorOf(head + "1,a,b,c\n1,d,e,f\n"), "r.csv: line 3: id '1' is already on line 2");
+    EXPECT_EQ(errorOf(head + "1,a,b,c\n2,B\xE9,e,f\n"),
+              "r.csv: line 3: not UTF-8 (save the file as UTF-8)");
+}
+
+}  // namespace
+}  // namespace sl
