@@ -4,8 +4,8 @@
 # Mesa's own leaks are suppressed by tests/sanitizers/lsan.supp; any report about our code fails.
 # The instrumented program does the same work more slowly, so its workers' time budget follows:
 # the corpus runs with --time-scale $SANITIZER_TIME_SCALE (default below, measured in
-# docs/robustness.md "Sanitizers"): every case's bound and every worker time limit (given or
-# the default) times that factor.
+# docs/robustness.md "Sanitizers"): every case's bound and every --time-limit a case gives times
+# that factor; the default, auto, is calibrated on our shaders in this same build already.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
