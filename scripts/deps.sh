@@ -23,7 +23,7 @@ ID="" VERSION_ID="" VERSION_CODENAME="" PRETTY_NAME=""
 # with the program). The Mesa drivers are named: --no-install-recommends would leave out the
 # EGL and GLX vendors and llvmpipe itself.
 common=(cmake g++ make pkg-config python3 python3-glad libx11-dev libegl-dev libglm-dev
-        libcli11-dev nlohmann-json3-dev libstb-dev libgtest-dev xvfb xauth xdotool gnuplot-nox
+        libcli11-dev nlohmann-json3-dev libstb-dev libpng-dev libgtest-dev xvfb xauth xdotool gnuplot-nox
         libegl-mesa0 libglx-mesa0 libgl1-mesa-dri)
 # The course cycle: libarchive unpacks students' zips (safely: src/course/archive.h); glslang,
 # Khronos' reference GLSL compiler, decides what a shader may say on every driver alike
@@ -55,7 +55,7 @@ case "$ID:${VERSION_ID:-}" in
   *)
     echo "deps: ${PRETTY_NAME:-this system} is not one deps.sh knows (Debian 12, 13, testing;" \
          "Ubuntu 22.04, 24.04). Install by hand: CMake >= 3.20, a C++17 compiler, pkg-config," \
-         "python3 with glad (python3-glad), GLM, CLI11, nlohmann-json, stb, GoogleTest, freeglut," \
+         "python3 with glad (python3-glad), GLM, CLI11, nlohmann-json, stb, libpng, GoogleTest, freeglut," \
          "X11, EGL with Mesa's llvmpipe (OSMesa optional), glslang, Xvfb, xauth, xdotool, gnuplot;" \
          "for scripts/test.sh also clang with libFuzzer and valgrind." >&2
     exit 1 ;;

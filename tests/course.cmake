@@ -46,6 +46,10 @@ set_tests_properties(course_not_graded PROPERTIES LABELS course TIMEOUT 1200)
 add_test(NAME course_load
          COMMAND python3 ${SL_COURSE_PY}/test_load.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/load)
 set_tests_properties(course_load PROPERTIES LABELS "course;load" TIMEOUT 2400 RUN_SERIAL TRUE)
+# What grade shares across a class changes no figure: rows identical to check alone (issue 28).
+add_test(NAME course_same_figures
+         COMMAND python3 ${SL_COURSE_PY}/test_same_figures.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/same-figures)
+set_tests_properties(course_same_figures PROPERTIES LABELS course TIMEOUT 1500)
 add_test(NAME course_autograder
          COMMAND python3 ${SL_COURSE_PY}/test_autograder.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/autograder)
 set_tests_properties(course_assignment_errors course_zip_safety PROPERTIES LABELS course TIMEOUT 300)

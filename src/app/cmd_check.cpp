@@ -14,7 +14,7 @@ namespace {
 struct CheckArgs {
     CommonOptions common;
     LimitOptions limits;
-    std::string stage, assignment;
+    std::string stage, assignment, submissionMetadata;
     CheckOutputs out;
     bool all = false, glslGiven = false, shadersGiven = false;
     std::optional<std::uint64_t> seed;  // --seed: the displaced view's; else drawn at start
@@ -33,7 +33,8 @@ int runCheckCommand(const CheckArgs& a) {
         if (a.all || !a.stage.empty())
             throw UsageError(
                 "--assignment: the assignment names the stages; leave out --stage and --all");
-        AssignmentCheckArgs args{a.assignment, a.common.shaders, a.out, settingsOf(a)};
+        AssignmentCheckArgs args{a.assignment, a.common.shaders, a.submissionMetadata, a.out,
+                                 settingsOf(a)};
         args.settings.pictures = !a.out.diffDir.empty();
         return runAssignmentCheck(args);
     }
@@ -76,6 +77,9 @@ Command addCheckCommand(CLI::App& app) {
     cmd->add_option("--assignment", args->assignment,
                     "grade --shaders DIR by an assignment file: its stages, points and visibility "
                     "(docs/assignment.md)");
+    cmd->add_option("--submission-metadata", args->submissionMetadata,
+                    "with --assignment: Gradescope's submission_metadata.json; its created_at "
+                    "is when the hand-in came, for the assignment's late policy");
     addLimitOptions(cmd, args->limits);
     return {cmd, [args, cmd] {
                 args->glslGiven = cmd->count("--glsl") > 0;

@@ -1,4 +1,4 @@
-// `shadowlab grade SUBMISSIONS --assignment A.json --out DIR [--jobs N]`: a whole class graded
+// `shadowlab grade SUBMISSIONS --assignment A.json --out DIR [--jobs N|auto]`: a whole class graded
 // by an assignment (src/course/class_grade.h): grades.csv, a feedback page per student, the
 // class page and the JSON record per student; resumable, and a rerun regrades what changed.
 // The solution is graded by the assignment first (course/solution_check.h).
@@ -8,6 +8,18 @@
 #include "course/class_grade.h"
 
 namespace sl {
+
+namespace {
+
+int parseJobs(const std::string& text) {
+    const bool digits = !text.empty() && text.size() <= 2 &&
+                        text.find_first_not_of("0123456789") == std::string::npos;
+    const int n = digits ? std::stoi(text) : 0;
+    if (n < 1 || n > 64) throw UsageError("--jobs: give 1 to 64, or auto");
+    return n;
+}
+
+}  // namespace
 
 Command addGradeCommand(CLI::App& app) {
     auto args = std::make_shared<ClassGradeArgs>();
@@ -22,7 +34,10 @@ Command addGradeCommand(CLI::App& app) {
         ->required();
     cmd->add_option("--out", args->out, "the folder to write grades.csv, pages and records to")
         ->required();
-    cmd->add_option("--jobs", args->jobs, "students graded in parallel (default 1)");
+    auto jobs = std::make_shared<std::string>("auto");
+    cmd->add_option("--jobs", *jobs,
+                    "job processes grading in parallel, 1 to 64, or auto (default: one a usable "
+                    "core, as memory allows)");
     cmd->add_option("--regrade", args->regrade,
                     "grade these students again (hand-in names), whatever their records say");
     cmd->add_flag("--regrade-all", args->regradeAll, "grade every student again");
@@ -43,8 +58,9 @@ Command addGradeCommand(CLI::App& app) {
                     "your own marked shaders to grade first (DIR/shaders_core/..., "
                     "DIR/shaders_legacy/...; default: the shipped ones)");
     addLimitOptions(cmd, *limits);
-    return {cmd, [args, backend, seed, limits] {
+    return {cmd, [args, backend, seed, limits, jobs] {
                 return guarded([&] {
+                    args->jobs = *jobs == "auto" ? 0 : parseJobs(*jobs);
                     args->settings.backend = toBackend(*backend);
                     args->settings.budget = limits->rule();
                     args->settings.seed = *seed ? **seed : drawSeed();

@@ -10,6 +10,9 @@ namespace sl {
 
 struct AssignmentCheckArgs {
     std::string assignment, shaders;
+    // Gradescope's /autograder/submission_metadata.json ("" = none): its created_at is when the
+    // hand-in came, for the assignment's late policy (docs/assignment.md "Late policy").
+    std::string submissionMetadata;
     CheckOutputs out;
     GradeSettings settings;
 };

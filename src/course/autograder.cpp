@@ -42,8 +42,11 @@ rm -f "$results"
 # Gradescope's default container: 768 MB and under one CPU. One worker at a time, each bounded;
 # the worker's memory limit is left to follow the container's cgroup (512 MB of 768: a memory
 # bomb is reported, not the container killed), the CPU count to its quota.
+# Gradescope's submission_metadata.json says when the hand-in came (the late policy's time).
+metadata=()
+[ -f "$root/submission_metadata.json" ] && metadata=(--submission-metadata "$root/submission_metadata.json")
 "$program" check --assignment "$root/source/assignment.json" --shaders "$root/submission" \
-    --report "$results" --format gradescope --time-limit 60
+    --report "$results" --format gradescope --time-limit 60 "${metadata[@]}"
 status=$?
 if [ ! -s "$results" ]; then
     # Never leave Gradescope without a results file: say what happened, 0 points.

@@ -19,14 +19,18 @@
 #include <set>
 #include <thread>
 
-#include "course/class_entries.h"
 #include "course/class_annotations.h"
+#include "course/class_entries.h"
+#include "course/class_progress.h"
 #include "course/feedback_html.h"
 #include "course/gradebook_exports.h"
 #include "course/intake_adapter.h"
-#include "course/solution_check.h"
 #include "course/roster.h"
+#include "course/solution_check.h"
 #include "course/student_grade.h"
+#include "grade/private_dir.h"
+#include "grade/worker.h"
+#include "io/box.h"
 #include "io/content_hash.h"
 #include "io/files.h"
 #include "stages/expectations.h"
@@ -37,6 +41,19 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
+
+// What one job may take at most: its worker's peak grading every core stage of lab4 at 640x480
+// was 437 MB (the views' truths it keeps, grade/stage_runs.h), with room for the job process.
+constexpr long kMbPerJob = 768;
+
+// The memory jobs share: the box's limit, else the machine's.
+std::optional<long long> memoryForJobs() {
+    std::optional<long long> box = readBox().memoryBytes;
+    if (box) return box;
+    long pages = ::sysconf(_SC_PHYS_PAGES), size = ::sysconf(_SC_PAGESIZE);
+    if (pages > 0 && size > 0) return (long long)pages * size;
+    return std::nullopt;
+}
 
 void writeOrThrow(const std::string& path, const std::string& text) {
     std::string err = writeFileAtomically(path, text.data(), text.size());
@@ -153,8 +170,7 @@ bool solutionCheckPassed(const std::string& out, const std::string& key) {
 // MISSING) so the gradebook is complete; hand-ins the roster does not list are named.
 void addRosterStudents(const Roster& roster, const Assignment& a,
                        const std::vector<std::string>& names, const std::string& out,
-                       std::vector<StudentRecord>& records,
-                       std::vector<std::string>& pages) {
+                       std::vector<StudentRecord>& records, std::vector<std::string>& pages) {
     for (const RosterEntry* e : rosterWithoutHandIn(roster, names)) {
         records.push_back(noHandInRecord(a, *e));
         pages.push_back("feedback/" + recordKey(e->handIn) + ".html");
@@ -171,7 +187,7 @@ void addRosterStudents(const Roster& roster, const Assignment& a,
 }  // namespace
 
 int runClassGrade(const ClassGradeArgs& args) {
-    if (args.jobs < 1 || args.jobs > 64) throw UsageError("--jobs: give 1 to 64");
+    if (args.jobs < 0 || args.jobs > 64) throw UsageError("--jobs: give 1 to 64, or auto");
     Assignment a = loadAssignment(args.assignment);
     std::string assignmentText;
     readRegularFile(args.assignment, 1u << 20, assignmentText);
@@ -188,6 +204,12 @@ int runClassGrade(const ClassGradeArgs& args) {
         throw UsageError(
             "grade: " + printableName(args.submissions) + " holds no submission" +
             (listing.skipped.empty() ? "" : " (left out: " + skippedList(listing) + ")"));
+    // Mesa's shader cache, one for the whole run (the solution check, every job, every worker):
+    // our shipped programs are compiled once per class instead of once per student, lesson and
+    // view, and a student's own once per student. Keyed by the shader's text and the driver, so
+    // no hand-in is served another's program; private, gone with the run.
+    PrivateDir shaderCache("shadowlab-shader-cache");
+    useShaderCacheFolder(shaderCache.path());
     SolutionTrees trees = solutionTrees(args.solutions);
     const std::string checkKey = solutionCheckKey(assignmentHash, trees);
     const bool checked = solutionCheckPassed(args.out, checkKey);
@@ -274,6 +296,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     }
     GradeSettings settings = args.settings;
     settings.pictures = true;
+    settings.pagePicturesOnly = true;
     std::map<std::string, std::string> imageDirs;
     for (std::size_t k : todo) imageDirs[subs[k].name] = args.out + "/work/" + files[k] + "/images";
     settings.imageDir = [imageDirs](const StudentWork& s) {
@@ -282,9 +305,20 @@ int runClassGrade(const ClassGradeArgs& args) {
     };
 
     // Jobs: child processes, each grading every jobs-th pending student in one worker series
-    // with one calibration of our shaders.
+    // with one calibration of our shaders, on its share of the cores (a worker with llvmpipe's
+    // and the figures' threads on every core, twice over, was slower than one job: issue 28).
+    const int cores = boxCores();
+    const int wanted = args.jobs > 0 ? args.jobs : jobsFor(cores, memoryForJobs(), kMbPerJob);
     int jobs =
-        int(std::min<std::size_t>(std::size_t(args.jobs), std::max<std::size_t>(todo.size(), 1)));
+        int(std::min<std::size_t>(std::size_t(wanted), std::max<std::size_t>(todo.size(), 1)));
+    const int coresPerJob = std::max(1, cores / std::max(1, jobs));
+    auto progressPath = [&](int j) {
+        return args.out + "/logs/job-" + std::to_string(j) + ".progress";
+    };
+    if (!todo.empty())
+        std::cout << jobs << (jobs == 1 ? " job" : " jobs") << " on " << cores
+                  << (cores == 1 ? " core" : " cores")
+                  << (args.jobs > 0 ? " (--jobs)" : " (--jobs auto)") << "\n";
     std::vector<pid_t> pids;
     std::cout.flush();
     std::cerr.flush();
@@ -294,6 +328,7 @@ int runClassGrade(const ClassGradeArgs& args) {
         if (pid == 0) {
             ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed grade leaves no job behind
             lock.closeInJob();
+            shareCores(coresPerJob);
             std::string log = args.out + "/logs/job-" + std::to_string(j) + ".log";
             int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
             if (fd >= 0) {
@@ -312,14 +347,17 @@ int runClassGrade(const ClassGradeArgs& args) {
                     index.push_back(todo[i]);
                 }
                 Calibration calibration(settings.budget, settings.backend);
-                gradeStudents(plans, share, settings, calibration, nullptr,
-                              [&](std::size_t i, StudentRecord r) {
-                                  r.assignmentHash = assignmentHash;
-                                  writeOrThrow(recordPath(index[i]),
-                                               recordJson(r).dump(1, ' ', false,
-                                                                  json::error_handler_t::replace) +
-                                                   "\n");
-                              });
+                JobProgress progress(progressPath(j), plans);
+                gradeStudents(
+                    plans, share, settings, calibration,
+                    [&](std::size_t i, const StageRecord& st) { progress.stageDone(plans[i], st); },
+                    [&](std::size_t i, StudentRecord r) {
+                        r.assignmentHash = assignmentHash;
+                        writeOrThrow(
+                            recordPath(index[i]),
+                            recordJson(r).dump(1, ' ', false, json::error_handler_t::replace) +
+                                "\n");
+                    });
             } catch (const std::exception& e) {
                 std::cerr << "shadowlab: grade job " << j << ": " << e.what() << "\n";
                 code = 3;
@@ -330,9 +368,13 @@ int runClassGrade(const ClassGradeArgs& args) {
         }
         pids.push_back(pid);
     }
-    // Progress: a line each time a student is done, with the time left at the pace so far.
+    // Progress: a line each time a student is done, with the time left at the pace of the
+    // rows the jobs rendered (course/class_progress.h).
     auto start = std::chrono::steady_clock::now();
     std::set<std::size_t> reported;
+    std::vector<std::string> progressFiles;
+    for (int j = 0; j < jobs; ++j) progressFiles.push_back(progressPath(j));
+    Pace pace;
     int exitCode = 0;
     std::size_t running = pids.size();
     auto isFresh = [&](std::size_t k, std::optional<StudentRecord>& r) {
@@ -340,14 +382,18 @@ int runClassGrade(const ClassGradeArgs& args) {
         return r && r->handInHash == hashes[k] && r->assignmentHash == assignmentHash;
     };
     auto poll = [&]() {
+        // Read every time, so the pace starts from the first rows that came back.
+        const double now =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const std::optional<double> rowsLeft = pace.timeLeft(now, readProgress(progressFiles));
         for (std::size_t k : todo) {
             if (reported.count(k)) continue;
             std::optional<StudentRecord> r;
             if (!isFresh(k, r)) continue;
             reported.insert(k);
-            double elapsed =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            double left = elapsed / double(reported.size()) * double(todo.size() - reported.size());
+            double left =
+                rowsLeft ? *rowsLeft
+                         : now / double(reported.size()) * double(todo.size() - reported.size());
             char line[512];
             std::snprintf(line, sizeof line,
                           "[student %zu of %zu] %-24s %7.2f / %.2f  %-10s time left about %s\n",

@@ -1,10 +1,12 @@
-// `grade SUBMISSIONS --assignment A.json --out DIR [--jobs N]`: a class in one command. Each
-// entry of the folder SUBMISSIONS (a student's folder or .zip) is taken in safely, the class is
-// split over N job processes (each one series of workers: references traced and our shaders
-// measured once per view per job), and each student's record is written atomically as soon as
-// it is complete. A rerun keeps a record only while the student's hand-in and the assignment
-// are those it was graded from and it is a score (no NOT GRADED row); every other student is
-// graded (again), and says why. Then grades.csv, a feedback page per student and the class page.
+// `grade SUBMISSIONS --assignment A.json --out DIR [--jobs N|auto]`: a class in one command.
+// Each entry of the folder SUBMISSIONS (a student's folder or .zip) is taken in safely, the
+// class is split over job processes (auto: one a usable core, as memory allows; each job one
+// series of workers on its share of the cores: references traced and our shaders measured once
+// per view per job, one Mesa shader cache for the run), and each student's record is written
+// atomically as soon as it is complete. A rerun keeps a record only while the student's hand-in and
+// the assignment are those it was graded from and it is a score (no NOT GRADED row); every other
+// student is graded (again), and says why. Then grades.csv, a feedback page per student and the
+// class page.
 #pragma once
 
 #include <string>
@@ -16,8 +18,8 @@ namespace sl {
 
 struct ClassGradeArgs {
     std::string submissions, assignment, out;
-    std::string solutions;  // the instructor's own marked trees ("" = the shipped ones)
-    int jobs = 1;
+    std::string solutions;             // the instructor's own marked trees ("" = the shipped ones)
+    int jobs = 0;                      // 0: auto (jobsFor the box)
     std::vector<std::string> regrade;  // --regrade NAME...: these students again
     bool regradeAll = false;           // --regrade-all
     std::string roster;                // --roster roster.csv (course/roster.h), or ""

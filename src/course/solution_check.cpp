@@ -1,13 +1,23 @@
 #include "course/solution_check.h"
 
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <filesystem>
 #include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
 #include "course/student_grade.h"
 #include "grade/private_dir.h"
+#include "grade/record.h"
+#include "io/box.h"
 #include "io/files.h"
 
 namespace sl {
@@ -86,20 +96,89 @@ void refuseUnlistedMarked(const Assignment& a, const SolutionTrees& trees,
     }
 }
 
+// The solution graded by `plan` with its stages dealt over the box's cores: part p grades the
+// stages j with j % parts == p in a process of its own (a core's share each, as a class's jobs),
+// writes its record to `dir`, and the parent puts the stages back in the plan's order. It comes
+// before a class is graded (a serial minute of an all-stage class on one core, issue 28).
+StudentRecord gradeSolution(const GradingPlan& plan, const StudentWork& solution,
+                            const GradeSettings& settings, const std::string& dir) {
+    std::size_t rendered = 0;
+    for (const StagePlan& st : plan.stages) rendered += st.rendered();
+    const int cores = boxCores();
+    const int parts = int(std::min<std::size_t>(std::size_t(cores), rendered));
+    auto gradePart = [&](const GradingPlan& part) {
+        Calibration calibration(settings.budget, settings.backend);
+        StudentRecord record;
+        gradeStudents({part}, {solution}, settings, calibration, nullptr,
+                      [&](std::size_t, StudentRecord r) { record = std::move(r); });
+        return record;
+    };
+    if (parts <= 1) return gradePart(plan);
+    auto partPath = [&](int p) { return dir + "/part-" + std::to_string(p) + ".json"; };
+    std::cout.flush();
+    std::cerr.flush();
+    std::vector<pid_t> pids;
+    for (int p = 0; p < parts; ++p) {
+        pid_t pid = ::fork();
+        if (pid < 0) throw std::runtime_error("cannot start the solution check's processes");
+        if (pid == 0) {
+            ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+            shareCores(std::max(1, cores / parts));
+            int code = 0;
+            try {
+                GradingPlan part = plan;
+                part.stages.clear();
+                for (std::size_t j = 0; j < plan.stages.size(); ++j)
+                    if (j % std::size_t(parts) == std::size_t(p))
+                        part.stages.push_back(plan.stages[j]);
+                std::string text = recordJson(gradePart(part)).dump();
+                std::string err = writeFileAtomically(partPath(p), text.data(), text.size());
+                if (!err.empty()) throw std::runtime_error(err);
+            } catch (const std::exception& e) {
+                std::cerr << "shadowlab: the solution check: " << e.what() << "\n";
+                code = 3;
+            }
+            std::cout.flush();
+            std::cerr.flush();
+            ::_exit(code);
+        }
+        pids.push_back(pid);
+    }
+    bool failed = false;
+    for (pid_t pid : pids) {
+        int status = 0;
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        failed = failed || !WIFEXITED(status) || WEXITSTATUS(status) != 0;
+    }
+    std::vector<StageRecord> stages(plan.stages.size());
+    for (int p = 0; p < parts && !failed; ++p) {
+        std::string text;
+        if (!readRegularFile(partPath(p), 64u << 20, text).empty()) {
+            failed = true;
+            break;
+        }
+        StudentRecord part = recordFromJson(nlohmann::json::parse(text));
+        std::size_t next = 0;
+        for (std::size_t j = std::size_t(p); j < plan.stages.size(); j += std::size_t(parts))
+            stages[j] = part.stages.at(next++);
+    }
+    if (failed) throw std::runtime_error("the solution check's processes failed: rerun");
+    return buildRecord(plan, solution, stages, 0);
+}
+
 }  // namespace
 
 StudentRecord verifySolution(const Assignment& a, const SolutionTrees& trees,
                              const GradeSettings& settings) {
     PrivateDir dir("shadowlab-solution");
-    StudentWork solution = solutionWork(a, trees, dir.path());
+    StudentWork solution = solutionWork(a, trees, dir.path() + "/hand-in");
     GradeSettings quiet = settings;
     quiet.pictures = false;
     quiet.imageDir = nullptr;
     quiet.rowImage = nullptr;
-    Calibration calibration(quiet.budget, quiet.backend);
-    StudentRecord record;
-    gradeStudents({planStudent(a, solution, quiet.seed)}, {solution}, quiet, calibration, nullptr,
-                  [&](std::size_t, StudentRecord r) { record = std::move(r); });
+    StudentRecord record =
+        gradeSolution(planStudent(a, solution, quiet.seed), solution, quiet, dir.path());
     refuseUnlistedMarked(a, trees, record);
     double lost = 0;
     int rowsLost = 0;

@@ -183,25 +183,39 @@ std::string besideDiff(const std::string& diffPath, const std::string& kind) {
     return stem + "." + kind + ".png";
 }
 
-// The mirror's difference picture at `diffPath` and, with `pictures`, the student's render and
-// our stencil reflection beside it (as for a shadow stage); a disk error is a note on the row.
-void writeMirrorPictures(const Evaluator::MirrorPictures& p, const std::string& diffPath,
-                         bool pictures, CheckResult& r) {
-    std::string err = writePng(diffPath, mirrorDifferencePicture(p.shown, p.exact, p.mask));
-    if (err.empty() && pictures) {
-        err = writePng(besideDiff(diffPath, "render"), p.shown);
-        if (err.empty()) err = writePng(besideDiff(diffPath, "truth"), p.exact);
+// A row's pictures once it is judged (which it writes: RowPictures): the difference at `diffPath`
+// and, for a feedback page, the render and the truth beside it (DIFF.render.png, DIFF.truth.png;
+// the mirror's truth is our stencil reflection, its difference taken inside the mirror). A full
+// disk costs the pictures, not the grade nor the report: a note on the row.
+void writePictures(Evaluator& rig, const std::optional<ShadowEvidence>& e,
+                   const std::string& diffPath, RowPictures pictures, CheckResult& r) {
+    if (diffPath.empty()) return;
+    if (pictures == RowPictures::AllUnlessPassing && r.status == Status::Pass) return;
+    const bool beside = pictures != RowPictures::Difference;
+    std::string err;
+    if (!e) {
+        const Evaluator::MirrorPictures& p = rig.mirrorPictures();
+        err = writePng(diffPath, mirrorDifferencePicture(p.shown, p.exact, p.mask));
+        if (err.empty() && beside) err = writePng(besideDiff(diffPath, "render"), p.shown);
+        if (err.empty() && beside) err = writePng(besideDiff(diffPath, "truth"), p.exact);
+    } else {
+        err = writePng(diffPath, diffImage(rig.reference(), e->shadowed, e->withShadows,
+                                           e->figures.evaluatedMask, e->figures.band));
+        if (err.empty() && beside) err = writePng(besideDiff(diffPath, "render"), e->withShadows);
+        if (err.empty() && beside)
+            err = writePng(besideDiff(diffPath, "truth"),
+                           truthPicture(rig.reference(), rig.shades()));
     }
     if (err.empty())
         r.diffFile = diffPath;
     else
-        r.note = "no diff image: " + err;
+        r.note += (r.note.empty() ? "" : "; ") + ("no diff image: " + err);
 }
 
 }  // namespace
 
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
-                     const std::map<std::string, double>* shipped, bool pictures) {
+                     const std::map<std::string, double>* shipped, RowPictures pictures) {
     if (request.view != ViewMode::Final)
         throw UsageError("--view " + std::string(viewName(request.view)) +
                          ": check judges the final picture; use --view final (or leave it out)");
@@ -217,32 +231,17 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
     r.light = renderer.lightPosition;
     r.seed = request.displaceSeed;
     r.expectation = findExpectation(expectations(), r.stage, r.scene, r.tree, r.parameters);
+    std::optional<ShadowEvidence> evidence;  // a shadow stage's renders, for its pictures
     try {
         if (request.stage == "mirror") {
             r.figures = rig.accuracy();
-            if (!diffPath.empty()) writeMirrorPictures(rig.mirrorPictures(), diffPath, pictures, r);
         } else {
-            ShadowEvidence e = rig.shadowEvidence();
-            r.figures = shadowAccuracy(e.figures);
-            r.evaluated = e.figures.evaluated;
-            r.truthLit = e.figures.truthLit;
-            r.truthShadow = e.figures.truthShadow;
-            if (!diffPath.empty()) {
-                std::string err =
-                    writePng(diffPath, diffImage(rig.reference(), e.shadowed, e.withShadows,
-                                                 e.figures.evaluatedMask, e.figures.band));
-                // A full disk costs the image, not the grade nor the report: a note on the row.
-                if (err.empty() && pictures) {
-                    err = writePng(besideDiff(diffPath, "render"), e.withShadows);
-                    if (err.empty())
-                        err = writePng(besideDiff(diffPath, "truth"),
-                                       truthPicture(rig.reference(), rig.shades()));
-                }
-                if (err.empty())
-                    r.diffFile = diffPath;
-                else
-                    r.note = "no diff image: " + err;
-            }
+            evidence = rig.shadowEvidence();
+            const ShadowFigures& f = evidence->figures;
+            r.figures = shadowAccuracy(f);
+            r.evaluated = f.evaluated;
+            r.truthLit = f.truthLit;
+            r.truthShadow = f.truthShadow;
         }
         // A GL error while a student's program drew is theirs (ERROR), else the platform's.
         throwGlFailure(!SL_CHECK_GL(), "the check of stage " + r.stage);
@@ -265,6 +264,7 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
     if (!r.expectation.entry) {  // a stage or tree the data file does not cover: nothing to judge
         r.status = Status::Skip;
         r.message = "no entry in " + expectationsPath() + " for this stage and tree";
+        writePictures(rig, evidence, diffPath, pictures, r);
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
     }
@@ -276,6 +276,7 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
     r.message = j.message;
     if (!r.expectation.exact)
         r.message += " [no entry for these settings: judged by the defaults' lesson]";
+    writePictures(rig, evidence, diffPath, pictures, r);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
 }

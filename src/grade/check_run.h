@@ -56,17 +56,24 @@ CheckResult checkResultFor(const RenderRequest& request);
 // Other failures propagate (bad input: UsageError; GL: std::runtime_error).
 // A displaced case (RenderRequest::displaceSeed) is judged against the wider of the lesson's
 // bounds and `shipped`, our shipped shaders' figures in the same view (the case's own when null).
-// With `pictures`, the render and the truth's shading (the mirror: our stencil reflection) are
-// written beside the diff image too (DIFF.render.png, DIFF.truth.png: a feedback page shows
-// the three side by side).
+// `pictures` says which are written once the row is judged (RowPictures below): with the
+// render and the truth's shading (the mirror: our stencil reflection) beside the diff image
+// (DIFF.render.png, DIFF.truth.png), a feedback page shows the three side by side.
+enum class RowPictures {
+    Difference,        // the diff image alone (check --diff-dir without pictures)
+    All,               // the three
+    AllUnlessPassing,  // the three for a row that does not pass, none for one that does: a page
+                       // shows a stage's first failing row, else its first row (`grade`)
+};
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
-                     const std::map<std::string, double>* shipped = nullptr, bool pictures = false);
+                     const std::map<std::string, double>* shipped = nullptr,
+                     RowPictures pictures = RowPictures::Difference);
 
 // One thing a (stage, tree) check judges: a lesson entry's settings seen from one view.
 struct CheckCase {
     RenderRequest request;
     std::string view, lesson;
-    bool pictures = false;  // write the render and the truth beside the diff image
+    RowPictures pictures = RowPictures::Difference;
 };
 
 // What `check` runs for one stage and tree (`base`): every lesson entry of expectations.json

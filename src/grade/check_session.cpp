@@ -202,8 +202,7 @@ void validateOutputs(const CheckOutputs& out, const std::string& submission) {
 }
 
 int gradeOneStudent(const GradingPlan& plan, const StudentWork& work, GradeSettings settings,
-                    const CheckOutputs& out, const std::string& tool,
-                    const std::string& headline) {
+                    const CheckOutputs& out, const std::string& tool, const std::string& headline) {
     std::size_t total = 0;
     for (const StagePlan& st : plan.stages) total += st.rows.size();
     makeDiffDir(out);
@@ -234,13 +233,14 @@ int gradeOneStudent(const GradingPlan& plan, const StudentWork& work, GradeSetti
         },
         [&](std::size_t, StudentRecord r) { record = std::move(r); });
     record.tool = tool;
+    if (settings.annotate) settings.annotate(record);
     record.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const RowCounts c = countRows(record);
-    std::cout << "checked " << c.total << ": " << c.passed << " passed, " << c.failed
-              << " failed, " << c.skipped << " skipped, " << c.errors << " errors, " << c.missing
-              << " missing, " << c.notGraded << " not graded in " << std::fixed
-              << std::setprecision(1) << record.seconds << std::defaultfloat << " s ("
+    std::cout << "checked " << c.total << ": " << c.passed << " passed, " << c.failed << " failed, "
+              << c.skipped << " skipped, " << c.errors << " errors, " << c.missing << " missing, "
+              << c.notGraded << " not graded in " << std::fixed << std::setprecision(1)
+              << record.seconds << std::defaultfloat << " s ("
               << (record.machine.empty() ? "no stage rendered" : record.machine) << ")\n"
               << printable(stageSummary(record));
     if (!out.diff.empty())
@@ -256,8 +256,7 @@ int gradeOneStudent(const GradingPlan& plan, const StudentWork& work, GradeSetti
             written = recordJson(record);
             written["expectations"] = expectationsPath();
         }
-        writeOutput("--report",
-                    out.report,
+        writeOutput("--report", out.report,
                     written.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     }
     if (!out.junit.empty()) writeOutput("--junit", out.junit, junitXml(record));

@@ -1,5 +1,6 @@
 #include "grade/grade_students.h"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 
@@ -21,7 +22,7 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
     struct Pending {
         std::vector<std::optional<StageRecord>> stages;  // per stage of the plan, once made
         std::size_t stagesLeft = 0;
-        Clock::time_point start;
+        double seconds = 0;  // the wall time of its stages' jobs (rounds interleave students)
     };
     std::vector<Pending> pending(students.size());
     std::vector<std::vector<CheckCase>> series;
@@ -30,23 +31,41 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
         if (stageDone) stageDone(k, st);
         pending[k].stages[j] = std::move(st);
     };
+    std::size_t stageCount = 0;
     for (std::size_t k = 0; k < students.size(); ++k) {
-        const GradingPlan& plan = plans[k];
-        pending[k].stages.resize(plan.stages.size());
-        if (!students[k].error.empty()) continue;
-        const std::string dir = settings.imageDir ? settings.imageDir(students[k]) : "";
-        for (std::size_t j = 0; j < plan.stages.size(); ++j) {
-            const StagePlan& p = plan.stages[j];
-            if (!p.rendered()) continue;
-            series.emplace_back();
-            for (const RowPlan& row : p.rows) {
-                series.back().push_back(row.check);
-                series.back().back().pictures = settings.pictures && !dir.empty();
-            }
-            owner.emplace_back(k, j);
-            ++pending[k].stagesLeft;
-        }
+        pending[k].stages.resize(plans[k].stages.size());
+        stageCount = std::max(stageCount, plans[k].stages.size());
     }
+    // The order of the series: students in rounds of a few, and within a round stage by stage,
+    // so the views a stage renders (up to 7 per stage, 9 for all stages of lab4) are traced and
+    // drawn with our shaders once per round and stay in the worker's truth cache (8 views,
+    // Evaluator::maxTruths): student by student the cache lost the all-stage views to each other
+    // and every student traced them again. A round's students are done together: rounds stay
+    // small enough for a progress line at least every third of the share.
+    const std::size_t round = std::clamp<std::size_t>((students.size() + 2) / 3, 1, 8);
+    for (std::size_t first = 0; first < students.size(); first += round)
+        for (std::size_t j = 0; j < stageCount; ++j)
+            for (std::size_t k = first; k < std::min(students.size(), first + round); ++k) {
+                if (!students[k].error.empty() || j >= plans[k].stages.size()) continue;
+                const std::string dir = settings.imageDir ? settings.imageDir(students[k]) : "";
+                const StagePlan& p = plans[k].stages[j];
+                if (!p.rendered()) continue;
+                series.emplace_back();
+                bool firstShown = true;
+                for (const RowPlan& row : p.rows) {
+                    series.back().push_back(row.check);
+                    RowPictures& pictures = series.back().back().pictures;
+                    pictures = RowPictures::Difference;
+                    if (!settings.pictures || dir.empty()) continue;
+                    const bool shown = p.visibility != "hidden" && row.visibility != "hidden";
+                    pictures = !settings.pagePicturesOnly || (shown && firstShown)
+                                   ? RowPictures::All
+                                   : RowPictures::AllUnlessPassing;
+                    firstShown = firstShown && !shown;
+                }
+                owner.emplace_back(k, j);
+                ++pending[k].stagesLeft;
+            }
     auto finish = [&](std::size_t k) {
         const StudentWork& s = students[k];
         StudentRecord record;
@@ -59,19 +78,14 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
                     made(k, j, stageRecord(plans[k].stages[j], nullptr, s.overlay));
                 stages.push_back(*pending[k].stages[j]);
             }
-            double seconds =
-                std::chrono::duration<double>(Clock::now() - pending[k].start).count();
-            record = buildRecord(plans[k], s, stages, seconds);
+            record = buildRecord(plans[k], s, stages, pending[k].seconds);
         }
         record.seed = settings.seed;
         done(k, std::move(record));
     };
-    const auto now = Clock::now();
-    for (auto& p : pending) p.start = now;
     // Students with nothing to render are done before any worker starts.
     for (std::size_t k = 0; k < students.size(); ++k)
         if (pending[k].stagesLeft == 0) finish(k);
-    std::size_t started = series.empty() ? 0 : owner[0].first;
     auto diffPath = [&](const CheckCase& c) -> std::string {
         // The case belongs to the student whose overlay it carries.
         for (std::size_t k = 0; k < students.size(); ++k) {
@@ -90,17 +104,16 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
         }
         return "";
     };
-    checkInWorkers(series, diffPath, calibration,
-                   [&](std::size_t k, std::vector<CheckResult> results) {
-                       auto [who, j] = owner[k];
-                       if (who != started) {
-                           pending[who].start = Clock::now();
-                           started = who;
-                       }
-                       made(who, j,
-                            stageRecord(plans[who].stages[j], &results, students[who].overlay));
-                       if (--pending[who].stagesLeft == 0) finish(who);
-                   });
+    auto last = Clock::now();  // when the previous job came back
+    checkInWorkers(
+        series, diffPath, calibration, [&](std::size_t k, std::vector<CheckResult> results) {
+            auto [who, j] = owner[k];
+            const auto now = Clock::now();
+            pending[who].seconds += std::chrono::duration<double>(now - last).count();
+            last = now;
+            made(who, j, stageRecord(plans[who].stages[j], &results, students[who].overlay));
+            if (--pending[who].stagesLeft == 0) finish(who);
+        });
 }
 
 }  // namespace sl

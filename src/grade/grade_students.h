@@ -19,6 +19,9 @@ struct GradeSettings {
     Backend backend = Backend::Auto;
     BudgetRule budget;
     bool pictures = false;  // write render, truth and diff images per row
+    // With pictures: only those a feedback page shows (a stage's first shown row and every row
+    // that does not pass; `grade`), not every row's (`check --diff-dir`).
+    bool pagePicturesOnly = false;
     // The displaced views' seed (drawn once per run, so a class shares one view and its
     // reference is traced once); none: no displaced view.
     std::optional<std::uint64_t> seed;
@@ -26,6 +29,9 @@ struct GradeSettings {
     // diff image (default: DIR/rowSlug(case).png).
     std::function<std::string(const StudentWork&)> imageDir;
     std::function<std::string(const StudentWork&, const CheckCase&)> rowImage;
+    // Applied to a one-student check's record before any output is drawn from it (`check
+    // --assignment --submission-metadata`: the late policy; course/ knows it, grade/ does not).
+    std::function<void(StudentRecord&)> annotate;
 };
 
 // Grades `students[k]` by `plans[k]` in order; `stageDone(k, stage)` as each stage's record is

@@ -166,19 +166,18 @@ nlohmann::json gradescopeResults(const StudentRecord& r) {
             nlohmann::json figures = nlohmann::json::object();
             for (const auto& [name, value] : c.figureMap())
                 figures[name] = std::isnan(value) ? nlohmann::json() : nlohmann::json(value);
-            tests.push_back(
-                {{"name", rowName(row)},
-                 {"number", std::to_string(number) + "." + std::to_string(++sub)},
-                 {"score", row.points},
-                 {"max_score", row.maxPoints},
-                 {"status", earnsPoints(c.status) ? "passed" : "failed"},
-                 {"visibility", row.visibility},
-                 {"output", rowOutput(row)},
-                 {"tags", {st.stage, c.verdict()}},
-                 {"extra_data",
-                  {{"verdict", c.verdict()},
-                   {"stage_status", statusName(st.status)},
-                   {"figures", figures}}}});
+            tests.push_back({{"name", rowName(row)},
+                             {"number", std::to_string(number) + "." + std::to_string(++sub)},
+                             {"score", row.points},
+                             {"max_score", row.maxPoints},
+                             {"status", earnsPoints(c.status) ? "passed" : "failed"},
+                             {"visibility", row.visibility},
+                             {"output", rowOutput(row)},
+                             {"tags", {st.stage, c.verdict()}},
+                             {"extra_data",
+                              {{"verdict", c.verdict()},
+                               {"stage_status", statusName(st.status)},
+                               {"figures", figures}}}});
         }
     }
     // The top-level output is always visible: visible stages, counting visible rows only.
@@ -209,12 +208,19 @@ nlohmann::json gradescopeResults(const StudentRecord& r) {
         out << notGraded
             << " checks could not be run on the grading machine (not your submission's "
                "fault): no score yet; the autograder must be rerun\n";
+    if (r.late && r.late->days > 0)
+        out << "Handed in " << r.late->handedIn << ", " << r.late->days
+            << (r.late->days == 1 ? " day" : " days") << " late: the late policy takes "
+            << points(r.late->penalty) << " points off, " << points(r.total()) << " of "
+            << points(r.maxScore) << " points\n";
+    else if (r.late)
+        out << "Handed in " << r.late->handedIn << ": on time\n";
     nlohmann::json results = {{"execution_time", r.seconds},
                               {"output", out.str()},
                               {"visibility", "visible"},
                               {"stdout_visibility", "hidden"},
                               {"tests", tests}};
-    if (r.graded()) results["score"] = r.score;
+    if (r.graded()) results["score"] = r.total();  // after the late policy
     return results;
 }
 
@@ -256,9 +262,8 @@ std::string junitXml(const StudentRecord& r) {
             const CheckResult& c = row.result;
             ++tests;
             cases << "    <testcase classname=\"shadowlab." << xmlEscaped(st.stage + "/" + st.tree)
-                  << "\" name=\""
-                  << xmlEscaped(rowName(row))
-                  << "\" time=\"" << seconds3(c.seconds) << "\">\n"
+                  << "\" name=\"" << xmlEscaped(rowName(row)) << "\" time=\"" << seconds3(c.seconds)
+                  << "\">\n"
                   << "      <properties>\n        <property name=\"points\" value=\""
                   << points(row.points) << "\"/>\n        <property name=\"max_points\" value=\""
                   << points(row.maxPoints) << "\"/>\n        <property name=\"visibility\" value=\""

@@ -31,7 +31,7 @@ nlohmann::json checkStageJob(Evaluator& rig, const std::vector<CheckCase>& cases
 std::vector<CheckCase> withoutSubmission(std::vector<CheckCase> cases) {
     for (CheckCase& c : cases) {
         c.request.overlay.clear();
-        c.pictures = false;
+        c.pictures = RowPictures::Difference;
     }
     return cases;
 }
@@ -45,9 +45,9 @@ std::string jobKey(const std::vector<CheckCase>& cases) {
     for (const CheckCase& c : cases) {
         const RenderRequest& r = c.request;
         key.push_back({r.stage, treeName(r.tree), effectiveScene(r), r.width, r.height, vec(r.eye),
-                       vec(r.at), vec(r.light), r.fovy ? nlohmann::json(*r.fovy) : nullptr,
-                       r.sets, r.displaceSeed ? nlohmann::json(*r.displaceSeed) : nullptr,
-                       c.view, c.lesson});
+                       vec(r.at), vec(r.light), r.fovy ? nlohmann::json(*r.fovy) : nullptr, r.sets,
+                       r.displaceSeed ? nlohmann::json(*r.displaceSeed) : nullptr, c.view,
+                       c.lesson});
     }
     return key.dump();
 }
@@ -188,8 +188,7 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
         return checkStageJob(*rig, plan[k], diffPath);
     };
     // The rows of job k from how its worker ended under `limits`.
-    std::function<std::vector<CheckResult>(std::size_t, const WorkerOutcome&, const Limits&,
-                                           bool)>
+    std::function<std::vector<CheckResult>(std::size_t, const WorkerOutcome&, const Limits&, bool)>
         resolve = [&](std::size_t k, const WorkerOutcome& outcome, const Limits& limits,
                       bool retried) -> std::vector<CheckResult> {
         const RenderRequest& r = plan[k].front().request;
@@ -202,22 +201,22 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
                                ": a platform problem, not the submission's: these rows are not "
                                "graded (rerun, on a less loaded machine or with more memory)";
             std::cerr << "shadowlab: " << text << "\n";
-            return std::vector<CheckResult>{
-                failedRow(r, Status::NotGraded, text, outcome.seconds)};
+            return std::vector<CheckResult>{failedRow(r, Status::NotGraded, text, outcome.seconds)};
         };
         if (isOurs(k)) return notGraded("these are our shipped shaders");
         std::string why;
         std::optional<JobCost> ours = calibration.ours(plan[k], why);
         if (!ours) return notGraded(why);
         const Limits budget = submissionLimits(rule, *ours);
-        const bool raised = outcome.kind == WorkerOutcome::Kind::Timeout
-                                ? budget.cpuSeconds > limits.cpuSeconds ||
-                                      budget.wallSeconds > limits.wallSeconds
-                                : budget.memoryMb > limits.memoryMb;
+        const bool raised =
+            outcome.kind == WorkerOutcome::Kind::Timeout
+                ? budget.cpuSeconds > limits.cpuSeconds || budget.wallSeconds > limits.wallSeconds
+                : budget.memoryMb > limits.memoryMb;
         if (!retried && stoppedAtFloor(rule, outcome) && raised) {
             WorkerOutcome again;
-            runBoundedSeries(budget, 1, [&](std::size_t) { return job(k); },
-                             [&](std::size_t, const WorkerOutcome& o) { again = o; });
+            runBoundedSeries(
+                budget, 1, [&](std::size_t) { return job(k); },
+                [&](std::size_t, const WorkerOutcome& o) { again = o; });
             rig.reset();
             return resolve(k, again, budget, true);
         }

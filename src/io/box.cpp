@@ -182,9 +182,39 @@ Box readBox() {
     return box;
 }
 
+namespace {
+
+int& coreShare() {  // 0: the whole box
+    static int share = 0;
+    return share;
+}
+
+// Whether LP_NUM_THREADS came from the user (applyBoxThreads and shareCores set it otherwise).
+bool& threadsFromUser() {
+    static bool user = std::getenv("LP_NUM_THREADS") != nullptr;
+    return user;
+}
+
+}  // namespace
+
+int jobsFor(int cores, std::optional<long long> memoryBytes, long perJobMb) {
+    long long byMemory =
+        memoryBytes && perJobMb > 0 ? *memoryBytes / (perJobMb * 1048576LL) : cores;
+    return int(std::max<long long>(1, std::min<long long>(cores, byMemory)));
+}
+
 int boxCores() {
-    Box box = readBox();
-    return usableCores(box.affinityCores, box.quotaCores);
+    static const int cores = [] {  // the affinity and the quota do not change while we run
+        Box box = readBox();
+        return usableCores(box.affinityCores, box.quotaCores);
+    }();
+    return coreShare() > 0 ? std::min(cores, coreShare()) : cores;
+}
+
+void shareCores(int cores) {
+    threadsFromUser();  // read before it is set here
+    coreShare() = std::max(1, cores);
+    if (!threadsFromUser()) ::setenv("LP_NUM_THREADS", std::to_string(boxCores()).c_str(), 1);
 }
 
 long boxDefaultMemoryMb(long fallbackMb) {
@@ -193,7 +223,7 @@ long boxDefaultMemoryMb(long fallbackMb) {
 }
 
 void applyBoxThreads() {
-    if (std::getenv("LP_NUM_THREADS")) return;
+    if (threadsFromUser()) return;
     int cores = boxCores();
     if (cores < int(std::thread::hardware_concurrency()))
         ::setenv("LP_NUM_THREADS", std::to_string(cores).c_str(), 0);

@@ -48,7 +48,15 @@ struct Box {
 // Reads /proc/self/cgroup, /proc/self/mountinfo, the cgroup files, the rlimit and the affinity.
 Box readBox();
 
-int boxCores();                            // usableCores of readBox()
+// Parallel jobs a box holds: one a core, fewer where the memory (the box's limit, else the
+// machine's) would not give each `perJobMb`; at least one.
+int jobsFor(int cores, std::optional<long long> memoryBytes, long perJobMb);
+
+int boxCores();  // usableCores of readBox(), capped by shareCores
+// This process and what it starts use at most `cores` of the box from now on (a job of a
+// class's share): boxCores() says so, and llvmpipe's threads follow (LP_NUM_THREADS) unless
+// the user set them.
+void shareCores(int cores);
 long boxDefaultMemoryMb(long fallbackMb);  // defaultMemoryMb of readBox()
 // Sets LP_NUM_THREADS to boxCores() where the box has fewer cores than the machine, unless
 // the caller set it: llvmpipe otherwise starts a thread per online CPU.

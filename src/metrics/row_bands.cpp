@@ -10,20 +10,11 @@
 
 namespace sl {
 
-namespace {
-
-int usableThreads() {
-    static const int cores = boxCores();  // affinity and cgroup quota; they do not change
-    return cores;
-}
-
-}  // namespace
-
 int rowBandCount(int count, long costPerRow) {
     constexpr long kLeastPixelsPerBand = 16384;
     if (count <= 0) return 1;
     long worth = std::max(1L, long(count) * std::max(1L, costPerRow) / kLeastPixelsPerBand);
-    return int(std::clamp<long>(worth, 1, std::min(usableThreads(), count)));
+    return int(std::clamp<long>(worth, 1, std::min(boxCores(), count)));
 }
 
 void forRowBands(int count, int bands,

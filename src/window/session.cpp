@@ -1,7 +1,5 @@
 #include "window/session.h"
 
-#include <stb_image_write.h>
-
 #include <algorithm>
 #include <iostream>
 #include <thread>
@@ -26,11 +24,6 @@ WindowSession::WindowSession(const WindowArgs& args)
       request_(args.request),
       tree_(request_.tree),
       hudShaders_(GlslTree::Core, shaderTreeRoot(GlslTree::Core), "") {
-    // The window's PNGs (`p`, --screenshot): one filter for every row and zlib level 5 write a
-    // 1920x1080 shot in 0.24 s instead of 0.55 s (stb's default tries five filters a row), 3 %
-    // larger (measured on a margin shot).
-    stbi_write_force_png_filter = 1;
-    stbi_write_png_compression_level = 5;
     const StageInfo* info = findStage(request_.stage);
     if (info && info->legacyOnly) request_.tree = GlslTree::Legacy;  // `--stage fixed` alone
     validateRequest(request_);

@@ -1,19 +1,35 @@
 #!/usr/bin/env python3
-"""Benchmark (not a test): a class graded with `grade --jobs 2` against the README's old loop of
-`check` calls, alternating runs, on 100 one-stage submissions (margin; the loop runs
-`check --stage margin`) and 20 all-stage submissions (the loop runs `check --all`, core tree,
-as the README's script does; grade uses bench_all_stages.json, the same rows).
-Submissions: the shipped solution, the release's starter and an acne variant (margin 0), mixed.
-usage: bench_grade.py SHADOWLAB REPO WORKDIR [REPS_100 REPS_20 [N_ONE N_ALL]]   one JSON line per run
-(N_ONE, N_ALL: the class sizes, 100 and 20 by default). Both sides run with --time-limit 300 so a
-loaded machine does not turn slow stages into TIMEOUTs."""
-import json, os, resource, shutil, statistics, subprocess, sys, time
+"""Benchmark (not a test: the machines are shared and noisy): a class graded with `grade` (its
+default `--jobs auto`) against the per-student loop the README replaced (one `check` per
+student, one after the other), on a class of N_ONE one-stage hand-ins (margin; the loop runs
+`check --stage margin`) and one of N_ALL all-stage hand-ins (the loop runs `check --all`, the
+core tree's rows; grade uses bench_all_stages.json, the same rows). Hand-ins: the shipped
+solution (half of them), the release's starter and an acne variant (margin 0), mixed.
 
-exe, repo, work = os.path.abspath(sys.argv[1]), sys.argv[2], sys.argv[3]
-reps100 = int(sys.argv[4]) if len(sys.argv) > 4 else 1
-reps20 = int(sys.argv[5]) if len(sys.argv) > 5 else 2
-n_one = int(sys.argv[6]) if len(sys.argv) > 6 else 100
-n_all = int(sys.argv[7]) if len(sys.argv) > 7 else 20
+Runs alternate, loop then grade, REPS times per class; both sides write their pictures (the loop
+--diff-dir) and run with --time-limit 300 so a loaded machine cannot turn work into TIMEOUTs.
+Each grade run starts from an empty --out (the solution check and the shader cache included).
+--busy pins a busy loop to every core for the whole run (`taskset -c N sh -c 'while :; do :;
+done'`). The progress estimate is read from grade's own lines: the first line at or past the
+class's midpoint says "time left about T"; the error is |T - what was left| / what was left.
+
+usage: bench_grade.py SHADOWLAB REPO WORKDIR [--reps N] [--one N] [--all N] [--busy]
+       [--classes one,all]
+One JSON line per run, then one summary line per class: the ratio grade / loop of wall times,
+paired by rep (median, min, max), and the progress errors."""
+import argparse, json, os, re, resource, shutil, statistics, subprocess, sys, time
+
+ap = argparse.ArgumentParser()
+ap.add_argument("exe")
+ap.add_argument("repo")
+ap.add_argument("work")
+ap.add_argument("--reps", type=int, default=3)
+ap.add_argument("--one", type=int, default=100)
+ap.add_argument("--all", type=int, default=20)
+ap.add_argument("--busy", action="store_true")
+ap.add_argument("--classes", default="one,all")
+a = ap.parse_args()
+exe, repo, work = os.path.abspath(a.exe), a.repo, a.work
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 core = os.path.join(repo, "shaders_core")
@@ -34,52 +50,95 @@ subprocess.run([exe, "release", "--assignment", margin_only, "--out", work + "/r
 solution = open(os.path.join(core, "margin/lit.frag")).read()
 starter = open(work + "/rel/shaders/margin/lit.frag").read()
 acne = solution.replace("return margin;", "return 0.0;")
-for k in range(n_one):
-    put(work + "/class100/s%03d" % k, "margin/lit.frag", [solution, solution, starter, acne][k % 4])
-for k in range(n_all):
+assert acne != solution, "the acne variant changes nothing"
+variants = [solution, starter, acne, solution]
+for k in range(a.one):
+    put(work + "/class-one/s%03d" % k, "margin/lit.frag", variants[k % 4])
+for k in range(a.all):
     for s in lab["stages"]:
         for f in s["files"]:
             text = open(os.path.join(core, f)).read()
             if f == "margin/lit.frag":
-                text = [solution, starter, acne, solution][k % 4]
-            put(work + "/class20/s%02d" % k, f, text)
+                text = variants[k % 4]
+            put(work + "/class-all/s%02d" % k, f, text)
 
 
-def old_loop(cls, args):
-    out = work + "/old-" + os.path.basename(cls)
+def seconds_of(text):  # grade's duration(): "12 s", "3 min 05 s"
+    m = re.match(r"(?:(\d+) min )?(\d+) s", text)
+    return int(m.group(1) or 0) * 60 + int(m.group(2))
+
+
+def loop(cls, args):
+    out = work + "/loop-" + os.path.basename(cls)
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
-    start = time.time()
     for d in sorted(os.listdir(cls)):
         subprocess.run([exe, "check"] + args + ["--time-limit", "300", "--shaders", os.path.join(cls, d), "--report",
                         "%s/%s.json" % (out, d), "--diff-dir", "%s/%s-diff" % (out, d)],
                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    return time.time() - start
+    return {}
 
 
-def new_grade(cls, assignment):
-    out = work + "/new-" + os.path.basename(cls)
+def grade(cls, assignment):
+    out = work + "/grade-" + os.path.basename(cls)
     shutil.rmtree(out, ignore_errors=True)
-    start = time.time()
-    r = subprocess.run([exe, "grade", cls, "--assignment", assignment, "--out", out, "--jobs", "2", "--time-limit", "300"],
-                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    assert r.returncode == 0, r.returncode
-    return time.time() - start
+    p = subprocess.Popen([exe, "grade", cls, "--assignment", assignment, "--out", out, "--time-limit", "300"],
+                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    lines = [(time.time(), line) for line in p.stdout]
+    assert p.wait() == 0, p.returncode
+    end = time.time()
+    info = {}
+    for t, line in lines:
+        m = re.match(r"\[student (\d+) of (\d+)\].*time left about (.+)$", line)
+        if m and 2 * int(m.group(1)) >= int(m.group(2)):
+            said, left = seconds_of(m.group(3)), end - t
+            info = {"midpoint_said_s": said, "midpoint_left_s": round(left, 1),
+                    "progress_error": round(abs(said - left) / max(left, 1.0), 3)}
+            break
+    jobs = [line for _, line in lines if " on " in line and "(--jobs" in line]
+    info["jobs"] = jobs[0].strip() if jobs else ""
+    return info
 
 
-results = {}
-for name, reps, old_args, assignment, cls in (
-        ("%d one-stage" % n_one, reps100, ["--stage", "margin"], margin_only, work + "/class100"),
-        ("%d all-stage" % n_all, reps20, ["--all"], all_stages, work + "/class20")):
-    for rep in range(reps):
-        for kind in ("old", "new"):
-            before = resource.getrusage(resource.RUSAGE_CHILDREN)
-            t = old_loop(cls, old_args) if kind == "old" else new_grade(cls, assignment)
-            after = resource.getrusage(resource.RUSAGE_CHILDREN)
-            cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
-            results.setdefault((name, kind), []).append(t)
-            print(json.dumps({"class": name, "run": kind, "rep": rep, "seconds": round(t, 1),
-                              "cpu_seconds": round(cpu, 1), "load": os.getloadavg()[0]}), flush=True)
-for (name, kind), ts in results.items():
-    print(json.dumps({"class": name, "run": kind, "median": round(statistics.median(ts), 1),
-                      "min": round(min(ts), 1), "max": round(max(ts), 1), "n": len(ts)}))
+busy = []
+if a.busy:
+    for cpu in sorted(os.sched_getaffinity(0)):
+        busy.append(subprocess.Popen(["taskset", "-c", str(cpu), "sh", "-c", "while :; do :; done"]))
+machine = subprocess.run(["sh", "-c", "nproc; uname -srm; grep -m1 'model name' /proc/cpuinfo"],
+                         capture_output=True, text=True).stdout.split("\n")
+print(json.dumps({"machine": " / ".join(l.strip() for l in machine if l.strip()), "busy_loops": len(busy)}),
+      flush=True)
+try:
+    classes = {"one": ("%d one-stage" % a.one, ["--stage", "margin"], margin_only, work + "/class-one"),
+               "all": ("%d all-stage" % a.all, ["--all"], all_stages, work + "/class-all")}
+    summary = []
+    for key in a.classes.split(","):
+        name, loop_args, assignment, cls = classes[key]
+        walls = {"loop": [], "grade": []}
+        errors = []
+        for rep in range(a.reps):
+            for kind in ("loop", "grade"):
+                before = resource.getrusage(resource.RUSAGE_CHILDREN)
+                start = time.time()
+                info = loop(cls, loop_args) if kind == "loop" else grade(cls, assignment)
+                wall = time.time() - start
+                after = resource.getrusage(resource.RUSAGE_CHILDREN)
+                cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+                walls[kind].append(wall)
+                if "progress_error" in info:
+                    errors.append(info["progress_error"])
+                print(json.dumps(dict({"class": name, "run": kind, "rep": rep, "seconds": round(wall, 1),
+                                       "cpu_seconds": round(cpu, 1), "load": round(os.getloadavg()[0], 2)},
+                                      **info)), flush=True)
+        ratios = [g / l for g, l in zip(walls["grade"], walls["loop"])]
+        summary.append({"class": name, "busy": bool(busy), "reps": a.reps,
+                        "loop_s_median": round(statistics.median(walls["loop"]), 1),
+                        "grade_s_median": round(statistics.median(walls["grade"]), 1),
+                        "ratio_median": round(statistics.median(ratios), 3),
+                        "ratio_min": round(min(ratios), 3), "ratio_max": round(max(ratios), 3),
+                        "progress_error_max": max(errors) if errors else None})
+    for s in summary:
+        print(json.dumps(s), flush=True)
+finally:
+    for b in busy:
+        b.kill()

@@ -71,6 +71,34 @@ for student in ("alice", "bob", "carol", "dave"):  # correct, missing stages, br
     assert any(t["visibility"] == "hidden" for t in res["tests"]), "the instructor's view is not hidden"
     assert any(t["visibility"] == "after_due_date" for t in res["tests"])
     print(student, res["score"], "of", maximum, len(res["tests"]), "tests")
+# Gradescope's submission_metadata.json: created_at under the assignment's late policy (10 % of
+# the points a day, or part of one, after the grace; at most 30 %). 1.5 days late is 2 days: 20
+# of 100 points off; a malformed file is the platform's, not the student's: no penalty.
+late_lab = dict(json.load(open(lab)), late={"deadline": "2026-12-04T23:59:00+01:00", "grace_minutes": 15,
+                                            "penalty_per_day": 10, "cap": 30})
+json.dump(late_lab, open(work + "/lab4-late.json", "w"))
+subprocess.run([exe, "release", "--assignment", work + "/lab4-late.json", "--out", work + "/release-late",
+                "--gradescope"], check=True, stdout=subprocess.DEVNULL)
+late_zip = zipfile.ZipFile(work + "/release-late/autograder.zip")
+for case, metadata, off in (("late", '{"created_at": "2026-12-06T10:59:00.542003+00:00", "id": 1}', 20),
+                            ("malformed", '{"created_at": "yesterday"}', 0)):
+    root = work + "/ag-" + case
+    os.makedirs(root + "/source")
+    late_zip.extractall(root + "/source")
+    shutil.copytree(work + "/class/alice", root + "/submission")
+    open(root + "/submission_metadata.json", "w").write(metadata)
+    env = dict(os.environ, AUTOGRADER_ROOT=root, SHADOWLAB=exe)
+    r = subprocess.run(["bash", root + "/source/run_autograder"], env=env, capture_output=True, text=True,
+                       timeout=900, cwd=root)
+    res = json.load(open(root + "/results/results.json"))
+    earned = sum(t["score"] for t in res["tests"])
+    assert abs(earned - 100) < 0.05, (case, earned)
+    assert abs(res["score"] - (100 - off)) < 0.05, (case, res["score"], off)
+    if off:
+        assert "2 days late: the late policy takes 20 points off, 80 of 100 points" in res["output"], res["output"]
+    else:
+        assert "no late policy applied" in r.stderr, r.stderr[-1000:]
+    print(case, res["score"])
 # A grader that cannot run still leaves a results.json (0 points, says why).
 root = work + "/ag-broken"
 os.makedirs(root + "/source")

@@ -1,7 +1,10 @@
 // The course code's plain functions: solution markers, JSON value lines, base64, CSV cells.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "course/assignment.h"
+#include "course/class_progress.h"
 #include "course/feedback_html.h"
 #include "course/json_lines.h"
 #include "course/release.h"
@@ -114,14 +117,22 @@ TEST(GradesCsv, QuotesAndNoFormulas) {
     StudentRecord r = oneStage("=cmd|x,y", "rgb", Status::Fail, 1.5, 2);
     r.score = 1.5;
     r.maxScore = 2;
-    EXPECT_EQ(gradesCsv({r}),
-              "student,id,name,email,status,rgb/core,adjustments,late_penalty,total,max,not_graded\r\n"
-              "\"'=cmd|x,y\",,,,FAIL,1.500,,,1.500,2.000,\r\n");
+    EXPECT_EQ(
+        gradesCsv({r}),
+        "student,id,name,email,status,rgb/core,adjustments,late_penalty,total,max,not_graded\r\n"
+        "\"'=cmd|x,y\",,,,FAIL,1.500,,,1.500,2.000,\r\n");
 }
 
 TEST(GradesCsv, EveryCellASpreadsheetWouldEvaluateIsPrefixed) {
-    for (const char* bad : {"=1+1", "+1", "-1", "@SUM(A1)", "\tx", "\rx", "\xEF\xBC\x9D" "1",
-                            "\xEF\xBC\x8B" "1", "\xEF\xBC\x8D" "1", "\xEF\xBC\xA0" "x"})
+    for (const char* bad : {"=1+1", "+1", "-1", "@SUM(A1)", "\tx", "\rx",
+                            "\xEF\xBC\x9D"
+                            "1",
+                            "\xEF\xBC\x8B"
+                            "1",
+                            "\xEF\xBC\x8D"
+                            "1",
+                            "\xEF\xBC\xA0"
+                            "x"})
         EXPECT_EQ(csvCell(bad).find_first_not_of('"'), csvCell(bad).find('\'')) << bad;
     EXPECT_EQ(csvCell("plain"), "plain");
     EXPECT_EQ(csvCell("a\"b"), "\"a\"\"b\"");
@@ -130,9 +141,39 @@ TEST(GradesCsv, EveryCellASpreadsheetWouldEvaluateIsPrefixed) {
 TEST(GradesCsv, ANotGradedStageIsAnEmptyCellWithTheReason) {
     StudentRecord r = oneStage("bo", "margin", Status::NotGraded, 0, 0);
     r.stages[0].message = "our shaders could not finish";
-    EXPECT_EQ(gradesCsv({r}),
-              "student,id,name,email,status,margin/core,adjustments,late_penalty,total,max,not_graded\r\n"
-              "bo,,,,NOT GRADED,,,,,,margin/core: our shaders could not finish\r\n");
+    EXPECT_EQ(
+        gradesCsv({r}),
+        "student,id,name,email,status,margin/core,adjustments,late_penalty,total,max,not_graded\r\n"
+        "bo,,,,NOT GRADED,,,,,,margin/core: our shaders could not finish\r\n");
+}
+
+TEST(ClassProgress, PaceSinceTheFirstRowsLeavesTheStartOut) {
+    Pace pace;
+    EXPECT_FALSE(pace.timeLeft(5, {0, 100}));  // nothing back yet: no estimate
+    // The first rows came after 10 s of start (compiling, tracing): 10 rows.
+    ASSERT_TRUE(pace.timeLeft(10, {10, 100}));
+    EXPECT_NEAR(*pace.timeLeft(10, {10, 100}), 90.0, 1e-9);  // one reading: the pace so far
+    // Then 40 rows in 20 s: 0.5 s a row for the 50 left, not (30 s / 50 rows) * 50.
+    EXPECT_NEAR(*pace.timeLeft(30, {50, 100}), 25.0, 1e-9);
+    EXPECT_NEAR(*pace.timeLeft(40, {100, 100}), 0.0, 1e-9);
+}
+
+TEST(ClassProgress, JobFilesAddUpAndBadOnesCountNothing) {
+    const std::string dir = ::testing::TempDir();
+    const std::string a = dir + "/job-a.progress", b = dir + "/job-b.progress",
+                      bad = dir + "/job-bad.progress";
+    FILE* f = std::fopen(a.c_str(), "w");
+    std::fputs("3 10\n", f);
+    std::fclose(f);
+    f = std::fopen(b.c_str(), "w");
+    std::fputs("                   7                   20\n", f);
+    std::fclose(f);
+    f = std::fopen(bad.c_str(), "w");
+    std::fputs("9 2\n", f);  // more done than planned: torn or foreign
+    std::fclose(f);
+    RowsDone sum = readProgress({a, b, bad, dir + "/job-none.progress"});
+    EXPECT_EQ(sum.done, 10u);
+    EXPECT_EQ(sum.total, 30u);
 }
 
 }  // namespace

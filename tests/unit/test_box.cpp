@@ -88,5 +88,23 @@ TEST(Box, ThisProcessSeesAtLeastOneCore) {
     EXPECT_LE(boxDefaultMemoryMb(2048), 2048);
 }
 
+TEST(Box, JobsOneACoreAsMemoryAllows) {
+    const long long mb = 1024 * 1024;
+    EXPECT_EQ(jobsFor(2, std::nullopt, 768), 2);
+    EXPECT_EQ(jobsFor(16, 64LL * 1024 * mb, 768), 16);
+    EXPECT_EQ(jobsFor(16, 4096 * mb, 768), 5);  // the memory, not the cores
+    EXPECT_EQ(jobsFor(2, 768 * mb, 768), 1);    // Gradescope's box
+    EXPECT_EQ(jobsFor(4, 100 * mb, 768), 1);    // never none
+    EXPECT_EQ(jobsFor(0, std::nullopt, 768), 1);
+}
+
+TEST(Box, ASharedCoreCountCapsThisProcess) {
+    const int all = boxCores();
+    shareCores(1);
+    EXPECT_EQ(boxCores(), 1);
+    shareCores(all + 5);  // more than the box: the box
+    EXPECT_EQ(boxCores(), all);
+}
+
 }  // namespace
 }  // namespace sl
