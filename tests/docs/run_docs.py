@@ -100,8 +100,10 @@ def parse_page(path):
     for start, end, mark in marks:
         if "text" in mark or ("run" in mark and "file" not in mark):
             within = int(mark.get("within", STATEMENT_WINDOW))
-            window = "\n".join(lines[max(0, start - 1 - within):end + within])
-            items.append(Item(start, "statement", window, mark))
+            first = max(0, start - 1 - within)
+            item = Item(start, "statement", "\n".join(lines[first:end + within]), mark)
+            item.first_line = first + 1
+            items.append(item)
         else:
             pending[end] = (start, mark)
     i = 0
@@ -129,9 +131,13 @@ def parse_page(path):
                     (it.kind == "block" or it.kind == "statement" and "run" in it.mark)]
             if not runs:
                 raise ValueError(f"{path}:{mark_line}: an output mark with no command above it")
-            max(runs, key=lambda it: it.line).mark["output_text"] = body
+            target = max(runs, key=lambda it: it.line)
+            target.mark["output_text"], target.mark["output_line"] = body, i + 2
         elif lang in RUN_LANGS or body.startswith("$ ") or mark:
-            items.append(Item(mark_line or i + 1, "block", body, mark or parse_mark(""), lang))
+            block = Item(mark_line or i + 1, "block", body, mark or parse_mark(""), lang)
+            if body.startswith("$ "):  # a transcript: its output starts on the line after the command
+                block.mark["output_line"] = i + 3
+            items.append(block)
         i = j + 1
     for end, (start, _) in pending.items():
         raise ValueError(f"{path}:{start}: docs-test mark followed by no block")
@@ -286,6 +292,7 @@ def run_item(item, sandbox_factory, helps, wanted):
                 return "FAIL", f"the statement /{mark['text']}/ is not within {within} lines of its mark", 0
             # a table cell escapes "|" as "\|"; "..." in the text leaves a part out
             groups = [g.replace("\\|", "|") for g in m.groups()]
+            item.stated_at = item.first_line + item.text.count("\n", 0, m.start())
         command, expected_output = mark.get("run"), mark.get("output_text")
         for n, g in enumerate(groups, 1):  # "run: shadowlab {1}": the command is the text's own
             command = command.replace("{%d}" % n, g) if command else command
@@ -329,7 +336,9 @@ def run_item(item, sandbox_factory, helps, wanted):
     if expected_output:
         missing = compare_output(expected_output, out)
         if missing is not None:
-            return "FAIL", f"the text shows the line\n    {missing.strip()}\nwhich the output lacks; output:\n{tail}", seconds
+            at = mark.get("output_line", 0) + expected_output.split("\n").index(missing)
+            return "FAIL", (f"the text shows the line (line {at})\n    {missing.strip()}\n"
+                            f"which the output lacks; output:\n{tail}"), seconds
     return "PASS", f"exit {rc}", seconds
 
 
@@ -373,6 +382,8 @@ def main():
             shown = it.mark.get("run", "") if it.kind == "statement" else it.text.strip()
             first = shown.splitlines()[0] if shown else ""
             where = f"{rel}:{it.line}"
+            if status == "FAIL" and getattr(it, "stated_at", None):
+                where = f"{rel}:{it.stated_at} (the statement; its mark at line {it.line})"
             if status == "PASS":
                 print(f"ok   {where}: {it.kind} `{first[:70]}`: {message} ({seconds:.1f} s)")
             elif status == "SKIP":
