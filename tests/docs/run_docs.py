@@ -14,6 +14,7 @@ What is tested (docs/README: "The documentation is tested"):
 - marks, HTML comments invisible when rendered, right before a block or a statement:
     <!-- docs-test: exit: 1; expect: REGEX; long -->          for the next block
     <!-- docs-test: skip: REASON -->                           the next block is not run (printed)
+    <!-- docs-test: root: REASON -->                           run as root only, else a skip
     <!-- docs-test: synopsis -->                               the next block is a synopsis
     <!-- docs-test: output -->          the next block is the output of the nearest command above
     <!-- docs-test: file: NAME; run: CMD -->                   the next block is saved as NAME, CMD run
@@ -44,7 +45,7 @@ MARK_RE = re.compile(r"<!--\s*docs-test:(.*?)-->", re.S)
 FENCE_RE = re.compile(r"^(\s*)```(\w*)\s*$")
 INLINE_RE = re.compile(r"`((?:\./build/)?shadowlab [^`]+)`")
 STATEMENT_WINDOW = 12
-KEYS = ("exit", "skip", "text", "within", "run", "file", "timeout", "expect", "setup", "after",
+KEYS = ("exit", "skip", "root", "text", "within", "run", "file", "timeout", "expect", "setup", "after",
         "replace")
 FLAGS = ("long", "synopsis", "output")
 # clauses end at a new line or at "; " before a key (a command may hold "; " of its own)
@@ -182,14 +183,25 @@ def compare_output(expected, actual):
     return None
 
 
+def source_entries(repo):
+    """The repository's own top-level files and folders: what git tracks, never a build or what
+    an earlier command wrote there (out/, a release, grades/)."""
+    try:
+        tracked = subprocess.run(["git", "-C", repo, "ls-files", "-z"], check=True,
+                                 stdout=subprocess.PIPE, stderr=subprocess.DEVNULL).stdout
+        names = {path.split("/")[0] for path in tracked.decode("utf-8", "replace").split("\0") if path}
+    except (OSError, subprocess.CalledProcessError):
+        names = set(os.listdir(repo))
+    return sorted(n for n in names if not n.startswith((".", "build", "out"))
+                  and os.path.exists(os.path.join(repo, n)))
+
+
 class Sandbox:
     """A fresh folder with the repository's data reachable and the binary under test on PATH."""
 
     def __init__(self, repo, exe):
         self.dir = tempfile.mkdtemp(prefix="docs-test-")
-        for name in os.listdir(repo):
-            if name in ("build", ".git") or name.startswith("build-"):
-                continue
+        for name in source_entries(repo):
             src = os.path.join(repo, name)
             if name == "docs":  # commands may write figures into docs/images: a copy, never the repo
                 shutil.copytree(src, os.path.join(self.dir, name), symlinks=True)
@@ -268,6 +280,8 @@ def run_item(item, sandbox_factory, helps, wanted):
         return "SKIP", mark["skip"], 0
     if wanted == "long" and not is_long or wanted == "short" and is_long:
         return None, "", 0
+    if "root" in mark and os.geteuid() != 0:
+        return "SKIP", f"needs root (CI runs as root): {mark['root']}", 0
     if "synopsis" in mark["flags"]:
         # one command per line starting "shadowlab SUB"; an indented line continues it
         commands = []
@@ -372,7 +386,7 @@ def main():
     help_box = Sandbox(repo, exe)
     helps = HelpCache(help_box)
     counts = {"PASS": 0, "FAIL": 0, "SKIP": 0}
-    reasoned_skips = sum(1 for it in items if it.mark and it.mark.get("skip"))
+    reasoned_skips = sum(1 for it in items if it.mark and (it.mark.get("skip") or it.mark.get("root")))
     try:
         for it in items:
             status, message, seconds = run_item(it, lambda: Sandbox(repo, exe), helps, wanted)
