@@ -11,7 +11,7 @@ foreach(page ${CMAKE_SOURCE_DIR}/README.md ${SL_DOC_PAGES})
   set_tests_properties(docs_${name} PROPERTIES LABELS docs TIMEOUT 900)
   # which pages have long commands: asked of the runner, so a mark it reads is never left out
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${page}
-               ${CMAKE_CURRENT_SOURCE_DIR}/docs/run_docs.py)
+               ${CMAKE_CURRENT_SOURCE_DIR}/docs/run_docs.py ${CMAKE_CURRENT_SOURCE_DIR}/docs/doc_page.py)
   execute_process(COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/docs/run_docs.py
                           --exe unused --repo ${CMAKE_SOURCE_DIR} --count-long ${page}
                   OUTPUT_VARIABLE long_count RESULT_VARIABLE rc OUTPUT_STRIP_TRAILING_WHITESPACE)
