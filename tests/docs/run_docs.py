@@ -166,7 +166,9 @@ def run_item(item, sandbox_factory, helps, wanted):
                 return "FAIL", f"the statement /{mark['text']}/ is not within {within} lines of its mark", 0
             # a table cell escapes "|" as "\|"; "..." in the text leaves a part out
             groups = [g.replace("\\|", "|") for g in m.groups()]
-            item.stated_at = item.first_line + item.text.count("\n", 0, m.start())
+            # the line of the first number or phrase captured (the statement itself)
+            where = m.start(1) if m.lastindex and m.start(1) >= 0 else m.start()
+            item.stated_at = item.first_line + item.text.count("\n", 0, where)
         command, expected_output = mark.get("run"), mark.get("output_text")
         for n, g in enumerate(groups, 1):  # "run: shadowlab {1}": the command is the text's own
             command = command.replace("{%d}" % n, g) if command else command
