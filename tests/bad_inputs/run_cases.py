@@ -2,7 +2,7 @@
 """Runs the bad-input corpus (cases.txt plus the generated cases below) against the shadowlab
 executable and reports every failure, then a closing line `N passed, M failed`.
 
-usage: run_cases.py SHADOWLAB_EXE [--only TEXT] [--times] [--time-scale K]
+usage: run_cases.py SHADOWLAB_EXE [--only TEXT] [--times] [--time-scale K] [--list]
 
 --time-scale K: the executable does the same work K times slower (an instrumented build:
 scripts/sanitizers.sh), so the budgets follow: each case's own bound is K times longer, a
@@ -1235,8 +1235,15 @@ def main():
         print(f"run_cases: time scale {TIME_SCALE:g}: given limits scaled; the worker default "
               + ("is auto (calibrated on our shaders in this build): kept" if DEFAULT_TIME_LIMIT is None
                  else f"{DEFAULT_TIME_LIMIT:g} s -> {DEFAULT_TIME_LIMIT * TIME_SCALE:g} s"))
-    cases = (parse_cases(os.path.join(HERE, "cases.txt")) + generated_cases() +
-             hostile_cases() + attack_cases() + intake_cases(sys.modules[__name__]))
+    kinds = [("in cases.txt", parse_cases(os.path.join(HERE, "cases.txt"))),
+             ("generated", generated_cases()), ("hostile", hostile_cases()),
+             ("attack", attack_cases()), ("intake", intake_cases(sys.modules[__name__]))]
+    cases = [case for _, some in kinds for case in some]
+    if "--list" in sys.argv:  # the corpus without running it (docs/robustness.md states the counts)
+        for case in cases:
+            print(case.name)
+        print(f"{len(cases)} cases (" + ", ".join(f"{len(some)} {kind}" for kind, some in kinds) + ")")
+        return 0
     passed = failed = skipped = 0
     for case in cases:
         if only and only not in case.name and only not in case.args:
