@@ -21,6 +21,7 @@
 
 #include "course/class_annotations.h"
 #include "course/class_entries.h"
+#include "course/class_page.h"
 #include "course/class_progress.h"
 #include "course/feedback_html.h"
 #include "course/gradebook_exports.h"

@@ -41,26 +41,40 @@ void JobProgress::write() {
     }
 }
 
-RowsDone readProgress(const std::vector<std::string>& paths) {
-    RowsDone sum;
-    for (const std::string& p : paths) {
+std::vector<RowsDone> readProgress(const std::vector<std::string>& paths) {
+    std::vector<RowsDone> jobs(paths.size());
+    for (std::size_t j = 0; j < paths.size(); ++j) {
         std::string text;
-        if (!readRegularFile(p, 256, text).empty()) continue;
+        if (!readRegularFile(paths[j], 256, text).empty()) continue;
         std::size_t done = 0, total = 0;
         if (std::sscanf(text.c_str(), "%zu %zu", &done, &total) != 2 || done > total) continue;
-        sum.done += done;
-        sum.total += total;
+        jobs[j] = {done, total};
     }
-    return sum;
+    return jobs;
 }
 
-std::optional<double> Pace::timeLeft(double seconds, const RowsDone& rows) {
-    if (rows.done == 0 || rows.total == 0) return std::nullopt;
-    const double left = double(rows.total - std::min(rows.done, rows.total));
-    if (!first_) first_ = std::make_pair(seconds, rows.done);
-    const auto [at, done] = *first_;
-    if (rows.done > done && seconds > at) return (seconds - at) / double(rows.done - done) * left;
-    return seconds / double(rows.done) * left;
+std::optional<double> Pace::timeLeft(double seconds, const std::vector<RowsDone>& jobs) {
+    first_.resize(std::max(first_.size(), jobs.size()));
+    std::vector<std::optional<double>> perRow(jobs.size());  // seconds a row, by job
+    double rates = 0;
+    int known = 0;
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+        const RowsDone& r = jobs[j];
+        if (r.done == 0) continue;
+        if (!first_[j]) first_[j] = std::make_pair(seconds, r.done);
+        const auto [at, done] = *first_[j];
+        perRow[j] = r.done > done && seconds > at ? (seconds - at) / double(r.done - done)
+                                                  : seconds / double(r.done);
+        rates += *perRow[j];
+        ++known;
+    }
+    if (known == 0) return std::nullopt;
+    double left = 0;
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+        const double rate = perRow[j] ? *perRow[j] : rates / known;
+        left = std::max(left, rate * double(jobs[j].total - jobs[j].done));
+    }
+    return left;
 }
 
 }  // namespace sl

@@ -31,21 +31,24 @@ class JobProgress {
     std::size_t done_ = 0, total_ = 0;
 };
 
-// The rows done and to do over every job's file (jobs not started yet count nothing).
+// The rows done and to do of one job, from its file (none yet, or unreadable: 0 of 0).
 struct RowsDone {
     std::size_t done = 0, total = 0;
 };
-RowsDone readProgress(const std::vector<std::string>& paths);
+std::vector<RowsDone> readProgress(const std::vector<std::string>& paths);
 
-// The time left at the pace since the first rows came back (the first ones carry the start:
-// compiling, tracing the views), or at the pace so far while only one reading is known.
+// The time left: each job's at its own pace since its first rows came back (the first ones
+// carry the start: compiling, tracing the views), or at its pace so far while only one reading
+// is known; a job with no rows back yet at the others' mean pace. The class is done when its
+// slowest job is: jobs' shares differ (a starter writes pictures for every failing row), and
+// counting all jobs' rows together missed the end, when the last job runs alone (0.21 off).
 class Pace {
   public:
-    // A reading `seconds` after the start; returns the time left, or none before any row.
-    std::optional<double> timeLeft(double seconds, const RowsDone& rows);
+    // A reading `seconds` after the start; the time left, or none before any row came back.
+    std::optional<double> timeLeft(double seconds, const std::vector<RowsDone>& jobs);
 
   private:
-    std::optional<std::pair<double, std::size_t>> first_;  // (seconds, rows done)
+    std::vector<std::optional<std::pair<double, std::size_t>>> first_;  // (seconds, rows done)
 };
 
 }  // namespace sl

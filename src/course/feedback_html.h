@@ -1,6 +1,6 @@
-// The pages a class's grading writes (docs/assignment.md, "A class"): one self-contained page
-// per student (every image embedded as a data: URI, so it can be mailed or uploaded) and the
-// class page. Both read the student records of grade/record.h.
+// The student's page a class's grading writes (docs/assignment.md, "A class"): one
+// self-contained page per student (every image embedded as a data: URI, so it can be mailed or
+// uploaded), drawn from the student's record (grade/record.h). The class page: class_page.h.
 #pragma once
 
 #include <string>
@@ -19,19 +19,6 @@ std::string plainWords(const RowRecord& row);
 // diff with its legend, read from the row's images. A page is handed back once grades are out:
 // hidden rows (and those of a hidden stage) are counted as hidden, never shown.
 std::string studentPage(const StudentRecord& record);
-
-// The class page: students by stages, coloured by points, each linked to `pageOf(student)`;
-// per stage its most common failure and how many students had it; `skipped`: the class folder's
-// entries left out ("NAME (why)"), listed so none is silently dropped.
-std::string classPage(const std::string& assignment, const std::vector<StudentRecord>& records,
-                      const std::vector<std::string>& pages,
-                      const std::vector<std::string>& skipped = {});
-
-// grades.csv (RFC 4180, CRLF): student, status, one column per due stage's points, total, max,
-// and why a student is not graded (their NOT GRADED stages' cells, total and max left empty).
-std::string gradesCsv(const std::vector<StudentRecord>& records);
-// One CSV cell: quoted when needed, prefixed with ' when a spreadsheet would evaluate it.
-std::string csvCell(const std::string& text);
 
 // `bytes` as base64.
 std::string base64(const std::string& bytes);

@@ -40,12 +40,15 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
     // so the views a stage renders (up to 7 per stage, 9 for all stages of lab4) are traced and
     // drawn with our shaders once per round and stay in the worker's truth cache (8 views,
     // Evaluator::maxTruths): student by student the cache lost the all-stage views to each other
-    // and every student traced them again. A round's students are done together: rounds stay
-    // small enough for a progress line at least every third of the share.
-    const std::size_t round = std::clamp<std::size_t>((students.size() + 2) / 3, 1, 8);
-    for (std::size_t first = 0; first < students.size(); first += round)
+    // and every student traced them again. A round's students are done together: at least three
+    // rounds (a progress line every third of the share), at most 8 students a round, rounds of
+    // even size (a short last round would cost more a row than the others: the time left is
+    // estimated by rows).
+    const std::size_t n = students.size();
+    const std::size_t rounds = std::max<std::size_t>(std::min<std::size_t>(3, n), (n + 7) / 8);
+    for (std::size_t r = 0; r < rounds; ++r)
         for (std::size_t j = 0; j < stageCount; ++j)
-            for (std::size_t k = first; k < std::min(students.size(), first + round); ++k) {
+            for (std::size_t k = n * r / rounds; k < n * (r + 1) / rounds; ++k) {
                 if (!students[k].error.empty() || j >= plans[k].stages.size()) continue;
                 const std::string dir = settings.imageDir ? settings.imageDir(students[k]) : "";
                 const StagePlan& p = plans[k].stages[j];

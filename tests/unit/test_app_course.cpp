@@ -6,6 +6,7 @@
 #include "course/assignment.h"
 #include "course/class_progress.h"
 #include "course/feedback_html.h"
+#include "course/gradebook_exports.h"
 #include "course/json_lines.h"
 #include "course/release.h"
 
@@ -149,16 +150,25 @@ TEST(GradesCsv, ANotGradedStageIsAnEmptyCellWithTheReason) {
 
 TEST(ClassProgress, PaceSinceTheFirstRowsLeavesTheStartOut) {
     Pace pace;
-    EXPECT_FALSE(pace.timeLeft(5, {0, 100}));  // nothing back yet: no estimate
+    EXPECT_FALSE(pace.timeLeft(5, {{0, 100}}));  // nothing back yet: no estimate
     // The first rows came after 10 s of start (compiling, tracing): 10 rows.
-    ASSERT_TRUE(pace.timeLeft(10, {10, 100}));
-    EXPECT_NEAR(*pace.timeLeft(10, {10, 100}), 90.0, 1e-9);  // one reading: the pace so far
+    ASSERT_TRUE(pace.timeLeft(10, {{10, 100}}));
+    EXPECT_NEAR(*pace.timeLeft(10, {{10, 100}}), 90.0, 1e-9);  // one reading: the pace so far
     // Then 40 rows in 20 s: 0.5 s a row for the 50 left, not (30 s / 50 rows) * 50.
-    EXPECT_NEAR(*pace.timeLeft(30, {50, 100}), 25.0, 1e-9);
-    EXPECT_NEAR(*pace.timeLeft(40, {100, 100}), 0.0, 1e-9);
+    EXPECT_NEAR(*pace.timeLeft(30, {{50, 100}}), 25.0, 1e-9);
+    EXPECT_NEAR(*pace.timeLeft(40, {{100, 100}}), 0.0, 1e-9);
 }
 
-TEST(ClassProgress, JobFilesAddUpAndBadOnesCountNothing) {
+TEST(ClassProgress, TheSlowestJobSaysWhenTheClassIsDone) {
+    Pace pace;
+    ASSERT_TRUE(pace.timeLeft(10, {{10, 100}, {10, 100}, {0, 50}}));
+    // Job 0 at 0.25 s a row (50 left: 12.5 s), job 1 at 1 s a row (80 left: 80 s), job 2 not
+    // started: the mean pace (0.625 s a row) for its 50 rows (31.25 s). All rows added up
+    // would say 50 rows in 10 s, 180 left: 36 s, under half of what the slow job needs.
+    EXPECT_NEAR(*pace.timeLeft(20, {{50, 100}, {20, 100}, {0, 50}}), 80.0, 1e-9);
+}
+
+TEST(ClassProgress, JobFilesReadOneByOneBadOnesCountNothing) {
     const std::string dir = ::testing::TempDir();
     const std::string a = dir + "/job-a.progress", b = dir + "/job-b.progress",
                       bad = dir + "/job-bad.progress";
@@ -171,9 +181,14 @@ TEST(ClassProgress, JobFilesAddUpAndBadOnesCountNothing) {
     f = std::fopen(bad.c_str(), "w");
     std::fputs("9 2\n", f);  // more done than planned: torn or foreign
     std::fclose(f);
-    RowsDone sum = readProgress({a, b, bad, dir + "/job-none.progress"});
-    EXPECT_EQ(sum.done, 10u);
-    EXPECT_EQ(sum.total, 30u);
+    std::vector<RowsDone> jobs = readProgress({a, b, bad, dir + "/job-none.progress"});
+    ASSERT_EQ(jobs.size(), 4u);
+    EXPECT_EQ(jobs[0].done, 3u);
+    EXPECT_EQ(jobs[0].total, 10u);
+    EXPECT_EQ(jobs[1].done, 7u);
+    EXPECT_EQ(jobs[1].total, 20u);
+    EXPECT_EQ(jobs[2].total, 0u);  // more done than planned: torn or foreign, counts nothing
+    EXPECT_EQ(jobs[3].total, 0u);
 }
 
 }  // namespace

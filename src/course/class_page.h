@@ -1,0 +1,20 @@
+// The class page `grade` writes (docs/assignment.md, "A class"): students by stages, linked to
+// their pages, each stage's commonest failure, and for the instructor only the source rules'
+// notes, the possible copies and what the class folder held that was not a hand-in.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grade/record.h"
+
+namespace sl {
+
+// Students by stages, coloured by points, each linked to `pages[k]`; per stage its most common
+// failure and how many students had it; `skipped`: the class folder's entries left out
+// ("NAME (why)"), listed so none is silently dropped.
+std::string classPage(const std::string& assignment, const std::vector<StudentRecord>& records,
+                      const std::vector<std::string>& pages,
+                      const std::vector<std::string>& skipped = {});
+
+}  // namespace sl
