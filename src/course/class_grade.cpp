@@ -43,19 +43,6 @@ using nlohmann::json;
 
 namespace {
 
-// What one job may take at most: its worker's peak grading every core stage of lab4 at 640x480
-// was 437 MB (the views' truths it keeps, grade/stage_runs.h), with room for the job process.
-constexpr long kMbPerJob = 768;
-
-// The memory jobs share: the box's limit, else the machine's.
-std::optional<long long> memoryForJobs() {
-    std::optional<long long> box = readBox().memoryBytes;
-    if (box) return box;
-    long pages = ::sysconf(_SC_PHYS_PAGES), size = ::sysconf(_SC_PAGESIZE);
-    if (pages > 0 && size > 0) return (long long)pages * size;
-    return std::nullopt;
-}
-
 void writeOrThrow(const std::string& path, const std::string& text) {
     std::string err = writeFileAtomically(path, text.data(), text.size());
     if (!err.empty()) throw UsageError("grade: " + err);
@@ -309,7 +296,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     // with one calibration of our shaders, on its share of the cores (a worker with llvmpipe's
     // and the figures' threads on every core, twice over, was slower than one job: issue 28).
     const int cores = boxCores();
-    const int wanted = args.jobs > 0 ? args.jobs : jobsFor(cores, memoryForJobs(), kMbPerJob);
+    const int wanted = args.jobs > 0 ? args.jobs : boxJobs(kMbPerGradingJob);
     int jobs =
         int(std::min<std::size_t>(std::size_t(wanted), std::max<std::size_t>(todo.size(), 1)));
     const int coresPerJob = std::max(1, cores / std::max(1, jobs));

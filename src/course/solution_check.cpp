@@ -105,9 +105,8 @@ StudentRecord gradeSolution(const GradingPlan& plan, const StudentWork& solution
     std::size_t rendered = 0;
     for (const StagePlan& st : plan.stages) rendered += st.rendered();
     const int cores = boxCores();
-    // As a class's jobs: a core each, where the box's memory gives each 768 MB.
-    const int parts = int(std::min<std::size_t>(
-        std::size_t(jobsFor(cores, readBox().memoryBytes, 768)), rendered));
+    // As a class's jobs: a core each, as the box's memory allows.
+    const int parts = int(std::min<std::size_t>(std::size_t(boxJobs(kMbPerGradingJob)), rendered));
     auto gradePart = [&](const GradingPlan& part) {
         Calibration calibration(settings.budget, settings.backend);
         StudentRecord record;

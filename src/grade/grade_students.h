@@ -15,6 +15,11 @@
 
 namespace sl {
 
+// What one grading process (a class's job, a part of the solution check) may take at most: a
+// worker's peak grading every core stage of lab4 at 640x480 was 437 MB (the views' truths it
+// keeps), with room for the process itself.
+constexpr long kMbPerGradingJob = 768;
+
 struct GradeSettings {
     Backend backend = Backend::Auto;
     BudgetRule budget;

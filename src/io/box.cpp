@@ -2,6 +2,7 @@
 
 #include <sched.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -209,6 +210,13 @@ int boxCores() {
         return usableCores(box.affinityCores, box.quotaCores);
     }();
     return coreShare() > 0 ? std::min(cores, coreShare()) : cores;
+}
+
+int boxJobs(long perJobMb) {
+    std::optional<long long> memory = readBox().memoryBytes;
+    const long pages = ::sysconf(_SC_PHYS_PAGES), size = ::sysconf(_SC_PAGESIZE);
+    if (!memory && pages > 0 && size > 0) memory = (long long)pages * size;
+    return jobsFor(boxCores(), memory, perJobMb);
 }
 
 void shareCores(int cores) {

@@ -53,6 +53,8 @@ Box readBox();
 int jobsFor(int cores, std::optional<long long> memoryBytes, long perJobMb);
 
 int boxCores();  // usableCores of readBox(), capped by shareCores
+// jobsFor this box: its cores, and its memory (the cgroup's limit, else the machine's).
+int boxJobs(long perJobMb);
 // This process and what it starts use at most `cores` of the box from now on (a job of a
 // class's share): boxCores() says so, and llvmpipe's threads follow (LP_NUM_THREADS) unless
 // the user set them.
