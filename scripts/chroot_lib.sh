@@ -72,6 +72,20 @@ chroot_mount() {  # chroot_mount TARGET MOUNT-ARGS...: mounts and remembers it f
   chroot_mounted+=("$target")
 }
 
+# chroot_wait_base SUITE: true once scripts/chroot_prefetch.sh has SUITE's base ready in
+# $SHADOWLAB_CHROOT_BASES (waiting for it while it is being made); false where there is none.
+chroot_wait_base() {
+  local bases=${SHADOWLAB_CHROOT_BASES:-}
+  [ -n "$bases" ] && [ -d "$bases" ] || return 1
+  local waited=0
+  while [ ! -e "$bases/$1.ready" ] && [ ! -e "$bases/$1.failed" ] && [ $waited -lt 1800 ]; do
+    [ $waited -eq 0 ] && chroot_say "waiting for $1's base (scripts/chroot_prefetch.sh)"
+    sleep 2
+    waited=$((waited + 2))
+  done
+  [ -e "$bases/$1.ready" ]
+}
+
 # chroot_make SUITE DEB-CACHE CCACHE: debootstraps SUITE (bookworm, trixie, testing) into a new
 # $root with the .deb caches named DEB-CACHE (suites that are the same system share them) and
 # the compiler cache named CCACHE, mounts /proc, /sys, /dev, and starts the apt relay.
@@ -87,10 +101,17 @@ chroot_make() {
   # testing: this bookworm debootstrap has no script for the newest codename; sid's fits.
   local script=()
   [ "$suite" = testing ] && script=(/usr/share/debootstrap/scripts/sid)
-  chroot_say "debootstrap $suite from $mirror"
-  debootstrap --variant=minbase --cache-dir="$cache/debootstrap-$cachename" "$suite" "$root" \
-    "$mirror" "${script[@]}" >"$root.debootstrap.log" 2>&1 || { tail -20 "$root.debootstrap.log"; exit 3; }
-  rm -f "$root.debootstrap.log"
+  if chroot_wait_base "$suite"; then
+    # The same fresh minbase system, debootstrapped while the host's suite ran
+    # (scripts/chroot_prefetch.sh): a copy, so the Gradescope suite's Debian 12 is fresh too.
+    chroot_say "a copy of $suite's fresh debootstrap base"
+    cp -a "$SHADOWLAB_CHROOT_BASES/$suite/." "$root/"
+  else
+    chroot_say "debootstrap $suite from $mirror"
+    debootstrap --variant=minbase --cache-dir="$cache/debootstrap-$cachename" "$suite" "$root" \
+      "$mirror" "${script[@]}" >"$root.debootstrap.log" 2>&1 || { tail -20 "$root.debootstrap.log"; exit 3; }
+    rm -f "$root.debootstrap.log"
+  fi
   # The harness only: the archive reached here may serve testing's Release past its
   # Valid-Until; apt's way out of the network namespace.
   printf '%s\n' 'Acquire::Check-Valid-Until "false";' 'Acquire::http::Proxy "http://127.0.0.1:3142";' \
@@ -115,7 +136,9 @@ chroot_make() {
   chroot_env=(/usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb
               PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin)
   if [ "${SHADOWLAB_CHROOT_CCACHE:-1}" = 1 ]; then
-    chroot_env+=(CCACHE_DIR=/root/.ccache CCACHE_MAXSIZE=2G
+    # CCACHE_BASEDIR: paths below it are hashed relative to the build folder, so the host's
+    # build of the same sources (scripts/test.sh in CI, the same cache for Debian 12) hits.
+    chroot_env+=(CCACHE_DIR=/root/.ccache CCACHE_MAXSIZE=2G CCACHE_BASEDIR=${chroot_ccache_basedir:-/root}
                  CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache)
     chroot_run / 'DEBIAN_FRONTEND=noninteractive apt-get update -q >/dev/null 2>&1 &&
       DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends ccache >/dev/null 2>&1' ||
