@@ -80,10 +80,24 @@ void Hud::drawRect(Program& program, float x0, float y0, float x1, float y1,
     glDrawArrays(GL_TRIANGLES, 0, 6);
 }
 
+// stb_easy_font drops the quads that do not fit in the buffer it is given, without a word: a
+// glyph has up to 11 (X), so a fixed guess per character cut the last letter of words full of
+// many-stroked ones ("averaged" drawn "averagec"). A quad is 64 bytes; when the buffer keeps
+// one quad's room free, none was dropped.
+int Hud::printQuads(const std::string& text, float x, float y) {
+    constexpr std::size_t kQuadBytes = 64;
+    std::size_t bytes = (text.size() * 4 + 1) * kQuadBytes;
+    for (;;) {
+        quads_.assign(bytes, 0);
+        const int n = stb_easy_font_print(x, y, const_cast<char*>(text.c_str()), nullptr,
+                                          quads_.data(), static_cast<int>(bytes));
+        if ((std::size_t(n) + 1) * kQuadBytes <= bytes) return n;
+        bytes *= 2;
+    }
+}
+
 void Hud::drawText(Program& program, const HudLine& line, float x, float y) {
-    quads_.assign(line.text.size() * 270 + 64, 0);
-    int n = stb_easy_font_print(x, y, const_cast<char*>(line.text.c_str()), nullptr, quads_.data(),
-                                static_cast<int>(quads_.size()));
+    const int n = printQuads(line.text, x, y);
     triangles_.clear();
     const float* v = reinterpret_cast<const float*>(quads_.data());
     for (int q = 0; q < n; ++q)  // each quad -> two triangles (core profiles have no quads)

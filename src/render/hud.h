@@ -92,6 +92,7 @@ class Hud {
     void end();
     void drawRect(Program& program, float x0, float y0, float x1, float y1, const glm::vec4& color);
     void drawText(Program& program, const HudLine& line, float x, float y);
+    int printQuads(const std::string& text, float x, float y);  // into quads_: every quad
     VertexArray vao_;
     Buffer buffer_;
     std::vector<char> quads_;
