@@ -51,11 +51,15 @@ std::vector<HudLine> layoutHudBlock(const HudBlock& block, float maxPixels, int 
     if (most <= 0 || total <= most) return lines;
     if (most == 1) return {lines.front()};  // a count alone would say nothing
     const int keep = most - 1;
-    if (block.scrollable) {  // lines first .. first + keep - 1 of total, and where they are
-        const int first = std::clamp(block.firstLine, 0, total - keep);
-        std::vector<HudLine> shown(lines.begin() + first, lines.begin() + first + keep);
-        shown.push_back({"PgUp/PgDn: lines " + std::to_string(first + 1) + "-" +
-                             std::to_string(first + keep) + " of " + std::to_string(total),
+    if (block.scrollable) {  // whole pages of `keep` lines (the last one shorter): every line
+                             // is on one page, and the last line says which page shows
+        const int pages = (total + keep - 1) / keep;
+        const int page = std::clamp(block.firstLine / keep, 0, pages - 1);
+        const int first = page * keep, end = std::min(total, first + keep);
+        std::vector<HudLine> shown(lines.begin() + first, lines.begin() + end);
+        shown.push_back({"PgUp/PgDn: page " + std::to_string(page + 1) + " of " +
+                             std::to_string(pages) + " (lines " + std::to_string(first + 1) + "-" +
+                             std::to_string(end) + " of " + std::to_string(total) + ")",
                          glm::vec4(0.85f, 0.85f, 0.85f, 1)});
         return shown;
     }
@@ -160,6 +164,8 @@ std::vector<HudPanel> layoutHud(const std::vector<HudBlock>& blocks, int width, 
         p.wrappedLines = static_cast<int>(wrapped[k].size());
         p.lines =
             layoutHudBlock(block, std::max(span - 2 * (kHudMargin + Hud::kPad), 8.0f), given[k]);
+        if (block.scrollable && p.wrappedLines > given[k] && given[k] > 1)
+            p.pageLines = given[k] - 1;  // the last line says which page shows
         p.x = c * w / 2 + kHudMargin;
         p.width = 0;
         for (const auto& l : p.lines)
