@@ -20,7 +20,7 @@ const glm::vec4 kErrorPanel(0.25f, 0.02f, 0.02f, 0.92f);
 const char* const WindowSession::kTryingLine =
     "trying your shaders in a bounded worker first: a loop or a crash cannot freeze this window";
 
-std::string WindowSession::compactTitle(const ParamSet& values) const {
+std::string WindowSession::compactTitle(const ParamSet& values, std::size_t selected) const {
     Renderer& r = renderer();
     std::string line = title() + " | " + treeName(r.shaders().tree());
     if (!request_.overlay.empty())
@@ -29,7 +29,7 @@ std::string WindowSession::compactTitle(const ParamSet& values) const {
                     : ", " + request_.overlay + " over ours";
     const auto& specs = values.specs();
     if (!specs.empty()) {
-        const std::string& name = specs[selectedParam_ % specs.size()].name;
+        const std::string& name = specs[selected % specs.size()].name;
         line += " | " + name + " = " + values.text(name) + ignoredMark(name);
     }
     return line + " | h: keys";
@@ -186,7 +186,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
         // keeps at the top holds them. What comes and goes (a trial, a refusal) is a panel of
         // its own under them, over the picture's edge.
         HudBlock top;
-        top.lines.push_back({compactTitle(r.params()), kYellow});
+        top.lines.push_back({compactTitle(r.params(), selectedParam_), kYellow});
         const std::string lesson = lessonLine();
         if (!lesson.empty()) top.lines.push_back({lesson, kWhite});
         top.keepLines = 1000;

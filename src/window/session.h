@@ -103,6 +103,7 @@ class WindowSession {
     void nextLesson();
     std::string lessonLine() const;
     std::string lessonText(std::size_t k, std::size_t of) const;  // lesson k of `of`, 0-based
+    static std::string noLessonText(std::size_t lessons);         // the settings are none
     // "lesson 2/4 of margin" for values that are a lesson's, else "margin (the values)".
     std::string valuesName(const Sets& sets) const;
     struct Half {
@@ -138,8 +139,8 @@ class WindowSession {
     std::vector<HudLine> helpLines() const;
     std::vector<HudLine> errorLines(bool all) const;
     std::string title() const;
-    // The compact HUD's first line with these values on screen.
-    std::string compactTitle(const ParamSet& values) const;
+    // The compact HUD's first line with these values on screen and parameter `selected`.
+    std::string compactTitle(const ParamSet& values, std::size_t selected) const;
     std::string treeText() const;
     std::string ignoredMark(const std::string& param) const;
     std::string folderText() const;

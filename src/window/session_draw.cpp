@@ -89,15 +89,19 @@ std::pair<int, int> WindowSession::reservedBands(int width, int height) const {
     // The full panel: what leaves the picture its 45 %, a page at a time.
     float top = std::max(h * 0.25f, h * kFullPanelShare - bottom);
     if (hudMode_ == HudMode::Compact) {
-        int title = lines(compactTitle(r.params()), w - inside), lesson = 0;
-        for (std::size_t k = 0; k < list.size(); ++k) {
+        // Not the values on screen: a value no lesson has (`=`) must not move the picture
+        // either (its title, if longer, floats a line over the picture's edge).
+        const std::size_t params = std::max<std::size_t>(1, r.params().specs().size());
+        int title = 0, lesson = 0;
+        for (std::size_t k = 0; k <= list.size(); ++k) {  // the defaults, then each lesson
             ParamSet values(r.stage().params);
-            applySets(values, list[k]->sets);
-            title = std::max(title, lines(compactTitle(values), w - inside));
-            lesson = std::max(lesson, lines(lessonText(k, list.size()), w - inside));
+            if (k > 0) applySets(values, list[k - 1]->sets);
+            for (std::size_t p = 0; p < params; ++p)
+                title = std::max(title, lines(compactTitle(values, p), w - inside));
+            if (k > 0) lesson = std::max(lesson, lines(lessonText(k - 1, list.size()), w - inside));
         }
         if (!list.empty())  // the settings of no lesson
-            lesson = std::max(lesson, lines(lessonLine(), w - inside));
+            lesson = std::max(lesson, lines(noLessonText(list.size()), w - inside));
         top = std::min(h * room.top, kHudMargin + panel(title + lesson));
     }
     return {int(std::ceil(top * scale)), int(std::ceil(bottom * scale))};

@@ -61,10 +61,13 @@ std::string WindowSession::lessonLine() const {
     auto list = lessons();
     if (list.empty()) return "";
     const int k = matchingLesson();
-    if (k < 0)
-        return "the settings on screen are none of the " + std::to_string(list.size()) +
-               " lessons (n: the next lesson, x: the defaults)";
+    if (k < 0) return noLessonText(list.size());
     return lessonText(std::size_t(k), list.size());
+}
+
+std::string WindowSession::noLessonText(std::size_t lessons) {
+    return "the settings on screen are none of the " + std::to_string(lessons) +
+           " lessons (n: the next lesson, x: the defaults)";
 }
 
 std::string WindowSession::lessonText(std::size_t k, std::size_t of) const {
