@@ -176,6 +176,37 @@ std::string treeVersionError(GlslTree tree, const GlslSource& src, const Declare
                    "only; the legacy tree's shaders declare #version 120");
 }
 
+// glslang's message after its place in the words a student reads (the same as a driver's): its
+// empty token field dropped ("'' :  syntax error" is "syntax error"), and its grammar's token names
+// as the characters they stand for ("unexpected SEMICOLON" is "unexpected ';'", as Mesa writes it).
+std::string plainMessage(std::string m) {
+    if (m.rfind("'' :", 0) == 0) m.erase(0, 4);
+    std::string out;
+    for (char c : m)  // one space between words
+        if (c != ' ' || (!out.empty() && out.back() != ' ')) out += c;
+    static const std::pair<const char*, const char*> kTokens[] = {
+        {"SEMICOLON", ";"},   {"COMMA", ","},        {"COLON", ":"},         {"DOT", "."},
+        {"EQUAL", "="},       {"LEFT_PAREN", "("},   {"RIGHT_PAREN", ")"},   {"LEFT_BRACE", "{"},
+        {"RIGHT_BRACE", "}"}, {"LEFT_BRACKET", "["}, {"RIGHT_BRACKET", "]"}, {"PLUS", "+"},
+        {"DASH", "-"},        {"STAR", "*"},         {"SLASH", "/"},         {"PERCENT", "%"},
+        {"BANG", "!"},        {"TILDE", "~"},        {"QUESTION", "?"},      {"LEFT_ANGLE", "<"},
+        {"RIGHT_ANGLE", ">"}, {"VERTICAL_BAR", "|"}, {"CARET", "^"},         {"AMPERSAND", "&"},
+        {"INC_OP", "++"},     {"DEC_OP", "--"},      {"LE_OP", "<="},        {"GE_OP", ">="},
+        {"EQ_OP", "=="},      {"NE_OP", "!="},       {"AND_OP", "&&"},       {"OR_OP", "||"},
+        {"XOR_OP", "^^"},     {"ADD_ASSIGN", "+="},  {"SUB_ASSIGN", "-="},   {"MUL_ASSIGN", "*="},
+        {"DIV_ASSIGN", "/="}, {"LEFT_OP", "<<"},     {"RIGHT_OP", ">>"}};
+    auto word = [](char c) { return std::isupper(static_cast<unsigned char>(c)) || c == '_'; };
+    for (const auto& [name, text] : kTokens) {
+        const std::string n = name;
+        for (std::size_t at = out.find(n); at != std::string::npos; at = out.find(n, at + 1)) {
+            const std::size_t end = at + n.size();
+            if ((at > 0 && word(out[at - 1])) || (end < out.size() && word(out[end]))) continue;
+            out.replace(at, n.size(), std::string("'") + text + "'");
+        }
+    }
+    return out;
+}
+
 // glslang's "ERROR: S:L: msg" lines as "FILE:L: error: msg" (summary lines dropped).
 std::vector<std::string> mappedErrors(const std::string& log, const GlslSource& src) {
     std::vector<std::string> out;
@@ -192,9 +223,9 @@ std::vector<std::string> mappedErrors(const std::string& log, const GlslSource& 
         int source = 0, number = 0, used = 0;
         if (std::sscanf(rest.c_str(), "%d:%d: %n", &source, &number, &used) == 2 && used > 0)
             out.push_back(fileOf(src, source) + ":" + std::to_string(number) +
-                          ": error: " + rest.substr(std::size_t(used)));
+                          ": error: " + plainMessage(rest.substr(std::size_t(used))));
         else
-            out.push_back(fileOf(src, 0) + ": error: " + rest);
+            out.push_back(fileOf(src, 0) + ": error: " + plainMessage(rest));
     }
     return out;
 }

@@ -51,11 +51,15 @@ std::vector<HudLine> layoutHudBlock(const HudBlock& block, float maxPixels, int 
     if (most <= 0 || total <= most) return lines;
     if (most == 1) return {lines.front()};  // a count alone would say nothing
     const int keep = most - 1;
-    if (block.scrollable) {  // lines first .. first + keep - 1 of total, and where they are
-        const int first = std::clamp(block.firstLine, 0, total - keep);
-        std::vector<HudLine> shown(lines.begin() + first, lines.begin() + first + keep);
-        shown.push_back({"PgUp/PgDn: lines " + std::to_string(first + 1) + "-" +
-                             std::to_string(first + keep) + " of " + std::to_string(total),
+    if (block.scrollable) {  // whole pages of `keep` lines (the last one shorter): every line
+                             // is on one page, and the last line says which page shows
+        const int pages = (total + keep - 1) / keep;
+        const int page = std::clamp(block.firstLine / keep, 0, pages - 1);
+        const int first = page * keep, end = std::min(total, first + keep);
+        std::vector<HudLine> shown(lines.begin() + first, lines.begin() + end);
+        shown.push_back({"PgUp/PgDn: page " + std::to_string(page + 1) + " of " +
+                             std::to_string(pages) + " (lines " + std::to_string(first + 1) + "-" +
+                             std::to_string(end) + " of " + std::to_string(total) + ")",
                          glm::vec4(0.85f, 0.85f, 0.85f, 1)});
         return shown;
     }
@@ -80,10 +84,24 @@ void Hud::drawRect(Program& program, float x0, float y0, float x1, float y1,
     glDrawArrays(GL_TRIANGLES, 0, 6);
 }
 
+// stb_easy_font drops the quads that do not fit in the buffer it is given, without a word: a
+// glyph has up to 11 (X), so a fixed guess per character cut the last letter of words full of
+// many-stroked ones ("averaged" drawn "averagec"). A quad is 64 bytes; when the buffer keeps
+// one quad's room free, none was dropped.
+int Hud::printQuads(const std::string& text, float x, float y) {
+    constexpr std::size_t kQuadBytes = 64;
+    std::size_t bytes = (text.size() * 4 + 1) * kQuadBytes;
+    for (;;) {
+        quads_.assign(bytes, 0);
+        const int n = stb_easy_font_print(x, y, const_cast<char*>(text.c_str()), nullptr,
+                                          quads_.data(), static_cast<int>(bytes));
+        if ((std::size_t(n) + 1) * kQuadBytes <= bytes) return n;
+        bytes *= 2;
+    }
+}
+
 void Hud::drawText(Program& program, const HudLine& line, float x, float y) {
-    quads_.assign(line.text.size() * 270 + 64, 0);
-    int n = stb_easy_font_print(x, y, const_cast<char*>(line.text.c_str()), nullptr, quads_.data(),
-                                static_cast<int>(quads_.size()));
+    const int n = printQuads(line.text, x, y);
     triangles_.clear();
     const float* v = reinterpret_cast<const float*>(quads_.data());
     for (int q = 0; q < n; ++q)  // each quad -> two triangles (core profiles have no quads)
@@ -146,6 +164,8 @@ std::vector<HudPanel> layoutHud(const std::vector<HudBlock>& blocks, int width, 
         p.wrappedLines = static_cast<int>(wrapped[k].size());
         p.lines =
             layoutHudBlock(block, std::max(span - 2 * (kHudMargin + Hud::kPad), 8.0f), given[k]);
+        if (block.scrollable && p.wrappedLines > given[k] && given[k] > 1)
+            p.pageLines = given[k] - 1;  // the last line says which page shows
         p.x = c * w / 2 + kHudMargin;
         p.width = 0;
         for (const auto& l : p.lines)

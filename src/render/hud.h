@@ -22,7 +22,8 @@ struct HudBlock {
     bool bottom = false;
     // Wrapped lines beyond this (or beyond the room the panels have) are cut: the last line
     // shown says how many more there are (`more`, with "N" for the count, else "(N more
-    // lines)"); a scrollable block starts at `firstLine` and says which lines show instead.
+    // lines)"); a scrollable block shows the whole page that holds line `firstLine` and says
+    // which page of how many shows instead.
     int maxLines = 0;   // 0: as many as there is room for
     int keepLines = 1;  // lines it gets before the blocks after it get more than theirs
     std::string more;
@@ -59,6 +60,7 @@ struct HudPanel {
     bool bottom = false;
     glm::vec4 color{0.0f};
     int wrappedLines = 0;  // before the cut
+    int pageLines = 0;     // a scrollable block's lines a page (0: it shows whole)
 };
 constexpr float kHudMargin = 3;  // between panels and from the window's edge
 
@@ -92,6 +94,7 @@ class Hud {
     void end();
     void drawRect(Program& program, float x0, float y0, float x1, float y1, const glm::vec4& color);
     void drawText(Program& program, const HudLine& line, float x, float y);
+    int printQuads(const std::string& text, float x, float y);  // into quads_: every quad
     VertexArray vao_;
     Buffer buffer_;
     std::vector<char> quads_;

@@ -20,6 +20,21 @@ const glm::vec4 kErrorPanel(0.25f, 0.02f, 0.02f, 0.92f);
 const char* const WindowSession::kTryingLine =
     "trying your shaders in a bounded worker first: a loop or a crash cannot freeze this window";
 
+std::string WindowSession::compactTitle(const ParamSet& values, std::size_t selected) const {
+    Renderer& r = renderer();
+    std::string line = title() + " | " + treeName(r.shaders().tree());
+    if (!request_.overlay.empty())
+        line += r.shaders().overlay().empty()
+                    ? " (your folder is " + std::string(treeName(request_.tree)) + ")"
+                    : ", " + request_.overlay + " over ours";
+    const auto& specs = values.specs();
+    if (!specs.empty()) {
+        const std::string& name = specs[selected % specs.size()].name;
+        line += " | " + name + " = " + values.text(name) + ignoredMark(name);
+    }
+    return line + " | h: keys";
+}
+
 std::string WindowSession::title() const {
     return std::to_string(renderer().stageIndex()) + " " + renderer().stage().id;
 }
@@ -53,14 +68,30 @@ std::string WindowSession::ignoredMark(const std::string& param) const {
                : "";
 }
 
-// What the values on screen (or the split view's halves) wait for: "" when they drew.
+// What the values on screen (or the split view's halves) wait for: "" when they drew. It names
+// them (the lesson they are) and, once their trial runs, its CPU budget.
 std::string WindowSession::valuesLine() const {
     const auto screen = onScreen();
     for (const Sets& sets : screen.sets)
-        if (watchdog_->valuePending(screen.tree, screen.stage, sets))
-            return "trying these values with your shaders in the worker first: the last ones "
-                   "that drew show meanwhile";
+        if (watchdog_->valuePending(screen.tree, screen.stage, sets)) {
+            std::string budget;
+            const auto& tried = watchdog_->tried();
+            if (watchdog_->running() && !tried.empty() && tried.back().what == "values" &&
+                tried.back().sets == sets && tried.back().budgetSeconds > 0)
+                budget = " (CPU budget " + secondsText(tried.back().budgetSeconds) + ")";
+            return "trying " + valuesName(sets) + " with your shaders in the worker" + budget +
+                   ": the last values that drew show meanwhile";
+        }
     return "";
+}
+
+// The last refusal of values, while the values it put back are still those on screen.
+std::string WindowSession::refusalLine() const {
+    Renderer& r = renderer();
+    if (refusal_.line.empty() || refusal_.stage != r.stage().id || refusal_.tree != shownTree() ||
+        nonDefault(r.params()) != refusal_.backTo)
+        return "";
+    return refusal_.line;
 }
 
 // The lines saying what is being tried, if anything concerns the picture.
@@ -75,6 +106,8 @@ std::vector<HudLine> WindowSession::tryingLines() const {
              kGreen});
     const std::string values = valuesLine();
     if (!values.empty()) lines.push_back({values, kGreen});
+    const std::string refused = refusalLine();
+    if (!refused.empty()) lines.push_back({refused, kErrorText});
     return lines;
 }
 
@@ -143,43 +176,39 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
             b.column = int(k);
             b.half = true;
             b.lines = {{(k == 0 ? "left: " : "right: ") + halves[k].name, kWhite}};
-            b.maxLines = 3;
+            b.keepLines = 1000;  // whole: the band at the bottom keeps room for it
             blocks.push_back(b);
         }
     }
     const auto& specs = r.params().specs();
     if (hudMode_ == HudMode::Compact) {  // for a projector: what the picture is, how to read it
+        // The title and the lesson, whole (what to look for is never cut): the band the window
+        // keeps at the top holds them. What comes and goes (a trial, a refusal) is a panel of
+        // its own under them, over the picture's edge.
         HudBlock top;
-        std::string line = title() + " | " + treeName(r.shaders().tree());
-        if (!request_.overlay.empty())
-            line += r.shaders().overlay().empty()
-                        ? " (your folder is " + std::string(treeName(request_.tree)) + ")"
-                        : ", " + request_.overlay + " over ours";
-        if (!specs.empty()) {
-            const std::string& name = specs[selectedParam_ % specs.size()].name;
-            line += " | " + name + " = " + r.params().text(name) + ignoredMark(name);
-        }
-        top.lines.push_back({line + " | h: keys", kYellow});
-        for (const HudLine& l : tryingLines()) top.lines.push_back(l);
+        top.lines.push_back({compactTitle(r.params(), selectedParam_), kYellow});
         const std::string lesson = lessonLine();
         if (!lesson.empty()) top.lines.push_back({lesson, kWhite});
-        top.maxLines = 6;
-        top.keepLines = 2;  // the title line, wrapped on a small window
+        top.keepLines = 1000;
         top.more = "i: the lesson and the rest (N more lines)";
+        HudBlock trying;
+        trying.lines = tryingLines();
+        trying.more = "i: the rest (N more lines)";
         if (!errors.empty()) {  // first: the first error's file, line and message, wrapped
             HudBlock e;
             e.lines = errorLines(false);
             const std::size_t more = errorLinesTotal + (errors.size() > 1 ? 1 : 0);
             e.lines.push_back(
-                {"i: the whole text (" + std::to_string(more) + " lines" +
+                {"i: the whole text (" + std::to_string(more) + (more == 1 ? " line" : " lines") +
                      (errors.size() > 1 ? ", " + std::to_string(errors.size()) + " errors)" : ")"),
                  kGrey});
             e.more = "i: the rest of it (N more lines)";
-            e.keepLines = 1000;  // before any line of the panel under it
+            e.keepLines = 3;  // its first line and the count, then the title and the lesson
             e.panel = kErrorPanel;
             blocks.push_back(e);
         }
         blocks.push_back(top);
+        if (!trying.lines.empty()) blocks.push_back(trying);
         addLegendAndFlash();
         return blocks;
     }

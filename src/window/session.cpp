@@ -304,10 +304,14 @@ bool WindowSession::handleTrialEvents() {
                                          "): " + oneLine(e.what) +
                                          "; the last values that drew show";
                 complain(line);
-                // On screen, back to what drew (if the stage still shows these values).
+                // On screen, back to what drew (if the stage still shows these values), and the
+                // refusal said on the HUD as long as those stay.
                 Renderer& r = renderer();
-                if (shown && nonDefault(r.params()) == e.sets)
+                if (shown) refusal_ = {e.stage, refusalText(e), e.tree, nonDefault(r.params())};
+                if (shown && nonDefault(r.params()) == e.sets) {
                     applySets(r.params(), watchdog_->drawable(e.tree, e.stage, e.sets));
+                    refusal_.backTo = nonDefault(r.params());
+                }
                 break;
             }
         }
@@ -327,6 +331,26 @@ bool WindowSession::handleTrialEvents() {
     if (adoptedBatch_.empty()) errorsBefore_ = errorsNow;
     if (!errorsNow) saidErrors_.clear();  // a message that comes back is said again
     return !events.empty();
+}
+
+// One line for the HUD: which files, which lesson or values, what ended the trial (a loop: the
+// CPU budget it ran past).
+std::string WindowSession::refusalText(const Watchdog::Event& e) const {
+    std::string files;
+    for (const auto& f : renderer().shaders().overlayFiles(e.stage))
+        files += (files.empty() ? "" : " + ") + request_.overlay + "/" + f;
+    if (files.empty()) files = "the shaders of " + e.stage;
+    std::string why = e.what;
+    const std::string worker = "in the trial worker: ";
+    if (const std::size_t at = why.find(worker); at != std::string::npos)
+        why = why.substr(at + worker.size());
+    double budget = 0;
+    for (const Watchdog::Tried& t : watchdog_->tried())
+        if (t.what == "values" && t.sets == e.sets && t.stage == e.stage) budget = t.budgetSeconds;
+    if (why.find("time limit") != std::string::npos && budget > 0)
+        why = "no picture within its CPU budget of " + secondsText(budget);
+    return "refused: " + files + ", " + valuesName(e.sets) + ": " + firstErrorLine(why) +
+           "; the last values that drew show";
 }
 
 std::vector<std::string> WindowSession::shownErrors() const {

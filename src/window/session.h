@@ -80,8 +80,9 @@ class WindowSession {
     void rebuildShown();
     std::vector<std::string> shownErrors() const;  // the on-screen stage's first
     void flash(const std::string& text, bool error);
-    void complain(const std::string& text);  // on the HUD and one line on stderr
-    bool handleTrialEvents();                // true when something changed
+    void complain(const std::string& text);                   // on the HUD and one line on stderr
+    std::string refusalText(const Watchdog::Event& e) const;  // values refused: one HUD line
+    bool handleTrialEvents();                                 // true when something changed
     static Sets nonDefault(const ParamSet& params);
     static void applySets(ParamSet& params, const Sets& sets);  // defaults, then these
     static bool offers(const StageInfo& stage, ViewMode view);
@@ -101,6 +102,10 @@ class WindowSession {
     int matchingLesson() const;
     void nextLesson();
     std::string lessonLine() const;
+    std::string lessonText(std::size_t k, std::size_t of) const;  // lesson k of `of`, 0-based
+    static std::string noLessonText(std::size_t lessons);         // the settings are none
+    // "lesson 2/4 of margin" for values that are a lesson's, else "margin (the values)".
+    std::string valuesName(const Sets& sets) const;
     struct Half {
         std::string name;
         Sets sets;
@@ -112,6 +117,9 @@ class WindowSession {
 
     // session_draw.cpp
     HudRoom hudRoom() const;
+    // The window rows the top and the bottom panels keep, whatever they show now (section
+    // "A picture that holds still" in session_draw.cpp).
+    std::pair<int, int> reservedBands(int width, int height) const;
     void layOut(int width, int height);
     Image pictureAlone(int width, int height);  // the picture at the window's size, no HUD
     void drawPicture(const Rect& area);
@@ -131,11 +139,14 @@ class WindowSession {
     std::vector<HudLine> helpLines() const;
     std::vector<HudLine> errorLines(bool all) const;
     std::string title() const;
+    // The compact HUD's first line with these values on screen and parameter `selected`.
+    std::string compactTitle(const ParamSet& values, std::size_t selected) const;
     std::string treeText() const;
     std::string ignoredMark(const std::string& param) const;
     std::string folderText() const;
     std::string valuesLine() const;  // "" or what the values on screen wait for
     std::vector<HudLine> tryingLines() const;
+    std::string refusalLine() const;  // "" or the last refusal of values on screen
     std::vector<HudLine> errorPage(const std::string& why) const;
     static const char* const kTryingLine;
     static constexpr auto kFlashTime = std::chrono::seconds(4);
@@ -184,7 +195,8 @@ class WindowSession {
     std::string pictureShows_ = "stage";  // "stage" | "trying" | "none" | "help"
     std::vector<std::string> hudText_;    // the lines the last draw's panels showed (--state)
     std::vector<std::string> pageText_;   // ... and its pages in the picture's place
-    int panelLines_ = 1, pageLines_ = 1;  // what PgUp/PgDn move by
+    int panelLines_ = 1, pageLines_ = 1;  // what PgUp/PgDn move by: a page of the full panel's
+                                          // lines, of a page's in the picture's place
     std::set<std::string> drawnHere_;     // "tree/scene/stage" a renderer here built and drew
     struct Deferred {  // programs adopted while a slot was not on screen: rebuilt when it is
         std::set<std::string> folders;
@@ -198,6 +210,14 @@ class WindowSession {
     std::set<std::string> adoptedBatch_;
     bool errorsWhenBatchBegan_ = false, errorsBefore_ = false;
     bool forceNextAdopt_ = false;  // `r`: rebuild even what did not change
+    // The last values refused in the worker, said on the HUD while the values they were put
+    // back to stay on screen: the stage, the values put back, and the line.
+    struct Refusal {
+        std::string stage, line;
+        GlslTree tree = GlslTree::Core;
+        Sets backTo;
+    };
+    Refusal refusal_;
     std::string flash_;
     bool flashIsError_ = false;
     Clock::time_point flashUntil_;

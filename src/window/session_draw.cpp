@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <set>
 
 #include "math/mirror_topview.h"
 #include "math/orbit.h"
@@ -18,6 +19,11 @@ namespace {
 
 constexpr float kLightRadiansPerSecond = 0.6f;
 constexpr float kFramedAspect = 4.0f / 3.0f;
+constexpr float kFullPanelShare = 0.55f;  // the full HUD's two bands: the picture keeps 45 %
+constexpr float kFullBottom = 0.15f;
+constexpr HudRoom kCompactRoom{0.45f, 0.20f};  // the compact HUD's bands at most
+// ... and with what floats over the picture's edge (a trial, a refusal, an error, a message).
+constexpr HudRoom kCompactFloating{0.65f, 0.35f};
 const glm::vec4 kBackground(0.1f, 0.1f, 0.12f, 1);
 const glm::vec4 kErrorBackground(0.16f, 0.03f, 0.03f, 1);
 
@@ -35,9 +41,70 @@ float WindowSession::textScale(int width, int height) const {
 }
 
 HudRoom WindowSession::hudRoom() const {
-    // The picture keeps at least 45 % of the window: the full panel scrolls, the compact one
-    // cuts (its first error's file, line and message come first).
-    return hudMode_ == HudMode::Full ? HudRoom{0.40f, 0.15f} : HudRoom{0.35f, 0.20f};
+    // The most the panels take, the reserved bands and what floats over the picture's edge
+    // together: the full panel pages in its band, the compact one cuts (its first error's file,
+    // line and message come first).
+    if (hudMode_ == HudMode::Full && height_ > 0)
+        return HudRoom{float(reservedBands(width_, height_).first) / float(height_), kFullBottom};
+    return hudMode_ == HudMode::Full ? HudRoom{kFullPanelShare, kFullBottom} : kCompactFloating;
+}
+
+// A picture that holds still. The bands the window keeps for the panels (and so the picture's
+// rectangle) depend on the window's size, the HUD's mode and the stage, never on what the panels
+// show now: the compact top band holds the title line with any parameter selected at any
+// lesson's values and the longest of the stage's lesson lines; the bottom band the longest
+// legend of the stage's views (and the split view's labels); the full panel has its room. A
+// lesson, a value, a trial, a message or an error does not move the picture: what does not fit
+// the band (an error, a trial, a refusal, a message) floats over the picture's edge.
+std::pair<int, int> WindowSession::reservedBands(int width, int height) const {
+    if (hudMode_ == HudMode::Hidden || width <= 0 || height <= 0) return {0, 0};
+    const float scale = textScale(width, height);
+    const HudRoom room =
+        hudMode_ == HudMode::Full ? HudRoom{kFullPanelShare, kFullBottom} : kCompactRoom;
+    const float w = width / scale, h = height / scale;
+    const float inside = 2 * (kHudMargin + Hud::kPad);
+    auto lines = [](const std::string& text, float wrapAt) {
+        return int(wrapHudLines({{text, glm::vec4(1)}}, std::max(wrapAt, 8.0f)).size());
+    };
+    // A panel of n lines and the margin under it (the first panel has one above it too).
+    auto panel = [](int n) {
+        return n > 0 ? n * Hud::kLineHeight + 2 * Hud::kPad - 3 + kHudMargin : 0;
+    };
+    Renderer& r = renderer();
+    const auto list = lessons();
+    std::set<ViewMode> views = {r.view};  // the one on screen and those its lessons show
+    for (const WindowLesson* l : list) views.insert(l->view);
+    int legend = 0;
+    for (ViewMode v : views)
+        if (!viewLegend(r.stage(), v).empty())  // the final picture has none
+            legend = std::max(legend, std::min(2, lines(viewLegend(r.stage(), v), w - inside)));
+    float bottom = legend > 0 ? kHudMargin + panel(legend) : 0;
+    if (split_) {  // each half's label, wrapped to its half, under the legend's panel
+        int label = 0;
+        for (const Half& half : splitHalves())
+            label = std::max(label, lines("right: " + half.name, w / 2 - inside));
+        bottom += (legend > 0 ? 0 : kHudMargin) + panel(label);
+    }
+    bottom = std::min(bottom, h * room.bottom);
+    // The full panel: what leaves the picture its 45 %, a page at a time.
+    float top = std::max(h * 0.25f, h * kFullPanelShare - bottom);
+    if (hudMode_ == HudMode::Compact) {
+        // Not the values on screen: a value no lesson has (`=`) must not move the picture
+        // either (its title, if longer, floats a line over the picture's edge).
+        const std::size_t params = std::max<std::size_t>(1, r.params().specs().size());
+        int title = 0, lesson = 0;
+        for (std::size_t k = 0; k <= list.size(); ++k) {  // the defaults, then each lesson
+            ParamSet values(r.stage().params);
+            if (k > 0) applySets(values, list[k - 1]->sets);
+            for (std::size_t p = 0; p < params; ++p)
+                title = std::max(title, lines(compactTitle(values, p), w - inside));
+            if (k > 0) lesson = std::max(lesson, lines(lessonText(k - 1, list.size()), w - inside));
+        }
+        if (!list.empty())  // the settings of no lesson
+            lesson = std::max(lesson, lines(noLessonText(list.size()), w - inside));
+        top = std::min(h * room.top, kHudMargin + panel(title + lesson));
+    }
+    return {int(std::ceil(top * scale)), int(std::ceil(bottom * scale))};
 }
 
 void WindowSession::layOut(int width, int height) {
@@ -48,11 +115,11 @@ void WindowSession::layOut(int width, int height) {
     if (hudMode_ != HudMode::Hidden) {
         const float scale = textScale(width, height);
         panels_ = layoutHud(hudBlocks(), width, height, scale, hudRoom());
-        bands_ = hudBands(panels_, height, scale);
+        bands_ = reservedBands(width, height);
         for (const HudPanel& p : panels_) {
             for (const HudLine& l : p.lines) hudText_.push_back(l.text);
             if (!p.bottom && hudMode_ == HudMode::Full) {  // PgUp/PgDn: a page of the panel
-                panelLines_ = int(p.lines.size());
+                panelLines_ = p.pageLines > 0 ? p.pageLines : int(p.lines.size());
                 hudScroll_ = std::clamp(hudScroll_, 0, std::max(0, p.wrappedLines - 1));
             }
         }

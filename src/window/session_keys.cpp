@@ -99,16 +99,18 @@ bool WindowSession::key(unsigned char key, bool shift) {
 }
 
 bool WindowSession::special(SpecialKey key, bool shift) {
-    const int step = 20;  // arrow keys orbit as a drag of 20 pixels does
+    // An arrow orbits as a drag of 1/16 of the window's width does (about 11 degrees); Up
+    // raises the camera (a drag downward does: the scene's far side comes toward the viewer).
+    const int step = std::max(1, width_ / 16);
     switch (key) {
         case SpecialKey::Left:
             return drag(-step, 0);
         case SpecialKey::Right:
             return drag(step, 0);
         case SpecialKey::Up:
-            return drag(0, -step);
-        case SpecialKey::Down:
             return drag(0, step);
+        case SpecialKey::Down:
+            return drag(0, -step);
         case SpecialKey::PageUp:
             scroll(-1);
             return true;
@@ -131,14 +133,18 @@ bool WindowSession::special(SpecialKey key, bool shift) {
 // PgUp/PgDn: the help page when it shows, else a page of text in the picture's place, else the
 // full panel (the draw clamps what goes past the end).
 void WindowSession::scroll(int pages) {
-    int& offset = showHelp_ || pictureShows_ == "none" ? pageScroll_ : hudScroll_;
-    const int page = std::max(1, pageLines_ - 1);
-    offset = std::max(0, offset + pages * page);
+    const bool page = showHelp_ || pictureShows_ == "none";
+    int& offset = page ? pageScroll_ : hudScroll_;
+    const int lines = std::max(1, page ? pageLines_ : panelLines_);
+    offset = std::max(0, offset + pages * lines);
 }
 
 bool WindowSession::drag(int dx, int dy) {
+    // A drag across the window's width turns the camera half a turn, whatever the window's size
+    // (0.01 rad a pixel turned 115 degrees for 200 pixels); up and down at the same rate.
     Renderer& r = renderer();
-    r.camera = orbitCamera(r.camera, -dx * 0.01f, dy * 0.01f, sceneReceiverHeight(r.scene()));
+    const float perPixel = 3.14159265f / float(std::max(1, width_ > 0 ? width_ : request_.width));
+    r.camera = orbitCamera(r.camera, -dx * perPixel, dy * perPixel, sceneReceiverHeight(r.scene()));
     return true;
 }
 

@@ -61,14 +61,38 @@ std::string WindowSession::lessonLine() const {
     auto list = lessons();
     if (list.empty()) return "";
     const int k = matchingLesson();
-    const std::string of = "/" + std::to_string(list.size());
-    if (k < 0)
-        return "the settings on screen are none of the " + std::to_string(list.size()) +
-               " lessons (n: the next lesson, x: the defaults)";
-    const WindowLesson& l = *list[std::size_t(k)];
-    std::string line = "lesson " + std::to_string(k + 1) + of + " (n): " + l.name;
+    if (k < 0) return noLessonText(list.size());
+    return lessonText(std::size_t(k), list.size());
+}
+
+std::string WindowSession::noLessonText(std::size_t lessons) {
+    return "the settings on screen are none of the " + std::to_string(lessons) +
+           " lessons (n: the next lesson, x: the defaults)";
+}
+
+std::string WindowSession::lessonText(std::size_t k, std::size_t of) const {
+    const WindowLesson& l = *lessons()[k];
+    std::string line =
+        "lesson " + std::to_string(k + 1) + "/" + std::to_string(of) + " (n): " + l.name;
     if (!l.look.empty()) line += ". Look for: " + l.look;
     return line;
+}
+
+std::string WindowSession::valuesName(const Sets& sets) const {
+    Renderer& r = renderer();
+    const auto list = lessons();
+    std::string values;
+    for (const auto& [name, value] : sets)
+        values += (values.empty() ? "" : ", ") + name + " = " + value;
+    if (values.empty()) values = "the defaults";
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        ParamSet p(r.stage().params);
+        applySets(p, list[k]->sets);
+        if (nonDefault(p) == sets)
+            return "lesson " + std::to_string(k + 1) + "/" + std::to_string(list.size()) + " of " +
+                   r.stage().id + " (" + values + ")";
+    }
+    return r.stage().id + " (" + values + ")";
 }
 
 const WindowLesson* WindowSession::topViewLesson() const {

@@ -106,6 +106,7 @@ nlohmann::json WindowSession::state() const {
     j["help"] = showHelp_;
     j["lesson"] = lessonLine();
     j["eye"] = {r.camera.eye.x, r.camera.eye.y, r.camera.eye.z};
+    j["at"] = {r.camera.at.x, r.camera.at.y, r.camera.at.z};
     j["eyeDistance"] = glm::length(r.camera.eye - r.camera.at);
     j["split"] = nlohmann::json::array();
     if (split_)

@@ -138,6 +138,10 @@ bool killedFromOutside(const WorkerOutcome& o) {
 
 }  // namespace
 
+std::string secondsText(double s) {
+    return seconds(s);
+}
+
 std::string TrialJob::describe() const {
     std::string text = "stage " + stage + " (" + treeName(tree);
     if (!sets.empty()) text += ", " + setsText(sets);

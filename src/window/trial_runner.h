@@ -99,4 +99,7 @@ class TrialRunner {
     Limits studentLimits_;
 };
 
+// Seconds as the trials' messages write them ("3.4 s").
+std::string secondsText(double seconds);
+
 }  // namespace sl

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -426,6 +427,48 @@ TEST(LiveWindow, HudToggles) {
     EXPECT_EQ(w.quit(), 0);
 }
 
+// The full HUD pages by whole pages with PgDn (no `h` first): each page says "page k of m",
+// starts where the one before ended, and the last ends at the last line: every line is shown.
+TEST(LiveWindow, FullHudPagesEveryLineOnce) {
+    std::string dir = tempDir("live-pages");
+    LiveWindow w("--stage margin --state state.json --size 640x360", dir);
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["drawn"] > 0; }, 30));
+    // The page line's numbers: page, pages, first line, last line, lines.
+    auto pageLine = [](const nlohmann::json& s) {
+        std::array<int, 5> n{0, 0, 0, 0, 0};
+        for (const auto& l : s["hudText"])
+            if (std::sscanf(l.get<std::string>().c_str(),
+                            "PgUp/PgDn: page %d of %d (lines %d-%d of %d)", &n[0], &n[1], &n[2],
+                            &n[3], &n[4]) == 5)
+                return n;
+        return n;
+    };
+    ASSERT_TRUE(w.keys("i"));
+    ASSERT_TRUE(w.waitState([&](const auto& s) { return pageLine(s)[0] == 1; }, 10))
+        << w.state()["hudText"].dump();
+    const int pages = pageLine(w.state())[1], total = pageLine(w.state())[4];
+    ASSERT_GE(pages, 2) << "a 640x360 window pages the full HUD";
+    int shownUpTo = pageLine(w.state())[3];
+    EXPECT_EQ(pageLine(w.state())[2], 1);
+    for (int page = 2; page <= pages; ++page) {
+        ASSERT_TRUE(w.keys("Next"));
+        ASSERT_TRUE(w.waitState([&](const auto& s) { return pageLine(s)[0] == page; }, 10))
+            << page << " " << w.state()["hudText"].dump();
+        const auto n = pageLine(w.state());
+        EXPECT_EQ(n[1], pages);
+        EXPECT_EQ(n[2], shownUpTo + 1) << "page " << page << " starts where the last ended";
+        shownUpTo = n[3];
+    }
+    EXPECT_EQ(shownUpTo, total) << "the last page ends at the last line";
+    ASSERT_TRUE(w.keys("Next"));  // past the end: the last page stays
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    EXPECT_EQ(pageLine(w.state())[0], pages);
+    ASSERT_TRUE(w.keys("Prior"));
+    EXPECT_TRUE(w.waitState([&](const auto& s) { return pageLine(s)[0] == pages - 1; }, 10));
+    EXPECT_EQ(w.quit(), 0);
+}
+
 // A window nobody touches draws nothing: over 3 s it uses next to no CPU (it used to redraw
 // continuously at about 70 % of a core). A bound with a wide margin: this is not a speed test.
 TEST(LiveWindow, IdleWindowCostsNextToNoCpu) {
@@ -621,7 +664,7 @@ TEST(Window, HelpShowsTheKeysInEveryModeAndSize) {
             const std::string page = joinedText(s.state["pageText"]);
             EXPECT_NE(page.find("0-8: stage by number"), std::string::npos) << what << page;
             EXPECT_TRUE(page.find("Esc: quit") != std::string::npos ||
-                        page.find("PgUp/PgDn: lines 1-") != std::string::npos)
+                        page.find("PgUp/PgDn: page 1 of ") != std::string::npos)
                 << what << page;
             EXPECT_GT(brightInPicture(s, 200), 100) << what << ": no text drawn in the picture";
         }

@@ -187,6 +187,56 @@ TEST(LiveWindowProjector, LessonKeyAppliesEachLesson) {
     EXPECT_EQ(w.quit(), 0);
 }
 
+// The picture holds still: in every stage, from lesson to lesson (`n`, real key presses at
+// 1280x720), after a value that is no lesson (`=`) and with a message on screen (`c`), the
+// picture's rectangle is the same; only the window's size and the HUD's mode change it.
+TEST(LiveWindowProjector, PictureHoldsStillAcrossAStagesLessons) {
+    std::string dir = tempDir("live-still");
+    LiveWindow w("--stage phong --state state.json --size 1280x720", dir, true, "1920x1080");
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["drawn"] > 0; }, 30));
+    // Presses `key`, then waits for a frame drawn since that shows what `ok` asks for.
+    auto press = [&](const std::string& key, const std::function<bool(const nlohmann::json&)>& ok) {
+        const long drawn = w.state().value("drawn", 0L);
+        return w.keys(key) &&
+               w.waitState([&](const auto& s) { return s["drawn"] > drawn && ok(s); }, 20);
+    };
+    const auto first = w.state()["stage"];
+    int stages = 0, compared = 0;
+    do {
+        auto s = w.state();
+        const std::string stage = s["stage"], label = s["lesson"];
+        const nlohmann::json rect = s["pictureRect"];
+        // "lesson 1/N (n): ...": N from the stage's own data
+        const std::size_t slash = label.find('/');
+        const int lessons = label.rfind("lesson ", 0) == 0 ? std::stoi(label.substr(slash + 1)) : 0;
+        for (int k = 2; k <= lessons; ++k) {
+            const std::string want = "lesson " + std::to_string(k) + "/";
+            ASSERT_TRUE(press("n",
+                              [&](const auto& t) {
+                                  return t["lesson"].template get<std::string>().rfind(want, 0) ==
+                                         0;
+                              }))
+                << stage << " " << want << w.state().dump();
+            EXPECT_EQ(w.state()["pictureRect"], rect) << stage << " " << w.state()["lesson"];
+            ++compared;
+        }
+        if (w.state()["param"] != "") {  // a value no lesson has
+            ASSERT_TRUE(press("equal", [](const auto&) { return true; }));
+            EXPECT_EQ(w.state()["pictureRect"], rect) << stage << " " << w.state()["lesson"];
+        }
+        // a message on screen
+        ASSERT_TRUE(press("c", [](const auto& t) { return t["message"] != ""; }))
+            << w.state().dump();
+        EXPECT_EQ(w.state()["pictureRect"], rect) << stage << " with a message";
+        ASSERT_TRUE(press("bracketright", [&](const auto& t) { return t["stage"] != stage; }));
+        ++stages;
+    } while (w.state()["stage"] != first && stages < 20);
+    std::cout << compared << " lessons compared in " << stages << " stages\n";
+    EXPECT_GE(compared, 20);
+    EXPECT_EQ(w.quit(), 0);
+}
+
 // `s` splits the window: the lesson's failure on the left (bias: -0.5 inverts the shadows), its
 // fix on the right (the flipped light), same camera and light, each labelled, each half the
 // same picture as the headless render of its settings at that size; the mirror's split is its
@@ -242,11 +292,31 @@ TEST(LiveWindowProjector, ArrowsWheelAndConfirmations) {
     ASSERT_TRUE(w.keys("Left Up"));
     EXPECT_TRUE(w.waitState([&](const auto& s) { return s["eye"] != eye; }, 10));
     EXPECT_NEAR(w.state()["eyeDistance"].get<double>(), distance, 1e-3) << "orbit keeps distance";
+    EXPECT_TRUE(w.waitState([&](const auto& s) { return s["keys"]["received"] >= 2; }, 10));
+    EXPECT_GT(w.state()["eye"][1].get<double>(), eye[1].get<double>() + 0.01)
+        << "Up raises the camera";
+    // A drag across the window's width turns the camera about half a turn around its target.
+    ASSERT_TRUE(w.keys("c"));
+    ASSERT_TRUE(w.waitState([&](const auto& s) { return s["eye"] == eye; }, 10));
+    ASSERT_EQ(w.xdo("mousemove --window " + w.id() + " 10 240 mousedown 1 mousemove --window " +
+                    w.id() + " 330 240 mousemove --window " + w.id() + " 630 240 mouseup 1"),
+              0);
+    ASSERT_TRUE(w.waitState([&](const auto& s) { return s["eye"] != eye; }, 10));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    auto yaw = [](const nlohmann::json& s) {
+        return std::atan2(s["eye"][0].get<double>() - s["at"][0].get<double>(),
+                          s["eye"][2].get<double>() - s["at"][2].get<double>());
+    };
+    double turned =
+        std::abs(yaw(w.state()) - yaw(nlohmann::json{{"eye", eye}, {"at", w.state()["at"]}}));
+    if (turned > M_PI) turned = 2 * M_PI - turned;
+    std::cout << "a drag of 620 of 640 pixels turned " << turned * 180 / M_PI << " degrees\n";
+    EXPECT_NEAR(turned * 180 / M_PI, 620.0 / 640 * 180, 15) << w.state().dump();
     // Orbiting down stops above the floor's top (y = 0), not its bottom (-0.1).
     std::string down;
-    for (int k = 0; k < 40; ++k) down += " Up";
+    for (int k = 0; k < 40; ++k) down += " Down";
     ASSERT_TRUE(w.keys(down));
-    EXPECT_TRUE(w.waitState([&](const auto& s) { return s["keys"]["received"] >= 42; }, 30));
+    EXPECT_TRUE(w.waitState([&](const auto& s) { return s["keys"]["received"] >= 43; }, 30));
     EXPECT_GE(w.state()["eye"][1].get<double>(), 0.05 - 1e-3) << w.state().dump();
     ASSERT_TRUE(w.keys("c"));
     ASSERT_TRUE(w.waitState([&](const auto& s) { return s["eye"] == eye; }, 10));

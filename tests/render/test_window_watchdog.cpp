@@ -259,6 +259,26 @@ TEST(LiveWindowWatchdog, ValueThatMakesTheShaderLoopIsTriedFirst) {
     ASSERT_TRUE(w.waitState(
         [](const auto& s) { return s["tryingValues"] == true && s["trying"] == true; }, 5))
         << w.state().dump();
+    // The compact HUD says what is tried, on a line of its own: the stage and the values.
+    // The HUD's text from the line that starts with `start` on (its wrapped lines joined again).
+    auto hudLine = [](const nlohmann::json& s, const std::string& start) {
+        std::string all;
+        for (const auto& l : s["hudText"]) all += "\n" + l.get<std::string>();
+        const std::size_t at = all.find("\n" + start);
+        if (at == std::string::npos) return std::string();
+        std::string text = all.substr(at + 1);
+        for (char& c : text)
+            if (c == '\n') c = ' ';
+        return text;
+    };
+    EXPECT_TRUE(w.waitState(
+        [&](const auto& s) {
+            const std::string t = hudLine(s, "trying ");
+            return t.find("margin (margin = ") != std::string::npos &&
+                   t.find("in the worker") != std::string::npos;
+        },
+        5))
+        << w.state()["hudText"].dump();
     // The window answers meanwhile: `i` changes the HUD within a second.
     const std::string hud = w.state()["hud"];
     ASSERT_TRUE(w.keys("i"));
@@ -273,6 +293,18 @@ TEST(LiveWindowWatchdog, ValueThatMakesTheShaderLoopIsTriedFirst) {
         },
         60))
         << w.state().dump() << w.err();
+    // The refusal stays said on the compact HUD (not only for the message's few seconds): one
+    // line naming the file, the stage and its values, and the CPU budget the trial ran past.
+    ASSERT_TRUE(w.keys("i i"));
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["hud"] == "compact"; }, 10));
+    std::this_thread::sleep_for(std::chrono::seconds(5));  // the message is gone by now
+    const auto compact = w.state();
+    EXPECT_EQ(compact["message"], "") << compact.dump();
+    const std::string refused = hudLine(compact, "refused: ");
+    EXPECT_NE(refused.find("mine/margin/lit.frag"), std::string::npos) << compact.dump();
+    EXPECT_NE(refused.find("margin (margin = "), std::string::npos) << refused;
+    EXPECT_NE(refused.find("CPU budget of "), std::string::npos) << refused;
+    std::cout << "the compact HUD says: " << refused << "\n";
     ASSERT_TRUE(w.keys("p"));
     ASSERT_TRUE(waitUntil([&] { return countLines(w.out(), "saved ") >= 2; }, 30)) << w.out();
     std::istringstream out(w.out());

@@ -219,3 +219,16 @@ TEST(GlslStandard, VersionBeyondTheTreesContextIsRefused) {
               std::string::npos)
         << e;
 }
+
+// A syntax error reads as the README shows it: `file:line: error: message`, without glslang's
+// empty token field ("'' :  syntax error") and with the token the student typed, not the
+// grammar's name for it ("unexpected SEMICOLON").
+TEST(GlslStandard, SyntaxErrorReadsAsTheReadmeShowsIt) {
+    Overlay o;
+    o.file("phong/lit.vert", kLegacyVert)
+        .file("phong/lit.frag", legacyFrag("    gl_FragColor = vec4(1.0) +;\n"));
+    const std::string message = refusal(GlslTree::Legacy, o, "phong", "lit");
+    const std::string line = o.dir() + "/phong/lit.frag:6: error: syntax error, unexpected ';'";
+    EXPECT_NE(message.find(line), std::string::npos) << message;
+    EXPECT_EQ(message.find("'' :"), std::string::npos) << message;
+}

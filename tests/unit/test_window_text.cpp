@@ -49,6 +49,30 @@ TEST(HudText, ABlockSaysHowManyLinesDoNotFit) {
     EXPECT_EQ(out[3].text, "(7 more lines)");
 }
 
+// A scrollable block pages by whole pages: every line is on exactly one page, each page says
+// which it is of how many, and a first line inside a page shows that whole page.
+TEST(HudText, ScrollableBlockPagesByWholePages) {
+    HudBlock b;
+    for (int k = 0; k < 17; ++k) b.lines.push_back({"line " + std::to_string(k), {}});
+    b.scrollable = true;
+    const int perPage = 5, pages = 4;  // 6 lines: 5 of the block and the page line
+    std::vector<int> seen(b.lines.size(), 0);
+    for (int page = 0; page < pages; ++page) {
+        b.firstLine = page * perPage;
+        auto out = layoutHudBlock(b, 1000, perPage + 1);
+        ASSERT_GE(out.size(), 2u);
+        EXPECT_EQ(
+            out.back().text.rfind(
+                "PgUp/PgDn: page " + std::to_string(page + 1) + " of " + std::to_string(pages), 0),
+            0u)
+            << out.back().text;
+        for (std::size_t k = 0; k + 1 < out.size(); ++k) ++seen[std::stoul(out[k].text.substr(5))];
+        b.firstLine = page * perPage + 3;  // inside the page: the same page
+        EXPECT_EQ(layoutHudBlock(b, 1000, perPage + 1).front().text, out.front().text);
+    }
+    for (std::size_t k = 0; k < seen.size(); ++k) EXPECT_EQ(seen[k], 1) << "line " << k;
+}
+
 TEST(HudText, ScaleFollowsTheSmallerSide) {
     EXPECT_FLOAT_EQ(hudScale(320, 240), 1.2f);
     EXPECT_FLOAT_EQ(hudScale(1920, 1080), 5.4f);
