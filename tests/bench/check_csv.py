@@ -3,9 +3,11 @@
 listed columns numeric on every row ("na" marks a figure that does not apply; it is refused in
 the columns named here). With --na-below X, "na" is allowed in them on rows whose `value` is
 below X: a sweep point where a figure measured nothing (the elevation sweep's lowest lights show
-no measurable shadow) is undefined, not 0.
+no measurable shadow) is undefined, not 0. With --where COLUMN=VALUE (repeatable) only the rows
+holding that value are checked and counted: `bench --instructions` counts the 640x480 rows only,
+so its instruction columns are checked on those (width=640 --where height=480).
 
-usage: check_csv.py FILE MIN_ROWS [--na-below X] COLUMN [COLUMN ...]"""
+usage: check_csv.py FILE MIN_ROWS [--where COLUMN=VALUE ...] [--na-below X] COLUMN [COLUMN ...]"""
 import csv
 import math
 import sys
@@ -13,11 +15,16 @@ import sys
 
 def main():
     path, min_rows, numeric = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
+    where = []
+    while numeric[:1] == ["--where"]:
+        column, _, value = numeric[1].partition("=")
+        where.append((column, value))
+        numeric = numeric[2:]
     na_below = None
     if numeric[:1] == ["--na-below"]:
         na_below, numeric = float(numeric[1]), numeric[2:]
     with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+        rows = [r for r in csv.DictReader(f) if all(r.get(c) == v for c, v in where)]
     problems = []
     if len(rows) < min_rows:
         problems.append(f"{len(rows)} rows, expected at least {min_rows}")
