@@ -117,6 +117,7 @@ std::string fileOf(const GlslSource& src, int source) {
 // The #version a stage file declares (110 when none, as GLSL says), its profile word and the
 // line it is on. Comments and blank lines may come before it.
 struct Declared {
+    bool bom = false;  // the file starts with a UTF-8 byte order mark, which no GLSL compiler reads
     bool declared = false;
     int version = 110;
     std::string profile;
@@ -127,6 +128,10 @@ Declared declaredVersion(const std::string& text) {
     Declared d;
     std::size_t i = 0, n = text.size();
     int line = 1;
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) {  // what a Windows editor saves first
+        d.bom = true;
+        i = 3;
+    }
     while (i < n) {
         char c = text[i];
         if (c == '\n') {
@@ -162,6 +167,9 @@ Declared declaredVersion(const std::string& text) {
 // "" when `d` is one of them, else the error line.
 std::string treeVersionError(GlslTree tree, const GlslSource& src, const Declared& d) {
     bool core = tree == GlslTree::Core;
+    if (d.bom)  // named as itself: otherwise it reads as a file without #version
+        return fileOf(src, 0) + ":1: error: starts with a UTF-8 byte order mark (EF BB BF)" +
+               (d.declared ? " before #version" : "") + ": save the file without it";
     bool ok = core ? (d.version == 140 || d.version == 150 || d.version == 330) &&
                          (d.profile.empty() || d.profile == "core")
                    : d.version == 110 || d.version == 120;

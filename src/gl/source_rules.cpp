@@ -36,6 +36,11 @@ bool isComparison(const std::string& head) {
     return startsWith(head, "Compare ") || head == "Equal" || head == "NotEqual" || head == "step";
 }
 
+// dFdx, dFdy and fwidth (glslang prints dFdx as dPdx), in their fine and coarse forms too.
+bool isDerivative(const std::string& head) {
+    return startsWith(head, "dPdx") || startsWith(head, "dPdy") || startsWith(head, "fwidth");
+}
+
 bool isAssignment(const std::string& head) {
     return head == "move second child to first child" ||
            head.find("second child into first child") != std::string::npos;
@@ -231,6 +236,7 @@ class StageFlow {
             return {};
         }
         if (fragDepth(i)) return {"gl_FragCoord.z"};
+        const bool derivative = isDerivative(head);
         std::vector<Sources> operands;
         Sources all;
         for (int c : n.children) {
@@ -242,6 +248,7 @@ class StageFlow {
         }
         if (recording_ && isComparison(head) && operands.size() == 2)
             comparisons_.push_back({n.source, n.line, head, operands[0], operands[1]});
+        if (derivative) all.insert(kScreenDerivative);
         return all;
     }
 

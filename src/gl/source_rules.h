@@ -15,6 +15,11 @@
 namespace sl {
 
 // Inputs that stand for one thing, under the names a shader may read it by.
+// The input every screen-space derivative (dFdx, dFdy, fwidth) carries besides its argument's:
+// the surface's slope on screen, of which `normalize(cross(dFdx(p), dFdy(p)))` is the normal. Not
+// an identifier, so no shader's own name is taken for it.
+inline constexpr const char* kScreenDerivative = "dFdx()";
+
 struct NameGroup {
     std::string label;               // "the normal"
     std::vector<std::string> names;  // "normal", "gl_Normal"

@@ -298,16 +298,17 @@ Submission takeSubmission(const std::string& folder, const std::string& privateD
     int current = ::dup(top.fd);
     for (int level = 0; level < kMaxWrappers; ++level) {
         std::vector<std::string> names = listFolder(current, entries, printableName(s.folder));
-        if (names.size() != 1 || topNames.count(lower(names[0])) ||
-            lower(names[0]) == "shaders_core" || lower(names[0]) == "shaders_legacy")
-            break;
+        if (names.size() != 1 || topNames.count(lower(names[0]))) break;
         int inner =
             ::openat(current, names[0].c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
         if (inner < 0) break;  // a lone file or link: read as it is
         ::close(current);
         current = inner;
-        s.notes.push_back("the submission is one folder, `" + printableName(names[0]) +
-                          "/`: graded what is inside it");
+        // A lone copy of a shipped tree's folder is a wrapper too: it holds the stage folders.
+        const bool tree = lower(names[0]) == "shaders_core" || lower(names[0]) == "shaders_legacy";
+        s.notes.push_back("the submission is one folder, `" + printableName(names[0]) + "/`" +
+                          (tree ? " (a copy of the shipped shader tree)" : "") +
+                          ": graded what is inside it");
         s.folder = joinRel(s.folder, names[0]);
     }
     Fd reading(current);

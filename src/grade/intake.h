@@ -1,8 +1,8 @@
 // Intake: what a student handed in, resolved into the overlay it replaces and copied into a
 // private folder before anything is compiled (GUIDE section 7). A lone wrapper folder (as a zip
-// unpacks: `jdoe_lab4/margin/lit.frag`) is descended into; editor and archive junk is left out;
-// files that nearly match a shipped one (case, `.fs`, at the top, a copied `shaders_core/` path)
-// are named in a note and not used. Only regular files with one name are copied (no links, no
+// unpacks: `jdoe_lab4/margin/lit.frag`, a lone copy of `shaders_core/`) is descended into;
+// editor and archive junk is left out; files that nearly match a shipped one (case, `.fs`, at
+// the top, a copied `shaders_core/` path beside other entries) are named in a note and not used. Only regular files with one name are copied (no links, no
 // hard links), within the loader's size limit and a count, each opened once without following
 // links: the snapshot is what gets graded, so a student who edits or swaps files meanwhile
 // changes nothing.

@@ -52,7 +52,7 @@ StageInfo marginStage() {
         gamingRule(),
         SourceRule::comparisonDependsOn(
             "lit", "shadowMap",
-            {{"the normal", {"normal", "gl_Normal"}},
+            {{"the normal", {"normal", "gl_Normal", kScreenDerivative}},
              {"the light direction", {"lightPosition", "gl_LightSource"}}},
             "the slope-scaled margin (margin-kind=slope) must grow with the angle between the "
             "normal and the light direction")};

@@ -220,6 +220,30 @@ TEST(GlslStandard, VersionBeyondTheTreesContextIsRefused) {
         << e;
 }
 
+// A UTF-8 byte order mark before #version is named as itself in both trees, not read as a file
+// without #version.
+TEST(GlslStandard, ByteOrderMarkIsNamed) {
+    const std::string bom = "\xEF\xBB\xBF";
+    Overlay legacy;
+    legacy.file("phong/lit.vert", bom + kLegacyVert)
+        .file("phong/lit.frag", legacyFrag("    gl_FragColor = vec4(1.0);\n"));
+    Overlay core;
+    core.file("phong/lit.frag",
+              bom + "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n");
+    const std::pair<GlslTree, const Overlay*> cases[] = {{GlslTree::Legacy, &legacy},
+                                                         {GlslTree::Core, &core}};
+    for (const auto& [tree, o] : cases) {
+        std::string e = refusal(tree, *o, "phong", "lit");
+        const std::string file =
+            o->dir() + (tree == GlslTree::Core ? "/phong/lit.frag" : "/phong/lit.vert");
+        EXPECT_NE(e.find(file + ":1: error: starts with a UTF-8 byte order mark (EF BB BF) before "
+                                "#version: save the file without it"),
+                  std::string::npos)
+            << e;
+        EXPECT_EQ(e.find("no #version"), std::string::npos) << e;
+    }
+}
+
 // A syntax error reads as the README shows it: `file:line: error: message`, without glslang's
 // empty token field ("'' :  syntax error") and with the token the student typed, not the
 // grammar's name for it ("unexpected SEMICOLON").

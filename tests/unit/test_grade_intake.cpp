@@ -142,9 +142,32 @@ TEST(Intake, NothingReplacedIsOneLineNamingTheNearMiss) {
     Folder readme;
     readme.put("README.md");
     EXPECT_NE(intakeError(readme).find("no file replaces"), std::string::npos);
-    Folder copied;
+    Folder copied;  // a tree path beside something else: not a wrapper, a near miss
     copied.put("shaders_legacy/margin/lit.frag");
+    copied.put("README.md");
     EXPECT_NE(intakeError(copied).find("did you mean `margin/lit.frag`?"), std::string::npos);
+}
+
+// A hand-in that is a copy of the whole shipped tree (`lab4-lee/shaders_core/margin/...`) is
+// graded from inside it, not MISSING: a lone tree folder is a wrapper like any other.
+TEST(Intake, LoneShippedTreeFolderIsAWrapper) {
+    for (const char* tree : {"shaders_core", "shaders_legacy"}) {
+        Folder f;
+        f.put(std::string("lab4-lee/") + tree + "/margin/lit.frag");
+        f.put(std::string("lab4-lee/") + tree + "/margin/lit.vert");
+        f.put(std::string("lab4-lee/") + tree + "/depth/lit.frag");
+        Submission s = take(f, {"margin", "depth"});
+        EXPECT_EQ(stageFiles(s, "margin", kShipped),
+                  (std::vector<std::string>{"margin/lit.frag", "margin/lit.vert"}))
+            << tree;
+        EXPECT_EQ(stageFiles(s, "depth", kShipped), (std::vector<std::string>{"depth/lit.frag"}))
+            << tree;
+        EXPECT_TRUE(hasNote(s, "one folder, `lab4-lee/`")) << tree;
+        EXPECT_TRUE(hasNote(
+            s, std::string("one folder, `") + tree + "/` (a copy of the shipped shader tree)"))
+            << tree;
+        EXPECT_EQ(s.folder, f.path() + "/lab4-lee/" + tree);
+    }
 }
 
 TEST(Intake, LinksAndSpecialFilesAreNotFollowed) {

@@ -121,6 +121,26 @@ TEST(SourceRules, SlopeMarginUnderOtherNamesIsNoFinding) {
         << found[0];
 }
 
+// A normal built from screen-space derivatives of the position is a normal: a slope margin made
+// from it is no finding, in both trees. A derivative of the position's height (a slope on screen)
+// is no normal-free margin either: one from a derivative alone misses only the light direction.
+TEST(SourceRules, DerivativeNormalIsANormal) {
+    for (GlslTree tree : {GlslTree::Core, GlslTree::Legacy}) {
+        Overlay o(tree, "margin");
+        o.edit("margin/lit.frag", "+ marginFor(N, L)",
+               "+ marginFor(normalize(cross(dFdx(worldPosition), dFdy(worldPosition))), L)");
+        std::vector<std::string> found = findings(tree, o.dir(), "margin", "lit");
+        EXPECT_TRUE(found.empty()) << treeName(tree) << ":\n" << joined(found);
+        o.edit("margin/lit.frag",
+               "+ marginFor(normalize(cross(dFdx(worldPosition), dFdy(worldPosition))), L)",
+               "+ 0.004 * fwidth(worldPosition.y)");
+        found = findings(tree, o.dir(), "margin", "lit");
+        ASSERT_EQ(found.size(), 1u) << joined(found);
+        EXPECT_NE(found[0].find("does not depend on the light direction;"), std::string::npos)
+            << found[0];
+    }
+}
+
 TEST(SourceRules, CameraRecognisingShaderIsFound) {
     // From the student corpus: recognises the graded cameras by eyePosition.
     std::string overlay =
