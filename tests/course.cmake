@@ -58,3 +58,7 @@ set_tests_properties(course_release_core course_release_legacy course_autograder
 add_test(NAME course_class_hostile
          COMMAND python3 ${SL_COURSE_PY}/test_class_hostile.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/class-hostile)
 set_tests_properties(course_class_hostile PROPERTIES LABELS course TIMEOUT 1200)
+# A link planted at any name grade writes under --out is refused; nothing outside changes (issue 38).
+add_test(NAME course_out_links
+         COMMAND python3 ${SL_COURSE_PY}/test_out_links.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/out-links)
+set_tests_properties(course_out_links PROPERTIES LABELS course TIMEOUT 300)

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -96,6 +97,39 @@ std::string skippedList(const ClassListing& listing) {
     return list;
 }
 
+// grade's own names directly under --out and inside its own folders: a symbolic link at any of
+// them would have every log, page and record written (or a job's log truncated) wherever it
+// points, so one refuses the run before anything is written (exit 2). Nothing is followed.
+void refuseLinksInOut(const std::string& out) {
+    auto refuse = [](const std::string& path) {
+        throw UsageError("--out: " + printableName(path) +
+                         " is a symbolic link: grade writes nothing through a link (remove it)");
+    };
+    struct stat st;
+    if (::stat(out.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+        return;  // --out itself may be a link
+    for (const char* name : {".grade.lock", "solution_check.txt", "grades.csv",
+                             "gradebook-canvas.csv", "gradebook-moodle.csv", "class.html"})
+        if (::lstat((out + "/" + name).c_str(), &st) == 0 && S_ISLNK(st.st_mode))
+            refuse(out + "/" + name);
+    for (const char* name : {"students", "feedback", "work", "logs"}) {
+        const std::string folder = out + "/" + name;
+        if (::lstat(folder.c_str(), &st) != 0) continue;
+        if (S_ISLNK(st.st_mode)) refuse(folder);
+        if (!S_ISDIR(st.st_mode))
+            throw UsageError("--out: " + printableName(folder) + " is not a folder");
+        DIR* dir = ::opendir(folder.c_str());
+        if (!dir) throw UsageError("--out: cannot list " + printableName(folder));
+        std::string link;
+        while (const dirent* e = ::readdir(dir)) {
+            const std::string path = folder + "/" + e->d_name;
+            if (link.empty() && ::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) link = path;
+        }
+        ::closedir(dir);
+        if (!link.empty()) refuse(link);
+    }
+}
+
 // One grade run per --out at a time: an flock held by the run's own process until it ends (its
 // jobs let go of their copy, so a killed run frees --out at once), the holder's pid written in
 // the lock file for the refusal to name.
@@ -151,7 +185,8 @@ std::string solutionCheckKey(const std::string& assignmentHash, const SolutionTr
 
 bool solutionCheckPassed(const std::string& out, const std::string& key) {
     std::string text;
-    return readRegularFile(out + "/solution_check.txt", 4096, text).empty() && text == key + "\n";
+    return readRegularFile(out + "/solution_check.txt", 4096, text, true).empty() &&
+           text == key + "\n";
 }
 
 // The roster's students with no hand-in get a record and a page ("no hand-in", every stage
@@ -187,6 +222,7 @@ int runClassGrade(const ClassGradeArgs& args) {
             "grade: " + printableName(args.submissions) +
             " is not a folder (give the folder holding one folder or .zip per student)");
     refuseOverlap(args.submissions, args.out);
+    refuseLinksInOut(args.out);
     const ClassListing listing = listClass(args.submissions);
     if (listing.handIns.empty())
         throw UsageError(
@@ -212,11 +248,16 @@ int runClassGrade(const ClassGradeArgs& args) {
     }
     std::error_code mkdirError;
     fs::create_directories(args.out, mkdirError);
+    refuseLinksInOut(args.out);  // again: the solution check took a while
     OutLock lock(args.out);
     for (const char* sub : {"/students", "/feedback", "/work", "/logs"}) {
-        std::error_code ec;
-        fs::create_directories(args.out + sub, ec);
-        if (ec) throw UsageError("--out: cannot create " + printableName(args.out + sub));
+        // mkdir, never through a link: one planted since the check above is refused here.
+        struct stat made;
+        if (::mkdir((args.out + sub).c_str(), 0755) != 0 && errno != EEXIST)
+            throw UsageError("--out: cannot create " + printableName(args.out + sub));
+        if (::lstat((args.out + sub).c_str(), &made) != 0 || !S_ISDIR(made.st_mode))
+            throw UsageError("--out: " + printableName(args.out + sub) +
+                             " is not a folder (a symbolic link is refused: remove it)");
     }
     if (!checked) {
         std::string line = checkKey + "\n";
@@ -318,7 +359,10 @@ int runClassGrade(const ClassGradeArgs& args) {
             lock.closeInJob();
             shareCores(coresPerJob);
             std::string log = args.out + "/logs/job-" + std::to_string(j) + ".log";
-            int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+            // O_NOFOLLOW: a link planted at the log's name is never truncated through.
+            int fd =
+                ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
+            if (fd < 0) ::_exit(3);  // its students get no record: named, not graded, exit 3
             if (fd >= 0) {
                 ::dup2(fd, 1);
                 ::dup2(fd, 2);
