@@ -62,3 +62,7 @@ set_tests_properties(course_class_hostile PROPERTIES LABELS course TIMEOUT 1200)
 add_test(NAME course_out_links
          COMMAND python3 ${SL_COURSE_PY}/test_out_links.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/out-links)
 set_tests_properties(course_out_links PROPERTIES LABELS course TIMEOUT 300)
+# A worker killed from outside is NOT GRADED (exit 3), and the rerun grades it (issue 38).
+add_test(NAME course_worker_killed
+         COMMAND python3 ${SL_COURSE_PY}/test_worker_killed.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/worker-killed)
+set_tests_properties(course_worker_killed PROPERTIES LABELS course TIMEOUT 600)
