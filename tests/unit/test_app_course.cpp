@@ -191,5 +191,53 @@ TEST(ClassProgress, JobFilesReadOneByOneBadOnesCountNothing) {
     EXPECT_EQ(jobs[3].total, 0u);
 }
 
+// Markers by one tokenizer (issue 38): any run of spaces or tabs, Unicode spaces, invisible
+// characters and dashes between the words is a look-alike refused naming file and line, so no
+// release ships the region's solution as ordinary code.
+TEST(SolutionMarkers, UnicodeAndSpacingLookAlikesRefuse) {
+    std::vector<std::string> between = {
+        "    ",         "\t",           " \t ",         "\xC2\xA0",     "\xE3\x80\x80",
+        "\xEF\xBB\xBF", "\xE2\x80\x8B", "\xE2\x80\x8C", "\xE2\x80\x8D", " \xE2\x80\x8B"};
+    for (unsigned code = 0x2000; code <= 0x200A; ++code)  // EN QUAD ... HAIR SPACE
+        between.push_back(std::string{'\xE2', '\x80', char(0x80 | (code & 0x3f))});
+    for (unsigned code = 0x2010; code <= 0x2015; ++code)  // HYPHEN ... HORIZONTAL BAR
+        between.push_back(std::string{'\xE2', '\x80', char(0x80 | (code & 0x3f))});
+    between.push_back("\xE2\x88\x92");  // MINUS SIGN
+    std::vector<std::string> lines;
+    for (const std::string& b : between) {
+        lines.push_back("// BEGIN" + b + "SOLUTION");
+        lines.push_back("//" + b + "END" + b + "SOLUTION");
+    }
+    // Invisible characters around or inside the exact form; a Unicode indentation.
+    for (const char* line : {"// BEGIN SOLUTION\xE2\x80\x8B", "\xEF\xBB\xBF// BEGIN SOLUTION",
+                             "\xC2\xA0// BEGIN SOLUTION", "// BEGIN SOLU\xE2\x80\x8BTION",
+                             "// \xE2\x80\x8B"
+                             "BEGIN SOLUTION",
+                             "//\xC2\xA0STUB: x;"})
+        lines.push_back(line);
+    for (const std::string& line : lines) {
+        std::string text = "a\n  " + line + "\n  secret();\n  // END SOLUTION\n";
+        try {
+            std::string shipped = stripSolutions(text, "f.frag");
+            ADD_FAILURE() << "accepted (would ship 'secret();'): " << line;
+        } catch (const AssignmentError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("f.frag: line 2: '", 0), 0u) << e.what();
+            EXPECT_NE(std::string(e.what()).find("looks like a solution marker"), std::string::npos)
+                << e.what();
+            EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+        }
+    }
+}
+
+// A line of a million spaces (or a million dashes before a word) is an ordinary line, read in
+// one pass: it once overflowed the stack of a backtracking regular expression (SIGSEGV).
+TEST(SolutionMarkers, AMillionSpacesIsAnOrdinaryLine) {
+    const std::string spaces(1000000, ' ');
+    const std::string text = "a\n" + spaces + "\n" + std::string(1000000, '-') + "x\n";
+    EXPECT_EQ(stripSolutions(text, "f"), text);
+    EXPECT_THROW(stripSolutions("//" + spaces + "BEGIN" + spaces + "SOLUTION\n", "f"),
+                 AssignmentError);
+}
+
 }  // namespace
 }  // namespace sl
