@@ -66,6 +66,10 @@ set_tests_properties(course_out_links PROPERTIES LABELS course TIMEOUT 300)
 add_test(NAME course_worker_killed
          COMMAND python3 ${SL_COURSE_PY}/test_worker_killed.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/worker-killed)
 set_tests_properties(course_worker_killed PROPERTIES LABELS course TIMEOUT 600)
+# A record edited by hand in OUT/students/ is graded again, with a line (issue 38).
+add_test(NAME course_record_hash
+         COMMAND python3 ${SL_COURSE_PY}/test_record_hash.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/record-hash)
+set_tests_properties(course_record_hash PROPERTIES LABELS course TIMEOUT 900)
 # Times, rosters and Gradescope's metadata that once crashed or passed unchecked (issue 38).
 add_test(NAME course_hostile_text
          COMMAND python3 ${SL_COURSE_PY}/test_hostile_text.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/hostile-text)

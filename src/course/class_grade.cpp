@@ -49,13 +49,31 @@ void writeOrThrow(const std::string& path, const std::string& text) {
     if (!err.empty()) throw UsageError("grade: " + err);
 }
 
-// The record kept at `path` for the student named exactly `student`, if it can be read as one.
-std::optional<StudentRecord> keptRecord(const std::string& path, const std::string& student) {
+// A record as kept in OUT/students/: its JSON with "record_hash", the FNV-1a of the rest of it
+// (compact, keys sorted), so a record changed since it was written (a score raised by hand) is
+// told from one grade wrote. A change detector, not a signature: anyone may recompute it.
+std::string sealedRecordText(const StudentRecord& r) {
+    json j = recordJson(r);
+    j["record_hash"] = fnv1aHex(j.dump(-1, ' ', false, json::error_handler_t::replace));
+    return j.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
+// The record kept at `path` for the student named exactly `student`, if it can be read as one
+// and its content hash matches; `changed` (when given) is set when it was edited since.
+std::optional<StudentRecord> keptRecord(const std::string& path, const std::string& student,
+                                        bool* changed = nullptr) {
     std::string text;
     if (!readRegularFile(path, 64u << 20, text, true).empty()) return std::nullopt;
     try {
-        StudentRecord r = recordFromJson(json::parse(text));
+        json j = json::parse(text);
+        const std::string hash = j.value("record_hash", "");
+        j.erase("record_hash");
+        StudentRecord r = recordFromJson(j);
         if (r.student != student) return std::nullopt;  // another name's record: not theirs
+        if (hash != fnv1aHex(j.dump(-1, ' ', false, json::error_handler_t::replace))) {
+            if (changed) *changed = true;  // edited by hand, or written before records had one
+            return std::nullopt;
+        }
         return r;
     } catch (const std::exception&) {  // malformed, an older version, a lesson since renamed
         return std::nullopt;
@@ -287,8 +305,10 @@ int runClassGrade(const ClassGradeArgs& args) {
         hashes[k] = handInHash(entries[k]);
         bool asked = args.regradeAll || std::find(args.regrade.begin(), args.regrade.end(),
                                                   names[k]) != args.regrade.end();
-        std::string why =
-            whyGrade(keptRecord(recordPath(k), names[k]), hashes[k], assignmentHash, asked);
+        bool edited = false;
+        std::optional<StudentRecord> kept = keptRecord(recordPath(k), names[k], &edited);
+        std::string why = whyGrade(kept, hashes[k], assignmentHash, asked);
+        if (edited && !asked) why = "its record does not match its content hash (edited?)";
         if (why.empty()) continue;
         todo.push_back(k);
         ++reasons[why];
@@ -385,10 +405,7 @@ int runClassGrade(const ClassGradeArgs& args) {
                     [&](std::size_t i, const StageRecord& st) { progress.stageDone(plans[i], st); },
                     [&](std::size_t i, StudentRecord r) {
                         r.assignmentHash = assignmentHash;
-                        writeOrThrow(
-                            recordPath(index[i]),
-                            recordJson(r).dump(1, ' ', false, json::error_handler_t::replace) +
-                                "\n");
+                        writeOrThrow(recordPath(index[i]), sealedRecordText(r));
                     });
             } catch (const std::exception& e) {
                 std::cerr << "shadowlab: grade job " << j << ": " << e.what() << "\n";
@@ -464,8 +481,7 @@ int runClassGrade(const ClassGradeArgs& args) {
         }
         if (!r->graded()) ++notGraded;
         if (annotateRecord(annotations, a, names[k], entries[k], *r))
-            writeOrThrow(recordPath(k),
-                         recordJson(*r).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
+            writeOrThrow(recordPath(k), sealedRecordText(*r));
         records.push_back(*r);
         pages.push_back("feedback/" + files[k] + ".html");
         writeOrThrow(args.out + "/" + pages.back(), studentPage(*r));
