@@ -209,7 +209,8 @@ std::string studentPage(const StudentRecord& record) {
                           : std::string("not graded yet (the grading machine could not run "
                                         "every check; it will be graded again)"))
       << "</p>\n";
-    if (record.late) h << lateLine(*record.late, record);
+    // Nothing is charged on a student not graded: the late policy applies to a score.
+    if (record.late && record.graded()) h << lateLine(*record.late, record);
     for (const Adjustment& a : record.adjustments)
         h << "<p>Adjusted by your teaching staff: " << (a.points >= 0 ? "+" : "")
           << numText(a.points) << " points on " << esc(a.stage) << ": " << esc(a.reason)

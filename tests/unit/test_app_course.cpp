@@ -7,6 +7,7 @@
 #include "course/class_progress.h"
 #include "course/feedback_html.h"
 #include "course/gradebook_exports.h"
+#include "course/html_text.h"
 #include "course/json_lines.h"
 #include "course/release.h"
 
@@ -237,6 +238,35 @@ TEST(SolutionMarkers, AMillionSpacesIsAnOrdinaryLine) {
     EXPECT_EQ(stripSolutions(text, "f"), text);
     EXPECT_THROW(stripSolutions("//" + spaces + "BEGIN" + spaces + "SOLUTION\n", "f"),
                  AssignmentError);
+}
+
+// Roster names with ESC or BEL reach no page raw (issue 38), and a student not graded is charged
+// nothing by the late policy.
+TEST(StudentPage, ControlCharactersAreNotText) {
+    EXPECT_EQ(esc("a\x1b[31mb\x07<"), "a?[31mb?&lt;");
+    StudentRecord r = oneStage("ann", "rgb", Status::Pass, 2, 2);
+    r.score = r.maxScore = 2;
+    r.roster = RosterInfo{"7", "Ann\x1b]0;pwned\x07 Lee", "a@b"};
+    const std::string page = studentPage(r);
+    EXPECT_EQ(page.find('\x1b'), std::string::npos);
+    EXPECT_EQ(page.find('\x07'), std::string::npos);
+    EXPECT_NE(page.find("Ann?]0;pwned? Lee"), std::string::npos);
+}
+
+TEST(StudentPage, NotGradedIsChargedNothing) {
+    StudentRecord r = oneStage("ann", "rgb", Status::NotGraded, 0, 0);
+    LateRecord late;
+    late.days = 2;
+    late.minutes = 2000;
+    late.handedIn = "2026-12-06T10:59:00Z";
+    r.late = late;
+    const std::string page = studentPage(r);
+    EXPECT_NE(page.find("not graded yet"), std::string::npos);
+    EXPECT_EQ(page.find("charged by the late policy"), std::string::npos) << page;
+    StudentRecord graded = oneStage("bob", "rgb", Status::Pass, 2, 2);
+    graded.score = graded.maxScore = 2;
+    graded.late = late;
+    EXPECT_NE(studentPage(graded).find("charged by the late policy"), std::string::npos);
 }
 
 }  // namespace
