@@ -126,8 +126,9 @@ void refuseLinksInOut(const std::string& out) {
     struct stat st;
     if (::stat(out.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
         return;  // --out itself may be a link
-    for (const char* name : {".grade.lock", "solution_check.txt", "grades.csv",
-                             "gradebook-canvas.csv", "gradebook-moodle.csv", "class.html"})
+    for (const char* name :
+         {".grade.lock", "solution_check.txt", "grades.csv", "gradebook-canvas.csv",
+          "gradebook-moodle.csv", "class.html", "adjustments.csv"})
         if (::lstat((out + "/" + name).c_str(), &st) == 0 && S_ISLNK(st.st_mode))
             refuse(out + "/" + name);
     for (const char* name : {"students", "feedback", "work", "logs"}) {

@@ -46,7 +46,7 @@ def snapshot(root):
 before = snapshot(outside)
 # Each name grade writes, and whether its parent folder must exist for the link to be planted.
 names = [".grade.lock", "solution_check.txt", "grades.csv", "gradebook-canvas.csv",
-         "gradebook-moodle.csv", "class.html", "students", "feedback", "work", "logs",
+         "gradebook-moodle.csv", "class.html", "adjustments.csv", "students", "feedback", "work", "logs",
          "logs/job-0.log", "logs/job-0.progress", "students/ann.json", "feedback/ann.html",
          "work/ann"]
 for name in sys.argv[4:] or names:
