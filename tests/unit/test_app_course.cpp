@@ -269,5 +269,25 @@ TEST(StudentPage, NotGradedIsChargedNothing) {
     EXPECT_NE(studentPage(graded).find("charged by the late policy"), std::string::npos);
 }
 
+// A hidden stage's result is not on the student's page (issue 38): neither named nor scored.
+TEST(StudentPage, AHiddenStageIsNotShown) {
+    StudentRecord r = oneStage("ann", "rgb", Status::Pass, 2, 2);
+    StageRecord secret;
+    secret.stage = "margin";
+    secret.tree = "core";
+    secret.visibility = "hidden";
+    secret.status = Status::Fail;
+    secret.maxPoints = 10;
+    secret.message = "0 of 5 checks show the lesson";
+    r.stages.push_back(secret);
+    r.score = 2;
+    r.maxScore = 12;
+    const std::string page = studentPage(r);
+    EXPECT_NE(page.find("rgb/core"), std::string::npos);
+    EXPECT_EQ(page.find("margin/core"), std::string::npos) << page;
+    EXPECT_EQ(page.find("0 of 5 checks"), std::string::npos) << page;
+    EXPECT_NE(page.find("1 more stage is graded but hidden"), std::string::npos) << page;
+}
+
 }  // namespace
 }  // namespace sl
