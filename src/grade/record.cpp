@@ -7,6 +7,7 @@
 #include "grade/bounds.h"
 #include "grade/stage_runs.h"
 #include "io/json_fields.h"
+#include "render/request.h"
 
 namespace sl {
 
@@ -151,10 +152,25 @@ StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
         }
     }
     sumStage(st);
-    // Messages name the student's files as handed in, not by the private snapshot's path.
+    // Messages name the student's files as handed in, not by the private snapshot's path, and
+    // our shipped files by their tree (shaders_core/common/phong.glsl): no grader's folder
+    // reaches a record, a page or a report.
     const std::string snapshot = overlay.empty() ? "" : overlay + "/";
-    st.message = withoutPrefix(st.message, snapshot);
-    for (RowRecord& row : st.rows) row.result.message = withoutPrefix(row.result.message, snapshot);
+    std::vector<std::string> ours;
+    for (GlslTree t : {GlslTree::Core, GlslTree::Legacy}) {
+        const std::string root = shaderTreeRoot(t);
+        ours.push_back(root.substr(0, root.rfind('/') + 1));
+    }
+    auto shown = [&](std::string text) {
+        text = withoutPrefix(std::move(text), snapshot);
+        if (!overlay.empty())  // the folder itself ("allowed: files under DIR and ...")
+            for (std::size_t at; (at = text.find(overlay)) != std::string::npos;)
+                text.replace(at, overlay.size(), "your hand-in");
+        for (const std::string& prefix : ours) text = withoutPrefix(std::move(text), prefix);
+        return text;
+    };
+    st.message = shown(st.message);
+    for (RowRecord& row : st.rows) row.result.message = shown(row.result.message);
     return st;
 }
 
@@ -189,8 +205,8 @@ StudentRecord unreadableRecord(const GradingPlan& plan, const StudentWork& s) {
         StageRecord st = stageOf(p);
         st.missingFiles.clear();
         for (const RowPlan& row : p.rows) {
-            st.rows.push_back(unrenderedRow(
-                row, s.platformFailure ? Status::NotGraded : Status::Error, s.error));
+            st.rows.push_back(
+                unrenderedRow(row, s.platformFailure ? Status::NotGraded : Status::Error, s.error));
             score(st.rows.back(), row);
         }
         st.message = s.error;

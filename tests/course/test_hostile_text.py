@@ -5,7 +5,8 @@
   a --times entry naming no hand-in of the class: a warning line naming it;
   a roster of 100,001 students: "more than 100000 students (the limit)" on the first row past it;
   Gradescope's submission_metadata.json with a 500,000-digit fraction in created_at: a note, no
-  penalty, full points (the platform's file never costs the student), never a crash.
+  penalty, full points (the platform's file never costs the student), never a crash;
+  a student's page and record name the student's files and our tree, never the grader's folders.
 usage: test_hostile_text.py SHADOWLAB REPO WORKDIR"""
 import csv, json, os, shutil, subprocess, sys
 
@@ -14,6 +15,12 @@ shutil.rmtree(work, ignore_errors=True)
 cls, out = work + "/class", work + "/out"
 os.makedirs(cls + "/ann/margin")
 shutil.copy(os.path.join(repo, "shaders_core/margin/lit.frag"), cls + "/ann/margin/lit.frag")
+# eve's shader includes a file outside her folder: her page must name her files and our tree,
+# never the grader's folders (the snapshot under --out, where our shaders are installed).
+os.makedirs(cls + "/eve/margin")
+eve = open(os.path.join(repo, "shaders_core/margin/lit.frag")).read()
+open(cls + "/eve/margin/lit.frag", "w").write(
+    eve.replace("void main", '#include "../../secret.glsl"\nvoid main', 1))
 lab = work + "/lab.json"
 json.dump({"name": "margin only",
            "late": {"deadline": "2026-12-04T23:59:00+01:00", "grace_minutes": 15,
@@ -48,6 +55,12 @@ def write(name, text):
 
 r = grade()  # the solution check and ann, once: the runs below reuse both
 check("the class is graded (exit 0)", r.returncode == 0, r.stderr[-800:])
+page = open(out + "/feedback/eve.html").read()
+record = json.load(open(out + "/students/eve.json"))
+text = page + json.dumps([st["message"] for st in record["stages"]])
+check("eve's include is refused, naming what is allowed without grader paths",
+      "allowed: files under your hand-in and shaders_core" in text and "/snapshot" not in text and
+      os.path.abspath(repo) not in text and out not in text, text[-1500:])
 for label, value, want in (
         ("a 500,000-digit fraction", "2026-12-05T10:00:00." + "5" * 500000 + "+01:00",
          "a field of 500026 bytes; at most 4096 are allowed"),
