@@ -156,17 +156,20 @@ StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
     // our shipped files by their tree (shaders_core/common/phong.glsl): no grader's folder
     // reaches a record, a page or a report.
     const std::string snapshot = overlay.empty() ? "" : overlay + "/";
-    std::vector<std::string> ours;
-    for (GlslTree t : {GlslTree::Core, GlslTree::Legacy}) {
-        const std::string root = shaderTreeRoot(t);
-        ours.push_back(root.substr(0, root.rfind('/') + 1));
-    }
+    auto replaceAll = [](std::string text, const std::string& from, const std::string& to) {
+        for (std::size_t at = 0; !from.empty() && (at = text.find(from, at)) != std::string::npos;
+             at += to.size())
+            text.replace(at, from.size(), to);
+        return text;
+    };
     auto shown = [&](std::string text) {
         text = withoutPrefix(std::move(text), snapshot);
-        if (!overlay.empty())  // the folder itself ("allowed: files under DIR and ...")
-            for (std::size_t at; (at = text.find(overlay)) != std::string::npos;)
-                text.replace(at, overlay.size(), "your hand-in");
-        for (const std::string& prefix : ours) text = withoutPrefix(std::move(text), prefix);
+        // The folder itself ("allowed: files under DIR and ..."), then our trees by their name.
+        if (!overlay.empty()) text = replaceAll(std::move(text), overlay, "your hand-in");
+        for (GlslTree t : {GlslTree::Core, GlslTree::Legacy}) {
+            const std::string root = shaderTreeRoot(t);
+            text = replaceAll(std::move(text), root, root.substr(root.rfind('/') + 1));
+        }
         return text;
     };
     st.message = shown(st.message);
