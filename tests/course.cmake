@@ -58,3 +58,19 @@ set_tests_properties(course_release_core course_release_legacy course_autograder
 add_test(NAME course_class_hostile
          COMMAND python3 ${SL_COURSE_PY}/test_class_hostile.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/class-hostile)
 set_tests_properties(course_class_hostile PROPERTIES LABELS course TIMEOUT 1200)
+# A link planted at any name grade writes under --out is refused; nothing outside changes (issue 38).
+add_test(NAME course_out_links
+         COMMAND python3 ${SL_COURSE_PY}/test_out_links.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/out-links)
+set_tests_properties(course_out_links PROPERTIES LABELS course TIMEOUT 300)
+# A worker killed from outside is NOT GRADED (exit 3), and the rerun grades it (issue 38).
+add_test(NAME course_worker_killed
+         COMMAND python3 ${SL_COURSE_PY}/test_worker_killed.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/worker-killed)
+set_tests_properties(course_worker_killed PROPERTIES LABELS course TIMEOUT 600)
+# A record edited by hand in OUT/students/ is graded again, with a line (issue 38).
+add_test(NAME course_record_hash
+         COMMAND python3 ${SL_COURSE_PY}/test_record_hash.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/record-hash)
+set_tests_properties(course_record_hash PROPERTIES LABELS course TIMEOUT 900)
+# Times, rosters and Gradescope's metadata that once crashed or passed unchecked (issue 38).
+add_test(NAME course_hostile_text
+         COMMAND python3 ${SL_COURSE_PY}/test_hostile_text.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/hostile-text)
+set_tests_properties(course_hostile_text PROPERTIES LABELS course TIMEOUT 900)

@@ -48,6 +48,12 @@ metadata=()
 "$program" check --assignment "$root/source/assignment.json" --shaders "$root/submission" \
     --report "$results" --format gradescope --time-limit 60 "${metadata[@]}"
 status=$?
+if [ "$status" -eq 3 ]; then
+    # NOT GRADED rows: the machine's failure, no score yet (results.json has none). The run
+    # fails, so Gradescope shows no grade rather than a partial one; rerun the autograder.
+    echo "run_autograder: not graded (the grading machine failed, not the submission): rerun" >&2
+    exit 3
+fi
 if [ ! -s "$results" ]; then
     # Never leave Gradescope without a results file: say what happened, 0 points.
     printf '{"score": 0, "output": "The grader could not grade this submission (exit %s). Your instructor has the log.", "visibility": "visible", "tests": []}\n' "$status" > "$results"

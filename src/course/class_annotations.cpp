@@ -1,6 +1,8 @@
 #include "course/class_annotations.h"
 
 #include <cmath>
+#include <iostream>
+#include <set>
 
 #include "course/adjustments.h"
 #include "course/copy_flags.h"
@@ -91,6 +93,20 @@ ClassAnnotations readAnnotations(const ClassGradeArgs& args, const Assignment& a
     ClassAnnotations c;
     c.roster = rosterOf(args);
     c.times = timesOf(args, a);
+    // A time for a name the class does not hold is a typing error or a missing hand-in: said.
+    const std::set<std::string> inClass(names.begin(), names.end());
+    std::vector<std::string> unknown;
+    for (const auto& [name, time] : c.times)
+        if (!inClass.count(name)) unknown.push_back(name);
+    if (!unknown.empty()) {
+        std::cout << "warning: --times: " << unknown.size()
+                  << (unknown.size() == 1 ? " entry names" : " entries name")
+                  << " no hand-in in the class (unused):";
+        for (std::size_t k = 0; k < unknown.size() && k < 10; ++k)
+            std::cout << " " << printableName(unknown[k].substr(0, 64));
+        if (unknown.size() > 10) std::cout << " and " << unknown.size() - 10 << " more";
+        std::cout << "\n";
+    }
     c.adjustments = adjustmentsOf(args, a, names);
     return c;
 }

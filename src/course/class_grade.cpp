@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -48,13 +49,31 @@ void writeOrThrow(const std::string& path, const std::string& text) {
     if (!err.empty()) throw UsageError("grade: " + err);
 }
 
-// The record kept at `path` for the student named exactly `student`, if it can be read as one.
-std::optional<StudentRecord> keptRecord(const std::string& path, const std::string& student) {
+// A record as kept in OUT/students/: its JSON with "record_hash", the FNV-1a of the rest of it
+// (compact, keys sorted), so a record changed since it was written (a score raised by hand) is
+// told from one grade wrote. A change detector, not a signature: anyone may recompute it.
+std::string sealedRecordText(const StudentRecord& r) {
+    json j = recordJson(r);
+    j["record_hash"] = fnv1aHex(j.dump(-1, ' ', false, json::error_handler_t::replace));
+    return j.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
+// The record kept at `path` for the student named exactly `student`, if it can be read as one
+// and its content hash matches; `changed` (when given) is set when it was edited since.
+std::optional<StudentRecord> keptRecord(const std::string& path, const std::string& student,
+                                        bool* changed = nullptr) {
     std::string text;
     if (!readRegularFile(path, 64u << 20, text, true).empty()) return std::nullopt;
     try {
-        StudentRecord r = recordFromJson(json::parse(text));
+        json j = json::parse(text);
+        const std::string hash = j.value("record_hash", "");
+        j.erase("record_hash");
+        StudentRecord r = recordFromJson(j);
         if (r.student != student) return std::nullopt;  // another name's record: not theirs
+        if (hash != fnv1aHex(j.dump(-1, ' ', false, json::error_handler_t::replace))) {
+            if (changed) *changed = true;  // edited by hand, or written before records had one
+            return std::nullopt;
+        }
         return r;
     } catch (const std::exception&) {  // malformed, an older version, a lesson since renamed
         return std::nullopt;
@@ -94,6 +113,40 @@ std::string skippedList(const ClassListing& listing) {
     std::string list;
     for (const std::string& s : listing.skipped) list += (list.empty() ? "" : ", ") + s;
     return list;
+}
+
+// grade's own names directly under --out and inside its own folders: a symbolic link at any of
+// them would have every log, page and record written (or a job's log truncated) wherever it
+// points, so one refuses the run before anything is written (exit 2). Nothing is followed.
+void refuseLinksInOut(const std::string& out) {
+    auto refuse = [](const std::string& path) {
+        throw UsageError("--out: " + printableName(path) +
+                         " is a symbolic link: grade writes nothing through a link (remove it)");
+    };
+    struct stat st;
+    if (::stat(out.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+        return;  // --out itself may be a link
+    for (const char* name :
+         {".grade.lock", "solution_check.txt", "grades.csv", "gradebook-canvas.csv",
+          "gradebook-moodle.csv", "class.html", "adjustments.csv"})
+        if (::lstat((out + "/" + name).c_str(), &st) == 0 && S_ISLNK(st.st_mode))
+            refuse(out + "/" + name);
+    for (const char* name : {"students", "feedback", "work", "logs"}) {
+        const std::string folder = out + "/" + name;
+        if (::lstat(folder.c_str(), &st) != 0) continue;
+        if (S_ISLNK(st.st_mode)) refuse(folder);
+        if (!S_ISDIR(st.st_mode))
+            throw UsageError("--out: " + printableName(folder) + " is not a folder");
+        DIR* dir = ::opendir(folder.c_str());
+        if (!dir) throw UsageError("--out: cannot list " + printableName(folder));
+        std::string link;
+        while (const dirent* e = ::readdir(dir)) {
+            const std::string path = folder + "/" + e->d_name;
+            if (link.empty() && ::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) link = path;
+        }
+        ::closedir(dir);
+        if (!link.empty()) refuse(link);
+    }
 }
 
 // One grade run per --out at a time: an flock held by the run's own process until it ends (its
@@ -151,7 +204,8 @@ std::string solutionCheckKey(const std::string& assignmentHash, const SolutionTr
 
 bool solutionCheckPassed(const std::string& out, const std::string& key) {
     std::string text;
-    return readRegularFile(out + "/solution_check.txt", 4096, text).empty() && text == key + "\n";
+    return readRegularFile(out + "/solution_check.txt", 4096, text, true).empty() &&
+           text == key + "\n";
 }
 
 // The roster's students with no hand-in get a record and a page ("no hand-in", every stage
@@ -187,6 +241,7 @@ int runClassGrade(const ClassGradeArgs& args) {
             "grade: " + printableName(args.submissions) +
             " is not a folder (give the folder holding one folder or .zip per student)");
     refuseOverlap(args.submissions, args.out);
+    refuseLinksInOut(args.out);
     const ClassListing listing = listClass(args.submissions);
     if (listing.handIns.empty())
         throw UsageError(
@@ -212,11 +267,16 @@ int runClassGrade(const ClassGradeArgs& args) {
     }
     std::error_code mkdirError;
     fs::create_directories(args.out, mkdirError);
+    refuseLinksInOut(args.out);  // again: the solution check took a while
     OutLock lock(args.out);
     for (const char* sub : {"/students", "/feedback", "/work", "/logs"}) {
-        std::error_code ec;
-        fs::create_directories(args.out + sub, ec);
-        if (ec) throw UsageError("--out: cannot create " + printableName(args.out + sub));
+        // mkdir, never through a link: one planted since the check above is refused here.
+        struct stat made;
+        if (::mkdir((args.out + sub).c_str(), 0755) != 0 && errno != EEXIST)
+            throw UsageError("--out: cannot create " + printableName(args.out + sub));
+        if (::lstat((args.out + sub).c_str(), &made) != 0 || !S_ISDIR(made.st_mode))
+            throw UsageError("--out: " + printableName(args.out + sub) +
+                             " is not a folder (a symbolic link is refused: remove it)");
     }
     if (!checked) {
         std::string line = checkKey + "\n";
@@ -246,8 +306,10 @@ int runClassGrade(const ClassGradeArgs& args) {
         hashes[k] = handInHash(entries[k]);
         bool asked = args.regradeAll || std::find(args.regrade.begin(), args.regrade.end(),
                                                   names[k]) != args.regrade.end();
-        std::string why =
-            whyGrade(keptRecord(recordPath(k), names[k]), hashes[k], assignmentHash, asked);
+        bool edited = false;
+        std::optional<StudentRecord> kept = keptRecord(recordPath(k), names[k], &edited);
+        std::string why = whyGrade(kept, hashes[k], assignmentHash, asked);
+        if (edited && !asked) why = "its record does not match its content hash (edited?)";
         if (why.empty()) continue;
         todo.push_back(k);
         ++reasons[why];
@@ -318,7 +380,10 @@ int runClassGrade(const ClassGradeArgs& args) {
             lock.closeInJob();
             shareCores(coresPerJob);
             std::string log = args.out + "/logs/job-" + std::to_string(j) + ".log";
-            int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+            // O_NOFOLLOW: a link planted at the log's name is never truncated through.
+            int fd =
+                ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
+            if (fd < 0) ::_exit(3);  // its students get no record: named, not graded, exit 3
             if (fd >= 0) {
                 ::dup2(fd, 1);
                 ::dup2(fd, 2);
@@ -341,10 +406,7 @@ int runClassGrade(const ClassGradeArgs& args) {
                     [&](std::size_t i, const StageRecord& st) { progress.stageDone(plans[i], st); },
                     [&](std::size_t i, StudentRecord r) {
                         r.assignmentHash = assignmentHash;
-                        writeOrThrow(
-                            recordPath(index[i]),
-                            recordJson(r).dump(1, ' ', false, json::error_handler_t::replace) +
-                                "\n");
+                        writeOrThrow(recordPath(index[i]), sealedRecordText(r));
                     });
             } catch (const std::exception& e) {
                 std::cerr << "shadowlab: grade job " << j << ": " << e.what() << "\n";
@@ -420,8 +482,7 @@ int runClassGrade(const ClassGradeArgs& args) {
         }
         if (!r->graded()) ++notGraded;
         if (annotateRecord(annotations, a, names[k], entries[k], *r))
-            writeOrThrow(recordPath(k),
-                         recordJson(*r).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
+            writeOrThrow(recordPath(k), sealedRecordText(*r));
         records.push_back(*r);
         pages.push_back("feedback/" + files[k] + ".html");
         writeOrThrow(args.out + "/" + pages.back(), studentPage(*r));

@@ -14,7 +14,7 @@ JobProgress::JobProgress(const std::string& path, const std::vector<GradingPlan>
     for (const GradingPlan& plan : plans)
         for (const StagePlan& st : plan.stages)
             if (st.rendered()) total_ += st.rows.size();
-    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
     write();
 }
 

@@ -14,7 +14,7 @@ void csvFail(const std::string& origin, int line, const std::string& what) {
 namespace {
 
 std::vector<CsvRecord> records(const std::string& text, const std::string& origin,
-                               std::size_t maxRecords) {
+                               std::size_t maxRecords, const std::string& rowsAre) {
     auto fail = [&](int line, const std::string& what) { csvFail(origin, line, what); };
     std::vector<CsvRecord> out;
     int line = 1;
@@ -56,6 +56,9 @@ std::vector<CsvRecord> records(const std::string& text, const std::string& origi
                     field += text[i++];
                 }
             }
+            if (field.size() > kCsvMaxFieldBytes)  // no name, time or reason is that long
+                fail(rec.line, "a field of " + std::to_string(field.size()) + " bytes; at most " +
+                                   std::to_string(kCsvMaxFieldBytes) + " are allowed");
             rec.fields.push_back(field);
             if (i < text.size() && text[i] == ',') {
                 ++i;
@@ -73,8 +76,9 @@ std::vector<CsvRecord> records(const std::string& text, const std::string& origi
             break;
         }
         out.push_back(std::move(rec));
-        if (out.size() > maxRecords)
-            fail(line, "more than " + std::to_string(maxRecords) + " rows");
+        if (out.size() > maxRecords)  // the header and maxRecords - 1 rows
+            fail(out.back().line,
+                 "more than " + std::to_string(maxRecords - 1) + " " + rowsAre + " (the limit)");
     }
     return out;
 }
@@ -82,7 +86,7 @@ std::vector<CsvRecord> records(const std::string& text, const std::string& origi
 }  // namespace
 
 std::vector<CsvRecord> parseCsv(const std::string& input, const std::string& origin,
-                                std::size_t maxRecords) {
+                                std::size_t maxRecords, const std::string& rowsAre) {
     std::string text = input;
     if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a byte order mark
     const std::string good = validUtf8(text);
@@ -92,7 +96,7 @@ std::vector<CsvRecord> parseCsv(const std::string& input, const std::string& ori
         csvFail(origin, int(std::count(text.begin(), text.begin() + long(at), '\n')) + 1,
                 "not UTF-8 (save the file as UTF-8)");
     }
-    return records(text, origin, maxRecords);
+    return records(text, origin, maxRecords, rowsAre);
 }
 
 std::vector<CsvRecord> loadCsv(const std::string& path, const std::string& option,

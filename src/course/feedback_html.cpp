@@ -209,7 +209,8 @@ std::string studentPage(const StudentRecord& record) {
                           : std::string("not graded yet (the grading machine could not run "
                                         "every check; it will be graded again)"))
       << "</p>\n";
-    if (record.late) h << lateLine(*record.late, record);
+    // Nothing is charged on a student not graded: the late policy applies to a score.
+    if (record.late && record.graded()) h << lateLine(*record.late, record);
     for (const Adjustment& a : record.adjustments)
         h << "<p>Adjusted by your teaching staff: " << (a.points >= 0 ? "+" : "")
           << numText(a.points) << " points on " << esc(a.stage) << ": " << esc(a.reason)
@@ -219,7 +220,12 @@ std::string studentPage(const StudentRecord& record) {
           << " points.</p>\n";
     if (!record.error.empty()) h << "<p class=\"ERROR\">" << esc(record.error) << "</p>\n";
     for (const std::string& n : record.notes) h << "<p>Note: " << esc(n) << "</p>\n";
+    int hiddenStages = 0;  // graded, but neither named nor shown: the student sees no result
     for (const StageRecord& st : record.stages) {
+        if (st.visibility == "hidden") {
+            ++hiddenStages;
+            continue;
+        }
         std::string id = st.stage + "/" + st.tree;
         std::string status = statusName(st.status);
         h << "<h2 id=\"" << esc(id) << "\">" << esc(id) << ": "
@@ -253,6 +259,9 @@ std::string studentPage(const StudentRecord& record) {
         if (hidden) h << "<p>" << hidden << " more checks of this stage are hidden.</p>\n";
         if (shown && !shown->result.diffFile.empty()) h << picturesOf(shown->result);
     }
+    if (hiddenStages)
+        h << "<p>" << hiddenStages << (hiddenStages == 1 ? " more stage is" : " more stages are")
+          << " graded but hidden.</p>\n";
     h << "</body></html>\n";
     return h.str();
 }

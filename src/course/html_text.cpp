@@ -25,8 +25,10 @@ std::string esc(const std::string& raw) {
             case '\'':
                 out += "&#39;";
                 break;
-            default:
-                out += c;
+            default:  // ESC, BEL and the other controls are no text (HTML has no form for them)
+                out += (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') || c == 0x7f
+                           ? '?'
+                           : c;
         }
     }
     return out;

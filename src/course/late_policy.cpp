@@ -6,34 +6,75 @@
 #include <cmath>
 #include <ctime>
 #include <filesystem>
-#include <regex>
 
 #include "course/csv.h"
 #include "io/files.h"
 
 namespace sl {
 
-std::optional<long long> parseIsoTime(const std::string& text) {
-    static const std::regex iso(
-        R"((\d{4})-(\d{2})-(\d{2})[T ](\d{2}):(\d{2})(?::(\d{2})(?:\.\d+)?)?(Z|z|([+-])(\d{2}):?(\d{2})))");
-    std::smatch m;
-    if (!std::regex_match(text, m, iso)) return std::nullopt;
-    std::tm t{};
-    t.tm_year = std::stoi(m[1]) - 1900;
-    t.tm_mon = std::stoi(m[2]) - 1;
-    t.tm_mday = std::stoi(m[3]);
-    t.tm_hour = std::stoi(m[4]);
-    t.tm_min = std::stoi(m[5]);
-    t.tm_sec = m[6].matched ? std::stoi(m[6]) : 0;
-    if (t.tm_mon > 11 || t.tm_mday < 1 || t.tm_mday > 31 || t.tm_hour > 23 || t.tm_min > 59 ||
-        t.tm_sec > 60)
-        return std::nullopt;
-    long long seconds = ::timegm(&t);
-    if (m[8].matched) {
-        long long offset = std::stoll(m[9]) * 3600 + std::stoll(m[10]) * 60;
-        seconds -= m[8] == "+" ? offset : -offset;  // local time = UTC + offset
+namespace {
+
+// The value of text[at, at + n) when all n are ASCII digits, else -1.
+int digitsAt(const std::string& text, std::size_t at, std::size_t n) {
+    if (at + n > text.size()) return -1;
+    int v = 0;
+    for (std::size_t k = at; k < at + n; ++k) {
+        if (text[k] < '0' || text[k] > '9') return -1;
+        v = v * 10 + (text[k] - '0');
     }
-    return seconds;
+    return v;
+}
+
+int daysIn(int year, int month) {
+    static const int days[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+    return month == 2 && leap ? 29 : days[month - 1];
+}
+
+}  // namespace
+
+std::optional<long long> parseIsoTime(const std::string& text) {
+    // Read left to right, at fixed places: no backtracking, so no length can exhaust the stack.
+    if (text.size() > kMaxIsoTimeBytes) return std::nullopt;
+    const int year = digitsAt(text, 0, 4), month = digitsAt(text, 5, 2), day = digitsAt(text, 8, 2);
+    if (year < 0 || month < 1 || month > 12 || day < 1 || text.size() < 16 || text[4] != '-' ||
+        text[7] != '-' || (text[10] != 'T' && text[10] != ' ') || text[13] != ':')
+        return std::nullopt;
+    if (day > daysIn(year, month)) return std::nullopt;  // 2026-11-31 is no day
+    const int hour = digitsAt(text, 11, 2), minute = digitsAt(text, 14, 2);
+    int second = 0;
+    std::size_t at = 16;
+    if (at < text.size() && text[at] == ':') {
+        second = digitsAt(text, at + 1, 2);
+        at += 3;
+        if (at < text.size() && text[at] == '.') {  // a fraction: 1 to 9 digits, ignored
+            std::size_t digits = 0;
+            while (at + 1 + digits < text.size() && digitsAt(text, at + 1 + digits, 1) >= 0)
+                ++digits;
+            if (digits < 1 || digits > 9) return std::nullopt;
+            at += 1 + digits;
+        }
+    }
+    if (hour < 0 || hour > 23 || minute < 0 || minute > 59 || second < 0 || second > 60)
+        return std::nullopt;
+    long long offset = 0;  // local time = UTC + offset
+    const std::string zone = text.substr(std::min(at, text.size()));
+    if (zone != "Z" && zone != "z") {
+        const bool colon = zone.size() == 6 && zone[3] == ':';
+        if ((zone.size() != 5 && !colon) || (zone[0] != '+' && zone[0] != '-')) return std::nullopt;
+        const int hh = digitsAt(zone, 1, 2), mm = digitsAt(zone, colon ? 4 : 3, 2);
+        // Zones on Earth lie within +-14:00: +99:99 is a typing error, not a place.
+        if (hh < 0 || mm < 0 || mm > 59 || hh * 60 + mm > 14 * 60) return std::nullopt;
+        offset = (zone[0] == '+' ? 1 : -1) * (hh * 3600LL + mm * 60LL);
+    }
+    std::tm t{};
+    t.tm_year = year - 1900;
+    t.tm_mon = month - 1;
+    t.tm_mday = day;
+    t.tm_hour = hour;
+    t.tm_min = minute;
+    t.tm_sec = second;
+    return (long long)::timegm(&t) - offset;
 }
 
 std::string isoUtc(long long seconds) {
@@ -59,6 +100,13 @@ LateRecord lateFor(const LatePolicy& p, long long handedIn, const std::string& s
     return r;
 }
 
+namespace {
+// A value as a message shows it: on one line, at most 40 characters.
+std::string shownValue(const std::string& value) {
+    return printableName(value.size() > 40 ? value.substr(0, 37) + "..." : value);
+}
+}  // namespace
+
 std::map<std::string, long long> loadTimes(const std::string& path) {
     std::vector<CsvRecord> rows = loadCsv(path, "--times", 100001);
     if (rows.empty())
@@ -75,10 +123,11 @@ std::map<std::string, long long> loadTimes(const std::string& path) {
         std::optional<long long> t = parseIsoTime(r.fields[1]);
         if (!t)
             csvFail(path, r.line,
-                    "'" + printableName(r.fields[1]) +
-                        "' is not ISO 8601 with a zone (2026-12-04T23:59:00+01:00)");
+                    "'" + shownValue(r.fields[1]) +
+                        "' is not ISO 8601 with a zone within +-14:00 on a real date "
+                        "(2026-12-04T23:59:00+01:00)");
         if (!out.emplace(r.fields[0], *t).second)
-            csvFail(path, r.line, "hand-in '" + printableName(r.fields[0]) + "' is listed twice");
+            csvFail(path, r.line, "hand-in '" + shownValue(r.fields[0]) + "' is listed twice");
     }
     return out;
 }

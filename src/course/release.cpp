@@ -1,10 +1,10 @@
 #include "course/release.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <functional>
-#include <regex>
 #include <sstream>
 
 #include "course/class_entries.h"
@@ -76,21 +76,86 @@ const char* const kStub = "// STUB:";
 
 enum class Marker { None, Begin, End, Stub };
 
-// What a line is, tolerantly: anything that looks like a marker (any case, any spacing or
-// punctuation between the words, inside a block comment, after code, the words swapped) but is
-// not the exact form refuses, so a misspelled marker never ships its region's solution.
+// A line's words as markers are matched: runs of ASCII letters and digits, lower-cased. Every
+// other character separates words, in any number: spaces, tabs, punctuation, and any non-ASCII
+// character (U+00A0, U+2000-U+200A, U+3000, dashes U+2010-U+2015 and U+2212...), except the
+// invisible ones, which join (U+200B-U+200D, U+2060, U+FEFF, U+00AD: "SOLU\u200BTION" is one
+// word). `lead` is what comes before the first word. One pass, no backtracking: a line of a
+// million spaces costs a million steps, never the stack.
+struct LineWords {
+    std::vector<std::string> words;
+    std::string lead;
+};
+
+LineWords wordsOf(const std::string& line) {
+    LineWords out;
+    std::string word;
+    auto endWord = [&]() {
+        if (!word.empty()) out.words.push_back(word);
+        word.clear();
+    };
+    for (std::size_t i = 0; i < line.size();) {
+        unsigned char c = static_cast<unsigned char>(line[i]);
+        if (c < 0x80) {
+            if (std::isalnum(c)) {
+                word += char(std::tolower(c));
+            } else {
+                endWord();
+                if (out.words.empty()) out.lead += char(c);
+            }
+            ++i;
+            continue;
+        }
+        std::size_t length = (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 1;
+        unsigned code = length == 1 ? c : c & (0xff >> (length + 1));
+        for (std::size_t k = 1; k < length && i + k < line.size(); ++k)
+            code = code << 6 | (static_cast<unsigned char>(line[i + k]) & 0x3f);
+        const bool invisible = (code >= 0x200B && code <= 0x200D) || code == 0x2060 ||
+                               code == 0xFEFF || code == 0x00AD;
+        if (!invisible) endWord();
+        if (out.words.empty() && word.empty()) out.lead += line.substr(i, length);
+        i += length;
+    }
+    endWord();
+    return out;
+}
+
+bool endsWith(const std::string& s, const char* tail) {
+    std::size_t n = std::strlen(tail);
+    return s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
+}
+
+// Whether the words read like a marker: BEGIN or END next to SOLUTION (either order, joined or
+// apart), or a comment whose first word is STUB.
+bool looksLikeMarker(const LineWords& w) {
+    for (std::size_t k = 0; k < w.words.size(); ++k) {
+        const std::string& a = w.words[k];
+        if (a.find("beginsolution") != std::string::npos ||
+            a.find("endsolution") != std::string::npos || endsWith(a, "solutionbegin") ||
+            endsWith(a, "solutionend"))
+            return true;
+        if (k + 1 == w.words.size()) break;
+        const std::string& b = w.words[k + 1];
+        if ((endsWith(a, "begin") || endsWith(a, "end")) && b.rfind("solution", 0) == 0)
+            return true;
+        if (endsWith(a, "solution") && (b == "begin" || b == "end")) return true;
+    }
+    return !w.words.empty() && w.words.front() == "stub" &&
+           w.lead.find_first_of("/*") != std::string::npos;
+}
+
+// What a line is, tolerantly: anything that looks like a marker (any case, any spacing,
+// Unicode spaces, invisible characters or punctuation between the words, inside a block
+// comment, after code, the words swapped) but is not the exact form refuses, so a misspelled
+// marker never ships its region's solution.
 Marker markerOf(const std::string& line, const std::function<AssignmentError(std::string)>& at) {
     std::string t = trimmed(line);
     if (t == kBegin) return Marker::Begin;
     if (t == kEnd) return Marker::End;
     if (t.rfind(kStub, 0) == 0) return Marker::Stub;
-    static const std::regex region(
-        "(begin|end)[^a-z0-9]{0,3}solution|solution[^a-z0-9]{0,3}(begin|end)\\b",
-        std::regex::icase);
-    static const std::regex stub("^\\s*(//+|/\\*+|\\*)\\s*stub\\b", std::regex::icase);
-    if (std::regex_search(line, region) || std::regex_search(line, stub)) {
+    if (looksLikeMarker(wordsOf(line))) {
         std::string shown = t.size() > 60 ? t.substr(0, 57) + "..." : t;
-        throw at("'" + printable(shown) +
+        throw at("'" + printableName(shown) +
                  "' looks like a solution marker but is not one; write exactly '" + kBegin +
                  "', '" + kEnd + "' or '" + kStub + " code' on a line of its own");
     }

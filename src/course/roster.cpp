@@ -36,7 +36,7 @@ const RosterEntry* Roster::find(const std::string& name) const {
 
 Roster parseRoster(const std::string& input, const std::string& origin) {
     auto fail = [&](int line, const std::string& what) { csvFail(origin, line, what); };
-    std::vector<CsvRecord> records = parseCsv(input, origin, kMaxRosterRows + 1);
+    std::vector<CsvRecord> records = parseCsv(input, origin, kMaxRosterRows + 1, "students");
     if (records.empty())
         fail(1, "empty: give a header row id,name,email,hand-in and a student per row");
     static const std::vector<std::vector<std::string>> kHeader = {

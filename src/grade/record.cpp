@@ -7,6 +7,7 @@
 #include "grade/bounds.h"
 #include "grade/stage_runs.h"
 #include "io/json_fields.h"
+#include "render/request.h"
 
 namespace sl {
 
@@ -151,10 +152,28 @@ StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
         }
     }
     sumStage(st);
-    // Messages name the student's files as handed in, not by the private snapshot's path.
+    // Messages name the student's files as handed in, not by the private snapshot's path, and
+    // our shipped files by their tree (shaders_core/common/phong.glsl): no grader's folder
+    // reaches a record, a page or a report.
     const std::string snapshot = overlay.empty() ? "" : overlay + "/";
-    st.message = withoutPrefix(st.message, snapshot);
-    for (RowRecord& row : st.rows) row.result.message = withoutPrefix(row.result.message, snapshot);
+    auto replaceAll = [](std::string text, const std::string& from, const std::string& to) {
+        for (std::size_t at = 0; !from.empty() && (at = text.find(from, at)) != std::string::npos;
+             at += to.size())
+            text.replace(at, from.size(), to);
+        return text;
+    };
+    auto shown = [&](std::string text) {
+        text = withoutPrefix(std::move(text), snapshot);
+        // The folder itself ("allowed: files under DIR and ..."), then our trees by their name.
+        if (!overlay.empty()) text = replaceAll(std::move(text), overlay, "your hand-in");
+        for (GlslTree t : {GlslTree::Core, GlslTree::Legacy}) {
+            const std::string root = shaderTreeRoot(t);
+            text = replaceAll(std::move(text), root, root.substr(root.rfind('/') + 1));
+        }
+        return text;
+    };
+    st.message = shown(st.message);
+    for (RowRecord& row : st.rows) row.result.message = shown(row.result.message);
     return st;
 }
 
@@ -189,8 +208,8 @@ StudentRecord unreadableRecord(const GradingPlan& plan, const StudentWork& s) {
         StageRecord st = stageOf(p);
         st.missingFiles.clear();
         for (const RowPlan& row : p.rows) {
-            st.rows.push_back(unrenderedRow(
-                row, s.platformFailure ? Status::NotGraded : Status::Error, s.error));
+            st.rows.push_back(
+                unrenderedRow(row, s.platformFailure ? Status::NotGraded : Status::Error, s.error));
             score(st.rows.back(), row);
         }
         st.message = s.error;

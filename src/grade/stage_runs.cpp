@@ -204,6 +204,13 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
             return std::vector<CheckResult>{failedRow(r, Status::NotGraded, text, outcome.seconds)};
         };
         if (isOurs(k)) return notGraded("these are our shipped shaders");
+        if (std::string machine = machineEvidence(outcome, limits); !machine.empty()) {
+            std::string text = what + ": its worker was " + machine +
+                               ": a platform problem, not the submission's: these rows are not "
+                               "graded (rerun)";
+            std::cerr << "shadowlab: " << text << "\n";
+            return {failedRow(r, Status::NotGraded, text, outcome.seconds)};
+        }
         std::string why;
         std::optional<JobCost> ours = calibration.ours(plan[k], why);
         if (!ours) return notGraded(why);
@@ -225,6 +232,8 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
             text += " [budget: " + budgetExplained(rule, *ours, true) + "]";
         else if (outcome.kind == WorkerOutcome::Kind::Crash && outcome.outOfMemory)
             text += " [budget: " + budgetExplained(rule, *ours, false) + "]";
+        else  // a crash or a stall of its own: what it had used, the evidence it was its work
+            text += " [used: " + usageText(outcome, limits) + "]";
         std::cerr << "shadowlab: " << text << "\n";
         return {failedRow(r, failureStatus(outcome), text, outcome.seconds)};
     };

@@ -306,8 +306,8 @@ double processCpuSeconds(pid_t pid) {
     if (close == std::string::npos || close + 2 > text.size()) return -1;
     unsigned long long utime = 0, stime = 0;
     // After ") ": state, then fields 4..13, then utime (14) and stime (15).
-    if (std::sscanf(text.c_str() + close + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu",
-                    &utime, &stime) != 2)
+    if (std::sscanf(text.c_str() + close + 2,
+                    "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu", &utime, &stime) != 2)
         return -1;
     static const double tick = double(::sysconf(_SC_CLK_TCK));
     return double(utime + stime) / tick;
@@ -351,6 +351,35 @@ std::string timeLimitText(const Limits& limits) {
 
 std::string memoryLimitText(const Limits& limits) {
     return limits.memoryMb > 0 ? std::to_string(limits.memoryMb) + " MB" : "no memory limit";
+}
+
+std::string usageText(const WorkerOutcome& o, const Limits& limits) {
+    char used[160];
+    std::snprintf(used, sizeof used, "%.2f s of CPU time (budget: %s) at a peak of %ld MB (%s)",
+                  o.cpuSeconds, timeLimitText(limits).c_str(), o.peakMb,
+                  memoryLimitText(limits).c_str());
+    return used;
+}
+
+std::string machineEvidence(const WorkerOutcome& o, const Limits& limits) {
+    // A job's own work can reach its limits; a signal from outside or a stall cannot be its.
+    const bool cpuFarBelow = limits.cpuSeconds <= 0 || o.cpuSeconds < 0.5 * limits.cpuSeconds;
+    const bool memoryFarBelow = limits.memoryMb <= 0 || o.peakMb < limits.memoryMb / 2;
+    const std::string used = usageText(o, limits);
+    const int s = o.signal;
+    const bool fromOutside = s == SIGKILL || s == SIGTERM || s == SIGINT || s == SIGHUP ||
+                             s == SIGQUIT || s == SIGUSR1 || s == SIGUSR2 || s == SIGALRM;
+    if (o.kind == WorkerOutcome::Kind::Crash && !o.outOfMemory && fromOutside && cpuFarBelow &&
+        memoryFarBelow)
+        return "killed by " + signalName(s) + ", a signal the grader did not send, after " + used;
+    if (o.kind == WorkerOutcome::Kind::Timeout && o.overWallClock && limits.cpuSeconds > 0 &&
+        cpuFarBelow) {
+        char wall[200];
+        std::snprintf(wall, sizeof wall,
+                      "no result within %.0f s of wall-clock time while it used ", o.seconds);
+        return wall + used + ": the worker was stopped or starved, not working";
+    }
+    return "";
 }
 
 std::string workerFailureLine(const std::string& what, const WorkerOutcome& o,

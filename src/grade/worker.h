@@ -101,6 +101,18 @@ class BackgroundSeries {
 std::string timeLimitText(const Limits& limits);
 std::string memoryLimitText(const Limits& limits);
 
+// Why a worker's end was the machine's and not its job's, or "" when the job's own work explains
+// it: a signal the parent did not send (SIGKILL or SIGTERM from outside: an administrator, the
+// kernel's OOM killer for memory others hold) while the job's CPU time and memory were far below
+// their limits (under half), or the wall-clock backstop reached while it had used under half its
+// CPU time (a stopped or starved worker: SIGSTOP). The text names the evidence that decided
+// (the signal, CPU seconds, memory). What the job did (its CPU time or memory used up, a crash
+// by SIGSEGV or SIGABRT in the driver) stays the job's.
+std::string machineEvidence(const WorkerOutcome& outcome, const Limits& limits);
+// What the job had used when it ended: "0.41 s of CPU time (budget: 30 s of CPU time) at a peak
+// of 96 MB (512 MB)".
+std::string usageText(const WorkerOutcome& outcome, const Limits& limits);
+
 // The one line for a worker that did not return, naming `what` ("stage margin (core)") and the
 // limit concerned: "stage margin (core): used up its time budget of 20 s of CPU time
 // (--time-limit)".

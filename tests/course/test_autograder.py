@@ -108,4 +108,19 @@ env = dict(os.environ, AUTOGRADER_ROOT=root, SHADOWLAB="/nonexistent/shadowlab")
 r = subprocess.run(["bash", root + "/source/run_autograder"], env=env, capture_output=True, text=True)
 res = json.load(open(root + "/results/results.json"))
 assert res["score"] == 0 and "could not grade" in res["output"], res
+# NOT GRADED rows (check exits 3, its results.json has no score): the run fails with 3, as
+# docs/check.md promises, never exit 0 with a results.json Gradescope would read as a grade. A
+# stand-in program plays check's part (a real NOT GRADED needs a failing machine).
+root = work + "/ag-not-graded"
+os.makedirs(root + "/source")
+z.extractall(root + "/source")
+os.makedirs(root + "/submission")
+fake = work + "/not-graded-check"
+open(fake, "w").write('#!/bin/sh\nwhile [ "$1" != --report ]; do shift; done\n'
+                      'printf \'{"output": "not graded: rerun", "tests": []}\\n\' > "$2"\nexit 3\n')
+os.chmod(fake, 0o755)
+env = dict(os.environ, AUTOGRADER_ROOT=root, SHADOWLAB=fake)
+r = subprocess.run(["bash", root + "/source/run_autograder"], env=env, capture_output=True, text=True)
+assert r.returncode == 3 and "not graded" in r.stderr, (r.returncode, r.stderr[-500:])
+assert "score" not in json.load(open(root + "/results/results.json"))
 print("course_autograder: ok")

@@ -7,6 +7,7 @@
 #include "course/class_progress.h"
 #include "course/feedback_html.h"
 #include "course/gradebook_exports.h"
+#include "course/html_text.h"
 #include "course/json_lines.h"
 #include "course/release.h"
 
@@ -189,6 +190,103 @@ TEST(ClassProgress, JobFilesReadOneByOneBadOnesCountNothing) {
     EXPECT_EQ(jobs[1].total, 20u);
     EXPECT_EQ(jobs[2].total, 0u);  // more done than planned: torn or foreign, counts nothing
     EXPECT_EQ(jobs[3].total, 0u);
+}
+
+// Markers by one tokenizer (issue 38): any run of spaces or tabs, Unicode spaces, invisible
+// characters and dashes between the words is a look-alike refused naming file and line, so no
+// release ships the region's solution as ordinary code.
+TEST(SolutionMarkers, UnicodeAndSpacingLookAlikesRefuse) {
+    std::vector<std::string> between = {
+        "    ",         "\t",           " \t ",         "\xC2\xA0",     "\xE3\x80\x80",
+        "\xEF\xBB\xBF", "\xE2\x80\x8B", "\xE2\x80\x8C", "\xE2\x80\x8D", " \xE2\x80\x8B"};
+    for (unsigned code = 0x2000; code <= 0x200A; ++code)  // EN QUAD ... HAIR SPACE
+        between.push_back(std::string{'\xE2', '\x80', char(0x80 | (code & 0x3f))});
+    for (unsigned code = 0x2010; code <= 0x2015; ++code)  // HYPHEN ... HORIZONTAL BAR
+        between.push_back(std::string{'\xE2', '\x80', char(0x80 | (code & 0x3f))});
+    between.push_back("\xE2\x88\x92");  // MINUS SIGN
+    std::vector<std::string> lines;
+    for (const std::string& b : between) {
+        lines.push_back("// BEGIN" + b + "SOLUTION");
+        lines.push_back("//" + b + "END" + b + "SOLUTION");
+    }
+    // Invisible characters around or inside the exact form; a Unicode indentation.
+    for (const char* line : {"// BEGIN SOLUTION\xE2\x80\x8B", "\xEF\xBB\xBF// BEGIN SOLUTION",
+                             "\xC2\xA0// BEGIN SOLUTION", "// BEGIN SOLU\xE2\x80\x8BTION",
+                             "// \xE2\x80\x8B"
+                             "BEGIN SOLUTION",
+                             "//\xC2\xA0STUB: x;"})
+        lines.push_back(line);
+    for (const std::string& line : lines) {
+        std::string text = "a\n  " + line + "\n  secret();\n  // END SOLUTION\n";
+        try {
+            std::string shipped = stripSolutions(text, "f.frag");
+            ADD_FAILURE() << "accepted (would ship 'secret();'): " << line;
+        } catch (const AssignmentError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("f.frag: line 2: '", 0), 0u) << e.what();
+            EXPECT_NE(std::string(e.what()).find("looks like a solution marker"), std::string::npos)
+                << e.what();
+            EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+        }
+    }
+}
+
+// A line of a million spaces (or a million dashes before a word) is an ordinary line, read in
+// one pass: it once overflowed the stack of a backtracking regular expression (SIGSEGV).
+TEST(SolutionMarkers, AMillionSpacesIsAnOrdinaryLine) {
+    const std::string spaces(1000000, ' ');
+    const std::string text = "a\n" + spaces + "\n" + std::string(1000000, '-') + "x\n";
+    EXPECT_EQ(stripSolutions(text, "f"), text);
+    EXPECT_THROW(stripSolutions("//" + spaces + "BEGIN" + spaces + "SOLUTION\n", "f"),
+                 AssignmentError);
+}
+
+// Roster names with ESC or BEL reach no page raw (issue 38), and a student not graded is charged
+// nothing by the late policy.
+TEST(StudentPage, ControlCharactersAreNotText) {
+    EXPECT_EQ(esc("a\x1b[31mb\x07<"), "a?[31mb?&lt;");
+    StudentRecord r = oneStage("ann", "rgb", Status::Pass, 2, 2);
+    r.score = r.maxScore = 2;
+    r.roster = RosterInfo{"7", "Ann\x1b]0;pwned\x07 Lee", "a@b"};
+    const std::string page = studentPage(r);
+    EXPECT_EQ(page.find('\x1b'), std::string::npos);
+    EXPECT_EQ(page.find('\x07'), std::string::npos);
+    EXPECT_NE(page.find("Ann?]0;pwned? Lee"), std::string::npos);
+}
+
+TEST(StudentPage, NotGradedIsChargedNothing) {
+    StudentRecord r = oneStage("ann", "rgb", Status::NotGraded, 0, 0);
+    LateRecord late;
+    late.days = 2;
+    late.minutes = 2000;
+    late.handedIn = "2026-12-06T10:59:00Z";
+    r.late = late;
+    const std::string page = studentPage(r);
+    EXPECT_NE(page.find("not graded yet"), std::string::npos);
+    EXPECT_EQ(page.find("charged by the late policy"), std::string::npos) << page;
+    StudentRecord graded = oneStage("bob", "rgb", Status::Pass, 2, 2);
+    graded.score = graded.maxScore = 2;
+    graded.late = late;
+    EXPECT_NE(studentPage(graded).find("charged by the late policy"), std::string::npos);
+}
+
+// A hidden stage's result is not on the student's page (issue 38): neither named nor scored.
+TEST(StudentPage, AHiddenStageIsNotShown) {
+    StudentRecord r = oneStage("ann", "rgb", Status::Pass, 2, 2);
+    StageRecord secret;
+    secret.stage = "margin";
+    secret.tree = "core";
+    secret.visibility = "hidden";
+    secret.status = Status::Fail;
+    secret.maxPoints = 10;
+    secret.message = "0 of 5 checks show the lesson";
+    r.stages.push_back(secret);
+    r.score = 2;
+    r.maxScore = 12;
+    const std::string page = studentPage(r);
+    EXPECT_NE(page.find("rgb/core"), std::string::npos);
+    EXPECT_EQ(page.find("margin/core"), std::string::npos) << page;
+    EXPECT_EQ(page.find("0 of 5 checks"), std::string::npos) << page;
+    EXPECT_NE(page.find("1 more stage is graded but hidden"), std::string::npos) << page;
 }
 
 }  // namespace

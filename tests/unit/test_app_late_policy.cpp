@@ -36,5 +36,32 @@ TEST(LatePolicy, OneAndAHalfDaysLateLosesTwoDaysPoints) {
     EXPECT_DOUBLE_EQ(lateFor(p, p.deadline + 36 * hour, "", 100, 5).penalty, 5);    // not below 0
 }
 
+// Only real times (issue 38): a day the month has, a zone within +-14:00, a bounded fraction.
+TEST(LatePolicy, OnlyRealDatesAndZones) {
+    EXPECT_FALSE(parseIsoTime("2026-11-31T10:00:00Z"));  // November has 30 days
+    EXPECT_FALSE(parseIsoTime("2026-02-29T10:00:00Z"));  // not a leap year
+    EXPECT_TRUE(parseIsoTime("2028-02-29T10:00:00Z"));
+    EXPECT_FALSE(parseIsoTime("2026-04-00T10:00:00Z"));
+    EXPECT_FALSE(parseIsoTime("2026-12-04T24:00:00Z"));
+    EXPECT_FALSE(parseIsoTime("2026-12-04T23:59:00+99:99"));
+    EXPECT_FALSE(parseIsoTime("2026-12-04T23:59:00-14:01"));
+    EXPECT_FALSE(parseIsoTime("2026-12-04T23:59:00+01:60"));
+    EXPECT_EQ(parseIsoTime("2026-12-04T23:59:00+14:00"), parseIsoTime("2026-12-04T09:59:00Z"));
+    EXPECT_EQ(parseIsoTime("2026-12-04T23:59:00-1400"), parseIsoTime("2026-12-05T13:59:00Z"));
+    EXPECT_EQ(parseIsoTime("2026-12-06T10:59:00.542003+00:00"),
+              parseIsoTime("2026-12-06T10:59:00Z"));  // Gradescope's created_at
+    EXPECT_FALSE(parseIsoTime("2026-12-04T23:59:00.Z"));
+    EXPECT_FALSE(parseIsoTime("2026-12-04T23:59:00Zjunk"));
+    EXPECT_FALSE(parseIsoTime("2026-12-04T23:59:00+01:00 "));
+}
+
+// 500,000 fractional digits: refused in one pass (a backtracking regular expression once
+// overflowed the stack on it: SIGSEGV, for --times and Gradescope's created_at alike).
+TEST(LatePolicy, AHugeFractionIsRefusedNotACrash) {
+    EXPECT_FALSE(parseIsoTime("2026-12-04T23:59:00." + std::string(500000, '5') + "Z"));
+    EXPECT_FALSE(parseIsoTime("2026-12-04T23:59:00.1234567890Z"));  // more than 9 digits
+    EXPECT_FALSE(parseIsoTime(std::string(1000000, ' ')));
+}
+
 }  // namespace
 }  // namespace sl

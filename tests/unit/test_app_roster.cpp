@@ -55,5 +55,32 @@ TEST(Roster, MalformedNamesTheLine) {
               "r.csv: line 3: not UTF-8 (save the file as UTF-8)");
 }
 
+// The limit stated exactly (issue 38): 100,000 students, the error on the first row past it.
+TEST(Roster, TheLimitIsStatedInStudents) {
+    std::string text = "id,name,email,hand-in\n";
+    for (int k = 0; k <= 100000; ++k) {
+        std::string n = std::to_string(k);
+        text += n + ",S" + n + ",s" + n + "@x.org,h" + n + "\n";
+    }
+    try {
+        parseRoster(text, "r.csv");
+        FAIL() << "100,001 students accepted";
+    } catch (const UsageError& e) {
+        EXPECT_STREQ(e.what(), "r.csv: line 100002: more than 100000 students (the limit)");
+    }
+}
+
+// A field is bounded: a name of a million bytes is refused naming the line, in one line.
+TEST(Roster, AHugeFieldIsRefused) {
+    const std::string text = "id,name,email,hand-in\n1," + std::string(1000000, 'n') + ",a@b,h\n";
+    try {
+        parseRoster(text, "r.csv");
+        FAIL() << "accepted";
+    } catch (const UsageError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "r.csv: line 2: a field of 1000000 bytes; at most 4096 are allowed");
+    }
+}
+
 }  // namespace
 }  // namespace sl

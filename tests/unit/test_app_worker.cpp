@@ -46,7 +46,8 @@ TEST(Worker, TheJobsExceptionsKeepTheirType) {
     EXPECT_THROW(runBounded(limits(5, 512), []() -> nlohmann::json { throw SceneError("x"); }),
                  SceneError);
     try {
-        runBounded(limits(5, 512), []() -> nlohmann::json { throw std::runtime_error("gl broke"); });
+        runBounded(limits(5, 512),
+                   []() -> nlohmann::json { throw std::runtime_error("gl broke"); });
         FAIL() << "no exception";
     } catch (const UsageError&) {
         FAIL() << "a GL failure became bad input";
@@ -208,6 +209,86 @@ TEST(Worker, NoLimitsMeansNone) {
     EXPECT_EQ(timeLimitText({0, 0}), "no time limit");
     EXPECT_EQ(memoryLimitText({0, 0}), "no memory limit");
 }
+
+// The machine's end, not the job's (issue 38): a signal the parent did not send while the job was
+// far below its budgets, or the backstop reached with the CPU idle. What the job's own work
+// explains (a crash by SIGSEGV, its CPU time or memory used up) stays the job's.
+Limits budgets(double cpu, double wall, long memoryMb) {
+    Limits l;
+    l.cpuSeconds = cpu;
+    l.wallSeconds = wall;
+    l.memoryMb = memoryMb;
+    return l;
+}
+
+TEST(WorkerEnd, AKillFromOutsideFarBelowTheBudgetIsTheMachines) {
+    const Limits l = budgets(30, 60, 512);
+    WorkerOutcome o = runBounded(l, []() -> nlohmann::json {
+        ::kill(::getpid(), SIGKILL);  // as an administrator or the OOM killer would
+        return nullptr;
+    });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Crash);
+    const std::string why = machineEvidence(o, l);
+    EXPECT_NE(why.find("killed by SIGKILL, a signal the grader did not send"), std::string::npos)
+        << why;
+    EXPECT_NE(why.find("s of CPU time (budget: 30 s of CPU time)"), std::string::npos) << why;
+}
+
+TEST(WorkerEnd, AStoppedWorkerAtTheBackstopIsTheMachines) {
+    const Limits l = budgets(30, 1, 512);
+    WorkerOutcome o = runBounded(l, []() -> nlohmann::json {
+        ::raise(SIGSTOP);
+        return nullptr;
+    });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Timeout);
+    EXPECT_TRUE(o.overWallClock);
+    const std::string why = machineEvidence(o, l);
+    EXPECT_NE(why.find("stopped or starved"), std::string::npos) << why;
+}
+
+TEST(WorkerEnd, WhatTheJobDidStaysTheJobs) {
+    const Limits l = budgets(30, 60, 512);
+    WorkerOutcome crash = runBounded(l, []() -> nlohmann::json {
+        ::signal(SIGSEGV, SIG_DFL);
+        ::raise(SIGSEGV);
+        return nullptr;
+    });
+    ASSERT_EQ(crash.kind, WorkerOutcome::Kind::Crash);
+    EXPECT_EQ(machineEvidence(crash, l), "");
+    const Limits tight = budgets(0.4, 60, 512);
+    WorkerOutcome spin = runBounded(tight, [] {
+        for (volatile unsigned long k = 0;; k = k + 1) {
+        }
+        return nlohmann::json();
+    });
+    ASSERT_EQ(spin.kind, WorkerOutcome::Kind::Timeout);
+    EXPECT_EQ(machineEvidence(spin, tight), "");
+    // The backstop reached while working: CPU time spent, the job's.
+    const Limits shortWall = budgets(1.2, 0.8, 512);
+    WorkerOutcome busy = runBounded(shortWall, [] {
+        for (volatile unsigned long k = 0;; k = k + 1) {
+        }
+        return nlohmann::json();
+    });
+    ASSERT_EQ(busy.kind, WorkerOutcome::Kind::Timeout);
+    if (busy.overWallClock && busy.cpuSeconds >= 0.6)  // a loaded machine may starve it: then not
+        EXPECT_EQ(machineEvidence(busy, shortWall), "");
+}
+
+#if !defined(__SANITIZE_ADDRESS__)
+TEST(WorkerEnd, AKillAfterTakingMostOfItsMemoryIsTheJobs) {
+    const Limits l = budgets(30, 60, 256);
+    WorkerOutcome o = runBounded(l, []() -> nlohmann::json {
+        std::vector<char> block(200u << 20, 'x');  // touched: resident, within the limit
+        ::usleep(300000);                          // the parent sees it (every 20 ms)
+        ::kill(::getpid(), SIGKILL);               // the OOM killer, for memory it holds
+        return block.size();
+    });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Crash);
+    EXPECT_GE(o.peakMb, 128);
+    EXPECT_EQ(machineEvidence(o, l), "");
+}
+#endif
 
 }  // namespace
 }  // namespace sl
