@@ -13,6 +13,9 @@
 #include "grade/check_run.h"
 #include "grade/reports.h"
 #include "grade/worker.h"
+#include "io/data_paths.h"
+#include "io/png.h"
+#include "io/usage_error.h"
 #include "metrics/mirror_figure.h"
 #include "scene/scene_json.h"
 

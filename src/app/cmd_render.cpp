@@ -9,6 +9,8 @@
 #include "bench/bench_output.h"
 #include "bench/bench_run.h"
 #include "grade/worker.h"
+#include "io/png.h"
+#include "io/usage_error.h"
 #include "metrics/mirror_figure.h"
 #include "render/mirror_pass.h"
 #include "scene/scene_json.h"
@@ -104,8 +106,7 @@ int renderOnce(const RenderArgs& a) {
     // A student's shaders get the budget's floors (no calibration for one picture), ours the
     // backstop alone.
     const BudgetRule rule = a.limits.rule();
-    const Limits limits =
-        request.overlay.empty() ? oursLimits(rule) : provisionalLimits(rule);
+    const Limits limits = request.overlay.empty() ? oursLimits(rule) : provisionalLimits(rule);
     WorkerOutcome outcome = runBounded(limits, [&] {
         renderInWorker(a, request);
         return nlohmann::json::object();

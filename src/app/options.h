@@ -33,7 +33,4 @@ struct LimitOptions {
 void addLimitOptions(CLI::App* app, LimitOptions& limits);
 Backend toBackend(const std::string& text);
 
-// Exit codes of the command-line contract.
-enum ExitCode { kOk = 0, kCheckFailed = 1, kBadInput = 2, kGlFailure = 3 };
-
 }  // namespace sl

@@ -10,6 +10,7 @@
 #include "course/student_grade.h"
 #include "grade/private_dir.h"
 #include "io/files.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

@@ -34,6 +34,7 @@
 #include "io/box.h"
 #include "io/content_hash.h"
 #include "io/files.h"
+#include "io/usage_error.h"
 #include "stages/expectations.h"
 
 namespace sl {

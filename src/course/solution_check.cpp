@@ -19,6 +19,7 @@
 #include "grade/record.h"
 #include "io/box.h"
 #include "io/files.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

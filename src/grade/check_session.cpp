@@ -13,7 +13,7 @@
 #include "grade/reports.h"
 #include "io/files.h"
 #include "io/json_fields.h"
-#include "metrics/image.h"
+#include "io/usage_error.h"
 #include "scene/scene_json.h"
 #include "stages/stage.h"
 

@@ -7,6 +7,7 @@
 
 #include "eval/evaluator.h"
 #include "grade/bounds.h"
+#include "io/data_paths.h"
 #include "io/files.h"
 #include "scene/scene_json.h"
 

@@ -24,7 +24,7 @@
 
 #include "gl/shader_library.h"
 #include "grade/bounds.h"
-#include "render/request.h"
+#include "io/usage_error.h"
 #include "scene/scene_json.h"
 #include "stages/expectations.h"
 
@@ -306,8 +306,8 @@ double processCpuSeconds(pid_t pid) {
     if (close == std::string::npos || close + 2 > text.size()) return -1;
     unsigned long long utime = 0, stime = 0;
     // After ") ": state, then fields 4..13, then utime (14) and stime (15).
-    if (std::sscanf(text.c_str() + close + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu",
-                    &utime, &stime) != 2)
+    if (std::sscanf(text.c_str() + close + 2,
+                    "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu", &utime, &stime) != 2)
         return -1;
     static const double tick = double(::sysconf(_SC_CLK_TCK));
     return double(utime + stime) / tick;

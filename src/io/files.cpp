@@ -175,6 +175,10 @@ std::string writeFileAtomically(const std::string& path, const void* data, std::
     return {};
 }
 
+std::string writeTextFile(const std::string& path, const std::string& text) {
+    return writeFileAtomically(path, text.data(), text.size());
+}
+
 std::string printable(const std::string& text) {
     std::string out = text;
     for (char& c : out) {

@@ -29,6 +29,9 @@ std::string outputPathProblem(const std::string& path);
 // nothing is left. Returns "" or the error.
 std::string writeFileAtomically(const std::string& path, const void* data, std::size_t size);
 
+// Writes text atomically, as writeFileAtomically does.
+std::string writeTextFile(const std::string& path, const std::string& text);
+
 // `text` with control characters (other than newline and tab) replaced by '?': for terminal
 // output of anything that came from a file (compiler logs, file names).
 std::string printable(const std::string& text);

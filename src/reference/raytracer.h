@@ -5,8 +5,8 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "io/image.h"
 #include "math/camera.h"
-#include "metrics/image.h"
 #include "scene/scene.h"
 
 namespace sl {

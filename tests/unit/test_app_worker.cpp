@@ -9,7 +9,7 @@
 
 #include "gl/shader_library.h"
 #include "grade/worker.h"
-#include "render/request.h"
+#include "io/usage_error.h"
 #include "scene/scene_json.h"
 
 namespace sl {
@@ -46,7 +46,8 @@ TEST(Worker, TheJobsExceptionsKeepTheirType) {
     EXPECT_THROW(runBounded(limits(5, 512), []() -> nlohmann::json { throw SceneError("x"); }),
                  SceneError);
     try {
-        runBounded(limits(5, 512), []() -> nlohmann::json { throw std::runtime_error("gl broke"); });
+        runBounded(limits(5, 512),
+                   []() -> nlohmann::json { throw std::runtime_error("gl broke"); });
         FAIL() << "no exception";
     } catch (const UsageError&) {
         FAIL() << "a GL failure became bad input";
