@@ -3,9 +3,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "grade/budget.h"
 #include "platform/headless.h"
 #include "render/request.h"
+#include "sandbox/budget.h"
 
 namespace sl {
 
@@ -25,7 +25,7 @@ void addCommonOptions(CLI::App* app, CommonOptions& o, bool withStage = true);
 RenderRequest toRequest(const CommonOptions& o);
 
 // --time-limit auto|SECONDS (CPU time) and --memory-limit auto|MB (resident) of the workers,
-// as text until the command runs: rule() turns them into the budget rule (grade/budget.h).
+// as text until the command runs: rule() turns them into the budget rule (sandbox/budget.h).
 struct LimitOptions {
     std::string time = "auto", memory = "auto";
     BudgetRule rule() const;

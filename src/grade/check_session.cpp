@@ -9,11 +9,11 @@
 #include <set>
 
 #include "grade/bounds.h"
-#include "grade/private_dir.h"
 #include "grade/reports.h"
 #include "io/files.h"
 #include "io/json_fields.h"
 #include "io/usage_error.h"
+#include "sandbox/private_dir.h"
 #include "scene/scene_json.h"
 #include "stages/stage.h"
 

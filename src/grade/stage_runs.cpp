@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "eval/evaluator.h"
+#include "eval/job_errors.h"
 #include "grade/bounds.h"
 #include "io/data_paths.h"
 #include "io/files.h"
@@ -142,10 +143,14 @@ std::optional<JobCost> Calibration::ours(const std::vector<CheckCase>& cases, st
         const Limits limits = oursLimits(rule_);
         WorkerOutcome o;
         try {
-            o = runBounded(limits, [&] {
-                Evaluator rig(backend_);
-                return checkStageJob(rig, shipped, [](const CheckCase&) { return std::string(); });
-            });
+            o = runBounded(
+                limits,
+                [&] {
+                    Evaluator rig(backend_);
+                    return checkStageJob(rig, shipped,
+                                         [](const CheckCase&) { return std::string(); });
+                },
+                renderJobErrors());
         } catch (const std::exception& e) {  // the job threw: our data or the platform
             o.kind = WorkerOutcome::Kind::Error;
             o.errorWhat = e.what();
@@ -216,7 +221,7 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
         if (!retried && stoppedAtFloor(rule, outcome) && raised) {
             WorkerOutcome again;
             runBoundedSeries(
-                budget, 1, [&](std::size_t) { return job(k); },
+                budget, 1, [&](std::size_t) { return job(k); }, renderJobErrors(),
                 [&](std::size_t, const WorkerOutcome& o) { again = o; });
             rig.reset();
             return resolve(k, again, budget, true);
@@ -229,9 +234,10 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
         std::cerr << "shadowlab: " << text << "\n";
         return {failedRow(r, failureStatus(outcome), text, outcome.seconds)};
     };
-    runBoundedSeries(first, plan.size(), job, [&](std::size_t k, const WorkerOutcome& outcome) {
-        each(k, resolve(k, outcome, first, false));
-    });
+    runBoundedSeries(first, plan.size(), job, renderJobErrors(),
+                     [&](std::size_t k, const WorkerOutcome& outcome) {
+                         each(k, resolve(k, outcome, first, false));
+                     });
 }
 
 }  // namespace sl

@@ -1,5 +1,5 @@
-// Stages evaluated in bounded workers (grade/worker.h) under budgets calibrated on our shipped
-// shaders (grade/budget.h), with the platform's failures told apart from the submission's:
+// Stages evaluated in bounded workers (sandbox/worker.h) under budgets calibrated on our shipped
+// shaders (sandbox/budget.h), with the platform's failures told apart from the submission's:
 // when our own shaders cannot finish a job, its rows are NOT GRADED (no score, exit 3, a rerun
 // grades them), never the student's TIMEOUT or CRASH.
 #pragma once
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "grade/budget.h"
 #include "grade/check_run.h"
 #include "platform/headless.h"
+#include "sandbox/budget.h"
 
 namespace sl {
 

@@ -1,4 +1,4 @@
-#include "grade/budget.h"
+#include "sandbox/budget.h"
 
 #include <algorithm>
 #include <cmath>
