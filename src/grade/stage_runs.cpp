@@ -102,17 +102,6 @@ CheckResult failedRow(const RenderRequest& r, Status status, const std::string& 
     return out;
 }
 
-// The results a worker sent for a job.
-std::vector<CheckResult> resultsOf(const WorkerOutcome& outcome) {
-    std::vector<CheckResult> results;
-    for (const auto& j : outcome.value.at("results")) {
-        results.push_back(checkResultFromJson(j));
-        results.back().backend = outcome.value.at("backend");
-        results.back().machine = outcome.value.at("machine");
-    }
-    return results;
-}
-
 // The rows of a job whose worker threw: the submission's ERROR, or the platform's (a GL failure
 // is never the student's: NOT GRADED).
 std::vector<CheckResult> errorRows(const RenderRequest& r, const WorkerOutcome& outcome) {
@@ -198,7 +187,7 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
         resolve = [&](std::size_t k, const WorkerOutcome& outcome, const Limits& limits,
                       bool retried) -> std::vector<CheckResult> {
         const RenderRequest& r = plan[k].front().request;
-        if (outcome.kind == WorkerOutcome::Kind::Ok) return resultsOf(outcome);
+        if (outcome.kind == WorkerOutcome::Kind::Ok) return workerResults(outcome);
         if (outcome.kind == WorkerOutcome::Kind::Error) return errorRows(r, outcome);
         const std::string what = "stage " + r.stage + " (" + treeName(r.tree) + ")";
         const std::string line = workerFailureLine(what, outcome, limits);
@@ -238,6 +227,17 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
                      [&](std::size_t k, const WorkerOutcome& outcome) {
                          each(k, resolve(k, outcome, first, false));
                      });
+}
+
+std::vector<CheckResult> workerResults(const WorkerOutcome& outcome) {
+    std::vector<CheckResult> results;
+    for (const auto& j : outcome.value.at("results")) {
+        results.push_back(checkResultFromJson(j));
+        boundResult(results.back());  // the worker caps its rows; the parent never trusts it to
+        results.back().backend = outcome.value.at("backend");
+        results.back().machine = outcome.value.at("machine");
+    }
+    return results;
 }
 
 }  // namespace sl

@@ -43,6 +43,11 @@ class Calibration {
 // the row of a stage that was not rendered (MISSING) or whose job gave no results.
 CheckResult unrenderedResult(const RenderRequest& r);
 
+// The rows a worker sent back for a job (its "results", with the worker's backend and machine),
+// each bounded by boundResult: whatever a worker sends, the parent keeps rows of bounded size.
+// Throws std::invalid_argument (or nlohmann's exception) on a malformed reply.
+std::vector<CheckResult> workerResults(const WorkerOutcome& outcome);
+
 // Every job of `plan` (one stage and tree's cases each) evaluated in bounded workers: one worker
 // goes through them in order, reusing its evaluator (contexts, references) until a job fails. A
 // submission's job runs under the budget's floors; one stopped there is measured against ours
