@@ -12,6 +12,8 @@
 #include "bench/bench_equal.h"
 #include "bench/bench_output.h"
 #include "bench/bench_report.h"
+#include "io/files.h"
+#include "io/usage_error.h"
 #include "metrics/callgrind.h"
 
 namespace sl {

@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "course/assignment_check.h"
 #include "grade/check_session.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

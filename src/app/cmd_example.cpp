@@ -10,10 +10,14 @@
 #include "app/commands.h"
 #include "app/mirror_figure.h"
 #include "bench/bench_output.h"
+#include "eval/job_errors.h"
 #include "grade/check_run.h"
 #include "grade/reports.h"
-#include "grade/worker.h"
+#include "io/data_paths.h"
+#include "io/png.h"
+#include "io/usage_error.h"
 #include "metrics/mirror_figure.h"
+#include "sandbox/worker.h"
 #include "scene/scene_json.h"
 
 namespace sl {
@@ -256,9 +260,12 @@ int runExample(const ExampleArgs& a) {
     // The examples draw our shaders: the budget's floors bound them all the same (a broken
     // data tree, a user's example file).
     const Limits limits = provisionalLimits(a.limits.rule());
-    WorkerOutcome outcome = runBounded(limits, [&] {
-        return nlohmann::json{{"exit", renderExample(renders, a.out, base, backend)}};
-    });
+    WorkerOutcome outcome = runBounded(
+        limits,
+        [&] {
+            return nlohmann::json{{"exit", renderExample(renders, a.out, base, backend)}};
+        },
+        renderJobErrors());
     if (outcome.kind != WorkerOutcome::Kind::Ok)
         throw UsageError(workerFailureLine("example " + base, outcome, limits));
     int exitCode = outcome.value.at("exit").get<int>();

@@ -6,6 +6,7 @@
 
 #include "app/commands.h"
 #include "course/class_grade.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

@@ -13,6 +13,7 @@
 #include "course/solution_check.h"
 #include "grade/check_run.h"
 #include "io/files.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

@@ -8,9 +8,12 @@
 #include "app/mirror_figure.h"
 #include "bench/bench_output.h"
 #include "bench/bench_run.h"
-#include "grade/worker.h"
+#include "eval/job_errors.h"
+#include "io/png.h"
+#include "io/usage_error.h"
 #include "metrics/mirror_figure.h"
 #include "render/mirror_pass.h"
+#include "sandbox/worker.h"
 #include "scene/scene_json.h"
 
 namespace sl {
@@ -104,12 +107,14 @@ int renderOnce(const RenderArgs& a) {
     // A student's shaders get the budget's floors (no calibration for one picture), ours the
     // backstop alone.
     const BudgetRule rule = a.limits.rule();
-    const Limits limits =
-        request.overlay.empty() ? oursLimits(rule) : provisionalLimits(rule);
-    WorkerOutcome outcome = runBounded(limits, [&] {
-        renderInWorker(a, request);
-        return nlohmann::json::object();
-    });
+    const Limits limits = request.overlay.empty() ? oursLimits(rule) : provisionalLimits(rule);
+    WorkerOutcome outcome = runBounded(
+        limits,
+        [&] {
+            renderInWorker(a, request);
+            return nlohmann::json::object();
+        },
+        renderJobErrors());
     if (outcome.kind != WorkerOutcome::Kind::Ok)
         throw UsageError(workerFailureLine(
             "stage " + request.stage + " (" + treeName(request.tree) + ")", outcome, limits));

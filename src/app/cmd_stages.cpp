@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "io/usage_error.h"
 #include "stages/expectations.h"
 
 namespace sl {

@@ -10,7 +10,8 @@
 #include "app/commands.h"
 #include "bench/bench_output.h"
 #include "bench/bench_run.h"
-#include "metrics/image.h"
+#include "io/files.h"
+#include "io/usage_error.h"
 #include "metrics/pareto.h"
 
 namespace sl {

@@ -2,6 +2,7 @@
 
 #include "app/commands.h"
 #include "io/files.h"
+#include "io/usage_error.h"
 #include "scene/scene_json.h"
 
 namespace sl {

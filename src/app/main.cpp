@@ -4,6 +4,7 @@
 
 #include "app/commands.h"
 #include "io/box.h"
+#include "io/usage_error.h"
 
 int main(int argc, char** argv) {
     sl::applyBoxThreads();  // before any GL context: llvmpipe sizes its threads once

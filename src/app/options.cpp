@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "io/box.h"
+#include "io/usage_error.h"
 
 namespace sl {
 
@@ -54,7 +55,8 @@ void addCommonOptions(CLI::App* app, CommonOptions& o, bool withStage) {
 void addLimitOptions(CLI::App* app, LimitOptions& limits) {
     app->add_option("--time-limit", limits.time,
                     "CPU seconds one stage of a submission may use in its worker: auto (default: " +
-                        std::to_string(int(kCpuFactor)) + " x what our shaders take for it, at least " +
+                        std::to_string(int(kCpuFactor)) +
+                        " x what our shaders take for it, at least " +
                         std::to_string(int(kCpuFloorSeconds)) + " s), a number, or 0 = no limit");
     app->add_option("--memory-limit", limits.memory,
                     "resident memory of one stage's worker in MB: auto (default: " +

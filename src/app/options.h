@@ -3,9 +3,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "grade/budget.h"
 #include "platform/headless.h"
 #include "render/request.h"
+#include "sandbox/budget.h"
 
 namespace sl {
 
@@ -25,15 +25,12 @@ void addCommonOptions(CLI::App* app, CommonOptions& o, bool withStage = true);
 RenderRequest toRequest(const CommonOptions& o);
 
 // --time-limit auto|SECONDS (CPU time) and --memory-limit auto|MB (resident) of the workers,
-// as text until the command runs: rule() turns them into the budget rule (grade/budget.h).
+// as text until the command runs: rule() turns them into the budget rule (sandbox/budget.h).
 struct LimitOptions {
     std::string time = "auto", memory = "auto";
     BudgetRule rule() const;
 };
 void addLimitOptions(CLI::App* app, LimitOptions& limits);
 Backend toBackend(const std::string& text);
-
-// Exit codes of the command-line contract.
-enum ExitCode { kOk = 0, kCheckFailed = 1, kBadInput = 2, kGlFailure = 3 };
 
 }  // namespace sl

@@ -9,8 +9,7 @@
 
 #include "gl/gl.h"
 #include "io/files.h"
-#include "metrics/image.h"
-#include "render/request.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

@@ -6,7 +6,8 @@
 #include <sstream>
 
 #include "bench/bench_output.h"
-#include "metrics/image.h"
+#include "io/files.h"
+#include "io/usage_error.h"
 #include "metrics/pareto.h"
 
 namespace sl {

@@ -6,7 +6,7 @@
 
 #include "course/csv.h"
 #include "io/files.h"
-#include "render/request.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "grade/plan.h"
+#include "io/usage_error.h"
 #include "render/request.h"
 
 namespace sl {

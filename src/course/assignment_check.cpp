@@ -8,8 +8,9 @@
 #include "course/intake_adapter.h"
 #include "course/late_policy.h"
 #include "course/student_grade.h"
-#include "grade/private_dir.h"
 #include "io/files.h"
+#include "io/usage_error.h"
+#include "sandbox/private_dir.h"
 
 namespace sl {
 

@@ -9,8 +9,9 @@
 #include <memory>
 #include <sstream>
 
+#include "io/data_paths.h"
 #include "io/files.h"
-#include "scene/scene_json.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

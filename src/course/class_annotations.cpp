@@ -9,6 +9,7 @@
 #include "course/late_policy.h"
 #include "course/release.h"
 #include "io/files.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

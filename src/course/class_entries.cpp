@@ -13,7 +13,7 @@
 #include "grade/intake.h"
 #include "io/content_hash.h"
 #include "io/files.h"
-#include "render/request.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

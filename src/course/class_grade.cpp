@@ -30,11 +30,12 @@
 #include "course/roster.h"
 #include "course/solution_check.h"
 #include "course/student_grade.h"
-#include "grade/private_dir.h"
-#include "grade/worker.h"
 #include "io/box.h"
 #include "io/content_hash.h"
 #include "io/files.h"
+#include "io/usage_error.h"
+#include "sandbox/private_dir.h"
+#include "sandbox/worker.h"
 #include "stages/expectations.h"
 
 namespace sl {

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "io/files.h"
-#include "render/request.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

@@ -9,7 +9,6 @@
 #include "course/archive.h"
 #include "grade/intake.h"
 #include "io/files.h"
-#include "render/request.h"
 
 namespace sl {
 

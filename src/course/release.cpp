@@ -8,9 +8,10 @@
 #include <sstream>
 
 #include "course/class_entries.h"
+#include "io/data_paths.h"
 #include "io/files.h"
+#include "io/usage_error.h"
 #include "render/request.h"
-#include "scene/scene_json.h"
 
 namespace sl {
 

@@ -7,7 +7,7 @@
 #include "course/csv.h"
 #include "course/student_grade.h"
 #include "io/files.h"
-#include "render/request.h"
+#include "io/usage_error.h"
 
 namespace sl {
 

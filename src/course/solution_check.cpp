@@ -15,10 +15,11 @@
 #include <stdexcept>
 
 #include "course/student_grade.h"
-#include "grade/private_dir.h"
 #include "grade/record.h"
 #include "io/box.h"
 #include "io/files.h"
+#include "io/usage_error.h"
+#include "sandbox/private_dir.h"
 
 namespace sl {
 

@@ -56,9 +56,6 @@ PassScope::PassScope(const char* name) : previous_(g_pass) {
 PassScope::~PassScope() {
     g_pass = previous_;
 }
-const char* currentPass() {
-    return g_pass;
-}
 
 void installGlDebugOutput(bool raisesStudentErrors) {
     g_raisesStudentErrors = raisesStudentErrors;

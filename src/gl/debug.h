@@ -24,7 +24,6 @@ class PassScope {
   private:
     const char* previous_;
 };
-const char* currentPass();
 
 // Errors seen since the last reset, from the callback and from glGetError polls.
 int glErrorCount();

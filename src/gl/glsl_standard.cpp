@@ -1,7 +1,6 @@
 #include "gl/glsl_standard.h"
 
 #include <glslang/Public/ShaderLang.h>
-#include <glslang/build_info.h>
 
 #include <cctype>
 #include <cstdio>
@@ -336,11 +335,6 @@ std::string quotedName(const std::string& message) {
 }
 
 }  // namespace
-
-std::string glslangVersion() {
-    return "glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
-           std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH);
-}
 
 StageTrees requireStandardGlsl(GlslTree tree, const GlslSource& vertex,
                                const GlslSource& fragment) {

@@ -36,7 +36,4 @@ struct StageTrees {
 // Returns both stages' syntax trees.
 StageTrees requireStandardGlsl(GlslTree tree, const GlslSource& vertex, const GlslSource& fragment);
 
-// The version glslang reports itself as, e.g. "glslang 12.0.0" (docs, `--version`-like notes).
-std::string glslangVersion();
-
 }  // namespace sl

@@ -4,20 +4,16 @@
 // and the terminal stay small whatever the submission.
 #pragma once
 
-#include <cstddef>
 #include <string>
 #include <vector>
 
+#include "io/files.h"  // capped, kMaxErrorText
+
 namespace sl {
 
-constexpr std::size_t kMaxRowMessage = 4096;  // a report row's message or note
+constexpr std::size_t kMaxRowMessage = 4096;       // a report row's message or note
 constexpr std::size_t kMaxInheritedMessage = 512;  // a row's copy of its stage's failure
-constexpr std::size_t kMaxErrorText = 16384;  // a full shader error on stderr
-constexpr std::size_t kMaxListedFiles = 32;   // student files named on one row
-
-// `text` whole when it holds at most `maxBytes`, else its first bytes (never splitting a UTF-8
-// character) and " [... N bytes cut]".
-std::string capped(const std::string& text, std::size_t maxBytes);
+constexpr std::size_t kMaxListedFiles = 32;        // student files named on one row
 
 // The first `kMaxListedFiles` of `files`, each capped, and "... and N more" when there were more.
 std::vector<std::string> cappedList(const std::vector<std::string>& files);

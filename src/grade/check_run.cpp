@@ -13,6 +13,8 @@
 #include "grade/judge.h"
 #include "grade/reports.h"
 #include "io/files.h"
+#include "io/png.h"
+#include "io/usage_error.h"
 #include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
 #include "stages/stage.h"

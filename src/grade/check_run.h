@@ -12,7 +12,7 @@
 
 #include "eval/evaluator.h"
 #include "grade/status.h"
-#include "grade/worker.h"
+#include "sandbox/worker.h"
 #include "stages/expectations.h"
 
 namespace sl {

@@ -9,11 +9,11 @@
 #include <set>
 
 #include "grade/bounds.h"
-#include "grade/private_dir.h"
 #include "grade/reports.h"
 #include "io/files.h"
 #include "io/json_fields.h"
-#include "metrics/image.h"
+#include "io/usage_error.h"
+#include "sandbox/private_dir.h"
 #include "scene/scene_json.h"
 #include "stages/stage.h"
 
@@ -95,7 +95,7 @@ std::vector<RenderRequest> allRequests(const StageCheckArgs& a, std::vector<std:
 // --diff FILE.png for the first row, FILE-<view>[-<settings>].png for the others.
 std::string diffFileOf(const CheckOutputs& out, const CheckCase& c, bool first,
                        const std::string& baseScene) {
-    if (c.request.stage == "mirror") return out.diff;  // judged without one: a note says so
+    if (c.request.stage == "mirror") return out.diff;  // its difference picture: --diff as given
     std::string slug = c.view;
     for (const auto& [name, value] : c.request.sets) slug += "-" + name + "=" + value;
     if (c.request.sceneGiven && c.request.scene != baseScene) slug += "-" + c.request.scene;

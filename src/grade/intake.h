@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "gl/shader_library.h"
-#include "grade/private_dir.h"
+#include "sandbox/private_dir.h"
 
 namespace sl {
 

@@ -6,7 +6,9 @@
 #include <memory>
 
 #include "eval/evaluator.h"
+#include "eval/job_errors.h"
 #include "grade/bounds.h"
+#include "io/data_paths.h"
 #include "io/files.h"
 #include "scene/scene_json.h"
 
@@ -100,17 +102,6 @@ CheckResult failedRow(const RenderRequest& r, Status status, const std::string& 
     return out;
 }
 
-// The results a worker sent for a job.
-std::vector<CheckResult> resultsOf(const WorkerOutcome& outcome) {
-    std::vector<CheckResult> results;
-    for (const auto& j : outcome.value.at("results")) {
-        results.push_back(checkResultFromJson(j));
-        results.back().backend = outcome.value.at("backend");
-        results.back().machine = outcome.value.at("machine");
-    }
-    return results;
-}
-
 // The rows of a job whose worker threw: the submission's ERROR, or the platform's (a GL failure
 // is never the student's: NOT GRADED).
 std::vector<CheckResult> errorRows(const RenderRequest& r, const WorkerOutcome& outcome) {
@@ -141,10 +132,14 @@ std::optional<JobCost> Calibration::ours(const std::vector<CheckCase>& cases, st
         const Limits limits = oursLimits(rule_);
         WorkerOutcome o;
         try {
-            o = runBounded(limits, [&] {
-                Evaluator rig(backend_);
-                return checkStageJob(rig, shipped, [](const CheckCase&) { return std::string(); });
-            });
+            o = runBounded(
+                limits,
+                [&] {
+                    Evaluator rig(backend_);
+                    return checkStageJob(rig, shipped,
+                                         [](const CheckCase&) { return std::string(); });
+                },
+                renderJobErrors());
         } catch (const std::exception& e) {  // the job threw: our data or the platform
             o.kind = WorkerOutcome::Kind::Error;
             o.errorWhat = e.what();
@@ -192,7 +187,7 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
         resolve = [&](std::size_t k, const WorkerOutcome& outcome, const Limits& limits,
                       bool retried) -> std::vector<CheckResult> {
         const RenderRequest& r = plan[k].front().request;
-        if (outcome.kind == WorkerOutcome::Kind::Ok) return resultsOf(outcome);
+        if (outcome.kind == WorkerOutcome::Kind::Ok) return workerResults(outcome);
         if (outcome.kind == WorkerOutcome::Kind::Error) return errorRows(r, outcome);
         const std::string what = "stage " + r.stage + " (" + treeName(r.tree) + ")";
         const std::string line = workerFailureLine(what, outcome, limits);
@@ -222,7 +217,7 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
         if (!retried && stoppedAtFloor(rule, outcome) && raised) {
             WorkerOutcome again;
             runBoundedSeries(
-                budget, 1, [&](std::size_t) { return job(k); },
+                budget, 1, [&](std::size_t) { return job(k); }, renderJobErrors(),
                 [&](std::size_t, const WorkerOutcome& o) { again = o; });
             rig.reset();
             return resolve(k, again, budget, true);
@@ -237,9 +232,21 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
         std::cerr << "shadowlab: " << text << "\n";
         return {failedRow(r, failureStatus(outcome), text, outcome.seconds)};
     };
-    runBoundedSeries(first, plan.size(), job, [&](std::size_t k, const WorkerOutcome& outcome) {
-        each(k, resolve(k, outcome, first, false));
-    });
+    runBoundedSeries(first, plan.size(), job, renderJobErrors(),
+                     [&](std::size_t k, const WorkerOutcome& outcome) {
+                         each(k, resolve(k, outcome, first, false));
+                     });
+}
+
+std::vector<CheckResult> workerResults(const WorkerOutcome& outcome) {
+    std::vector<CheckResult> results;
+    for (const auto& j : outcome.value.at("results")) {
+        results.push_back(checkResultFromJson(j));
+        boundResult(results.back());  // the worker caps its rows; the parent never trusts it to
+        results.back().backend = outcome.value.at("backend");
+        results.back().machine = outcome.value.at("machine");
+    }
+    return results;
 }
 
 }  // namespace sl

@@ -1,5 +1,5 @@
-// Stages evaluated in bounded workers (grade/worker.h) under budgets calibrated on our shipped
-// shaders (grade/budget.h), with the platform's failures told apart from the submission's:
+// Stages evaluated in bounded workers (sandbox/worker.h) under budgets calibrated on our shipped
+// shaders (sandbox/budget.h), with the platform's failures told apart from the submission's:
 // when our own shaders cannot finish a job, its rows are NOT GRADED (no score, exit 3, a rerun
 // grades them), never the student's TIMEOUT or CRASH.
 #pragma once
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "grade/budget.h"
 #include "grade/check_run.h"
 #include "platform/headless.h"
+#include "sandbox/budget.h"
 
 namespace sl {
 
@@ -42,6 +42,11 @@ class Calibration {
 // A row naming what `r` checks (its settings, scene, camera, expectation) with nothing measured:
 // the row of a stage that was not rendered (MISSING) or whose job gave no results.
 CheckResult unrenderedResult(const RenderRequest& r);
+
+// The rows a worker sent back for a job (its "results", with the worker's backend and machine),
+// each bounded by boundResult: whatever a worker sends, the parent keeps rows of bounded size.
+// Throws std::invalid_argument (or nlohmann's exception) on a malformed reply.
+std::vector<CheckResult> workerResults(const WorkerOutcome& outcome);
 
 // Every job of `plan` (one stage and tree's cases each) evaluated in bounded workers: one worker
 // goes through them in order, reusing its evaluator (contexts, references) until a job fails. A

@@ -175,6 +175,10 @@ std::string writeFileAtomically(const std::string& path, const void* data, std::
     return {};
 }
 
+std::string writeTextFile(const std::string& path, const std::string& text) {
+    return writeFileAtomically(path, text.data(), text.size());
+}
+
 std::string printable(const std::string& text) {
     std::string out = text;
     for (char& c : out) {
@@ -253,6 +257,14 @@ std::string printableName(const std::string& name) {
         if (u < 0x20 || u == 0x7f) c = '?';
     }
     return out;
+}
+
+std::string capped(const std::string& text, std::size_t maxBytes) {
+    if (text.size() <= maxBytes) return text;
+    std::size_t keep = maxBytes;
+    // Back up over continuation bytes (10xxxxxx) so the cut falls between characters.
+    while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80) --keep;
+    return text.substr(0, keep) + " [... " + std::to_string(text.size() - keep) + " bytes cut]";
 }
 
 }  // namespace sl

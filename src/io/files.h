@@ -29,6 +29,16 @@ std::string outputPathProblem(const std::string& path);
 // nothing is left. Returns "" or the error.
 std::string writeFileAtomically(const std::string& path, const void* data, std::size_t size);
 
+// Writes text atomically, as writeFileAtomically does.
+std::string writeTextFile(const std::string& path, const std::string& text);
+
+// The longest error text shown whole: a shader's log on stderr, a worker's error for its parent.
+constexpr std::size_t kMaxErrorText = 16384;
+
+// `text` whole when it holds at most `maxBytes`, else its first bytes (never splitting a UTF-8
+// character) and " [... N bytes cut]".
+std::string capped(const std::string& text, std::size_t maxBytes);
+
 // `text` with control characters (other than newline and tab) replaced by '?': for terminal
 // output of anything that came from a file (compiler logs, file names).
 std::string printable(const std::string& text);

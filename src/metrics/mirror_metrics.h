@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "metrics/image.h"
+#include "io/image.h"
 #include "reference/raytracer.h"
 #include "scene/scene.h"
 

@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "io/image.h"
 #include "math/camera.h"
 #include "metrics/distance.h"
-#include "metrics/image.h"
 #include "reference/raytracer.h"
 
 namespace sl {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "gl/shader_library.h"
-#include "metrics/image.h"
+#include "io/image.h"
 
 namespace sl {
 

@@ -248,11 +248,6 @@ bool blockedOnTheWay(const SceneIndex& index, const glm::vec3& position, const g
 
 }  // namespace
 
-bool intersectScene(const Scene& scene, const Ray& ray, float tMax, bool includeMirror,
-                    RayHit& hit) {
-    return nearestHit(SceneIndex(scene), ray, tMax, includeMirror, hit);
-}
-
 bool shadowRayBlocked(const Scene& scene, const glm::vec3& position, const glm::vec3& normal,
                       const glm::vec3& lightPosition) {
     return blockedOnTheWay(SceneIndex(scene), position, normal, lightPosition);
@@ -305,11 +300,6 @@ void markSilhouettes(const SceneIndex& index, const Camera& camera, const glm::v
 }
 
 }  // namespace
-
-void markSilhouetteShadowEdges(const Scene& scene, const Camera& camera,
-                               const glm::vec3& lightPosition, ReferenceImage& image) {
-    markSilhouettes(SceneIndex(scene), camera, lightPosition, image);
-}
 
 ReferenceImage traceReference(const Scene& scene, const Camera& camera,
                               const glm::vec3& lightPosition, int width, int height, int threads) {

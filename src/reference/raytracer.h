@@ -5,8 +5,8 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "io/image.h"
 #include "math/camera.h"
-#include "metrics/image.h"
 #include "scene/scene.h"
 
 namespace sl {
@@ -61,11 +61,6 @@ struct RayHit {
     glm::vec3 normal{0.0f};
 };
 
-// Nearest hit along `ray` with t in (kRayEpsilon, tMax). The mirror is considered only when
-// `includeMirror` is true. Returns false when nothing is hit.
-bool intersectScene(const Scene& scene, const Ray& ray, float tMax, bool includeMirror,
-                    RayHit& hit);
-
 // The shadow test for a surface point: a ray starts at position + normal * kShadowOffset and
 // heads for the light; the point is blocked when an object with castsShadow is hit with t in
 // (kRayEpsilon, distance to the light). The offset keeps the ray from finding its own surface;
@@ -80,10 +75,6 @@ bool shadowRayBlocked(const Scene& scene, const glm::vec3& position, const glm::
 ReferenceImage traceReference(const Scene& scene, const Camera& camera,
                               const glm::vec3& lightPosition, int width, int height,
                               int threads = 0);
-
-// The second pass of traceReference: sets shadowEdgeAtSilhouette on every pixel of `image`.
-void markSilhouetteShadowEdges(const Scene& scene, const Camera& camera,
-                               const glm::vec3& lightPosition, ReferenceImage& image);
 
 // A Phong picture of the reference: ambient + diffuse + specular with scene.material and white
 // light; diffuse and specular are dropped where the point is blocked or faces away. Mirror

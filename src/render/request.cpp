@@ -4,6 +4,8 @@
 
 #include <sstream>
 
+#include "io/data_paths.h"
+#include "io/usage_error.h"
 #include "scene/displace.h"
 #include "scene/scene_json.h"
 

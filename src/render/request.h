@@ -4,17 +4,11 @@
 
 #include <cstdint>
 #include <optional>
-#include <stdexcept>
 #include <utility>
 
 #include "render/renderer.h"
 
 namespace sl {
-
-class UsageError : public std::runtime_error {
-  public:
-    using std::runtime_error::runtime_error;
-};
 
 struct RenderRequest {
     std::string stage = "phong";

@@ -22,9 +22,4 @@ Scene loadScene(const std::string& nameOrPath);
 // Names of the built-in scenes (files in <data>/scenes).
 std::vector<std::string> builtInScenes();
 
-// The folder holding shaders_core/, shaders_legacy/, scenes/ and slides_examples/:
-// $SHADOWLAB_DATA_DIR, else ../share/shadowlab beside the executable (an installed copy), else
-// the source tree the program was built from (unless $SHADOWLAB_NO_SOURCE_DIR is set).
-std::string dataDir();
-
 }  // namespace sl

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "io/data_paths.h"
 #include "scene/scene_json.h"
 #include "stages/stage.h"
 

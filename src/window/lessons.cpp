@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "io/data_paths.h"
 #include "scene/scene_json.h"
 #include "stages/expectations.h"
 #include "window/window_args.h"

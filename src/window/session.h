@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "metrics/image.h"
+#include "io/image.h"
 #include "platform/glut_window.h"
 #include "render/hud.h"
 #include "window/watchdog.h"

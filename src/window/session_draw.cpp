@@ -6,9 +6,9 @@
 #include <iostream>
 #include <set>
 
+#include "io/png.h"
 #include "math/mirror_topview.h"
 #include "math/orbit.h"
-#include "metrics/image.h"
 #include "metrics/mirror_figure.h"
 #include "window/session.h"
 #include "window/window_text.h"

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "metrics/image.h"
+#include "io/png.h"
 #include "window/session.h"
 #include "window/window_text.h"
 

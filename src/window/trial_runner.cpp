@@ -13,9 +13,10 @@
 #include <mutex>
 #include <thread>
 
+#include "eval/job_errors.h"
 #include "gl/debug.h"
-#include "grade/worker.h"
 #include "render/request.h"
+#include "sandbox/worker.h"
 
 namespace sl {
 
@@ -164,8 +165,9 @@ Limits windowLimits(const BudgetRule& rule, const std::optional<JobCost>& ours) 
 // waits for the process to go: an abandoned one is destroyed on a thread of its own.
 struct TrialRunner::Series {
     Series(const Limits& limits, Backend backend, const TrialJob& job)
-        : background(limits, 1,
-                     [backend, job](std::size_t) { return drawInWorker(backend, job); }) {}
+        : background(
+              limits, 1, [backend, job](std::size_t) { return drawInWorker(backend, job); },
+              renderJobErrors()) {}
     BackgroundSeries background;
 };
 

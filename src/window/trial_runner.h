@@ -1,8 +1,8 @@
 // The window's watchdog worker. A shader that loops makes the draw call spin inside the driver,
 // one that crashes the compiler kills the process: neither may reach the window's own context.
-// So a changed stage is first drawn by a bounded worker (a child process, grade/worker.h), at
+// So a changed stage is first drawn by a bounded worker (a child process, sandbox/worker.h), at
 // the window's size, every view and the HUD, and the window adopts its new programs only when
-// they drew there. The budget follows grading's rule (grade/budget.h): CPU time, never a fixed
+// they drew there. The budget follows grading's rule (sandbox/budget.h): CPU time, never a fixed
 // wall clock, k x what our shipped shaders take for the same job (measured here, in the same
 // worker, once per stage, tree, scene, settings and size, and remembered), with a floor that
 // suits one interactive frame.
@@ -15,9 +15,9 @@
 #include <utility>
 #include <vector>
 
-#include "grade/budget.h"
-#include "grade/worker.h"
 #include "platform/headless.h"
+#include "sandbox/budget.h"
+#include "sandbox/worker.h"
 
 namespace sl {
 

@@ -125,10 +125,6 @@ std::string Watchdog::lost(GlslTree tree, const std::string& stage) const {
     const Record* r = find(tree, stage);
     return r ? r->lost : "";
 }
-bool Watchdog::studentStage(GlslTree tree, const std::string& stage) const {
-    const Record* r = find(tree, stage);
-    return r && r->student;
-}
 
 Sets Watchdog::drawable(GlslTree tree, const std::string& stage, const Sets& sets) const {
     const Record* r = find(tree, stage);

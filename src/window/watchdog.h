@@ -70,8 +70,6 @@ class Watchdog {
     Sets drawable(GlslTree tree, const std::string& stage, const Sets& sets) const;
     bool valuePending(GlslTree tree, const std::string& stage, const Sets& sets) const;
     std::string valueRefused(GlslTree tree, const std::string& stage, const Sets& sets) const;
-    // The student's files take part in the stage (its values are tried too).
-    bool studentStage(GlslTree tree, const std::string& stage) const;
     // Something of these trees still waits for a trial (scripted runs wait for it).
     bool busy(const OnScreen& screen, GlslTree sessionTree) const;
     bool running() const { return runner_.running(); }

@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include "grade/budget.h"
 #include "platform/headless.h"
 #include "render/request.h"
+#include "sandbox/budget.h"
 
 namespace sl {
 

@@ -7,6 +7,7 @@
 
 #include "gl/debug.h"
 #include "gl/gl.h"
+#include "io/usage_error.h"
 #include "platform/glut_window.h"
 #include "window/session.h"
 

@@ -19,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-#include "metrics/image.h"
+#include "io/image.h"
 
 // Last: its macros (None, Bool, Status...) would clash with gtest's headers.
 #include <X11/Xlib.h>   // NOLINT(llvm-include-order)

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "metrics/image.h"
+#include "io/image.h"
 #include "render/request.h"
 
 namespace sl::test {

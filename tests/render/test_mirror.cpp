@@ -10,6 +10,8 @@
 #include <regex>
 
 #include "gl/debug.h"
+#include "io/data_paths.h"
+#include "io/png.h"
 #include "math/camera.h"
 #include "math/mirror_math.h"
 #include "metrics/mirror_metrics.h"

@@ -7,6 +7,7 @@
 #include "render_fixture.h"
 
 // Last: it includes Xlib, whose macros (None, Bool, Status...) would clash with gtest's headers.
+#include "io/png.h"
 #include "live_window.h"  // NOLINT(llvm-include-order)
 
 using namespace sl;

@@ -2,9 +2,11 @@
 // formats name and describe it.
 #include <gtest/gtest.h>
 
+#include "grade/bounds.h"
+#include "grade/check_run.h"
 #include "grade/record.h"
 #include "grade/reports.h"
-#include "grade/check_run.h"
+#include "grade/stage_runs.h"
 #include "stages/stage.h"
 
 namespace sl {
@@ -98,6 +100,25 @@ TEST(CheckJson, AMalformedResultIsRefused) {
     nlohmann::json badEntry = j;
     badEntry["expectation"]["entry"] = "rgb margin=0.07";
     EXPECT_THROW(checkResultFromJson(badEntry), std::invalid_argument);
+}
+
+// The parent bounds what a worker sends back: a row past the bounds is cut, not kept whole.
+TEST(CheckJson, AWorkersRowOverTheBoundIsCut) {
+    CheckResult r = judgedRgb();
+    r.message = std::string(100000, 'm');
+    r.note = std::string(100000, 'n');
+    for (int k = 0; k < 100; ++k) r.studentFiles.push_back("shader" + std::to_string(k) + ".frag");
+    WorkerOutcome outcome;
+    outcome.value = {{"results", {checkJson(r)}}, {"backend", "EGL"}, {"machine", "box"}};
+    std::vector<CheckResult> rows = workerResults(outcome);
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0].message, capped(r.message, kMaxRowMessage));
+    EXPECT_LT(rows[0].message.size(), kMaxRowMessage + 64);
+    EXPECT_NE(rows[0].message.find("bytes cut]"), std::string::npos);
+    EXPECT_EQ(rows[0].note, capped(r.note, kMaxRowMessage));
+    EXPECT_EQ(rows[0].studentFiles.size(), kMaxListedFiles + 1);  // "... and 68 more"
+    EXPECT_EQ(rows[0].backend, "EGL");
+    EXPECT_EQ(rows[0].machine, "box");
 }
 
 TEST(CheckFormats, TheTestNameCarriesSettingsThatAreNotTheDefaults) {

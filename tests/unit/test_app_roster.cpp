@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "course/roster.h"
-#include "render/request.h"
+#include "io/usage_error.h"
 
 namespace sl {
 namespace {

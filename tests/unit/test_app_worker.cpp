@@ -7,13 +7,23 @@
 #include <chrono>
 #include <vector>
 
+#include "eval/job_errors.h"
 #include "gl/shader_library.h"
-#include "grade/worker.h"
-#include "render/request.h"
+#include "io/usage_error.h"
+#include "sandbox/worker.h"
 #include "scene/scene_json.h"
 
 namespace sl {
 namespace {
+
+// The worker as render, check and the window run it: the renderer's exceptions carried.
+WorkerOutcome runBounded(const Limits& l, const std::function<nlohmann::json()>& job) {
+    return sl::runBounded(l, job, renderJobErrors());
+}
+void runBoundedSeries(const Limits& l, std::size_t count, const SeriesJob& job,
+                      const std::function<void(std::size_t, const WorkerOutcome&)>& done) {
+    sl::runBoundedSeries(l, count, job, renderJobErrors(), done);
+}
 
 // CPU time and the wall-clock backstop alike, and resident memory.
 Limits limits(double seconds, long memoryMb) {
@@ -53,6 +63,23 @@ TEST(Worker, TheJobsExceptionsKeepTheirType) {
         FAIL() << "a GL failure became bad input";
     } catch (const std::runtime_error& e) {
         EXPECT_STREQ(e.what(), "gl broke");
+    }
+}
+
+// The sandbox alone knows no renderer: a shader error is then any runtime failure.
+TEST(Worker, KindsTheCallerDoesNotNameAreTheSandboxs) {
+    const JobErrorKinds none;
+    EXPECT_THROW(sl::runBounded(
+                     limits(5, 512), []() -> nlohmann::json { throw UsageError("bad"); }, none),
+                 UsageError);
+    try {
+        sl::runBounded(
+            limits(5, 512), []() -> nlohmann::json { throw ShaderError("x"); }, none);
+        FAIL() << "no exception";
+    } catch (const ShaderError&) {
+        FAIL() << "the sandbox named a kind it was not given";
+    } catch (const std::runtime_error& e) {
+        EXPECT_STREQ(e.what(), "x");
     }
 }
 
@@ -199,7 +226,7 @@ TEST(Worker, AnExceptionInASeriesIsThatJobsOutcome) {
     EXPECT_EQ(outcomes[1].errorWhat, "bad");
     ASSERT_EQ(outcomes[2].kind, WorkerOutcome::Kind::Ok);
     EXPECT_EQ(outcomes[2].value.get<int>(), 2);
-    EXPECT_THROW(rethrowJobError(outcomes[1]), UsageError);
+    EXPECT_THROW(rethrowJobError(outcomes[1], renderJobErrors()), UsageError);
 }
 
 TEST(Worker, NoLimitsMeansNone) {

@@ -1,11 +1,11 @@
-#include "grade/budget.h"
+#include "sandbox/budget.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
-#include "render/request.h"
+#include "io/usage_error.h"
 
 namespace sl {
 
@@ -74,14 +74,15 @@ bool stoppedAtFloor(const BudgetRule& rule, const WorkerOutcome& o) {
 
 std::string budgetExplained(const BudgetRule& rule, const JobCost& ours, bool cpu) {
     std::string cpuText = rule.cpuSeconds ? "fixed by --time-limit"
-                                       : "the larger of " + std::to_string(int(kCpuFactor)) +
-                                             " x our shaders' " + seconds(ours.cpuSeconds) +
-                                             " and " + seconds(kCpuFloorSeconds);
-    std::string mem = rule.memoryMb ? "fixed by --memory-limit"
-                                    : "the larger of " + std::to_string(int(kMemoryFactor)) +
-                                          " x our " + std::to_string(ours.peakMb) + " MB and " +
-                                          std::to_string(kMemoryFloorMb) + " MB, within the " +
-                                          std::to_string(rule.memoryCeilingMb) + " MB the box gives";
+                                          : "the larger of " + std::to_string(int(kCpuFactor)) +
+                                                " x our shaders' " + seconds(ours.cpuSeconds) +
+                                                " and " + seconds(kCpuFloorSeconds);
+    std::string mem = rule.memoryMb
+                          ? "fixed by --memory-limit"
+                          : "the larger of " + std::to_string(int(kMemoryFactor)) + " x our " +
+                                std::to_string(ours.peakMb) + " MB and " +
+                                std::to_string(kMemoryFloorMb) + " MB, within the " +
+                                std::to_string(rule.memoryCeilingMb) + " MB the box gives";
     return cpu ? "CPU time " + cpuText : "memory " + mem;
 }
 

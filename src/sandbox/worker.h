@@ -7,9 +7,10 @@
 // included) does not grow when other processes share the cores, and resident memory is what a
 // container's cgroup charges (an address-space limit counts what llvmpipe's threads and a GPU
 // driver merely reserve). The wall clock is only a backstop for a worker that waits on nothing
-// (grade/budget.h sets it generously).
+// (sandbox/budget.h sets it generously).
 #pragma once
 
+#include <exception>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -24,10 +25,20 @@ struct Limits {
     long memoryMb = 0;       // resident memory of the worker while a job runs; 0 = none
 };
 
+// How a job's exception crosses from the worker to its parent, by kind and message, and back
+// into an exception of its type, so the exit codes stay what they would be without the worker.
+// The sandbox knows UsageError ("usage"), std::invalid_argument and any other std::exception
+// ("runtime"); the floors above name their own types first (eval/job_errors.h: the renderer's
+// "shader", "scene", "expectation").
+struct JobErrorKinds {
+    // The kind of the exception in `error` (rethrown inside), or "" when it is none of these.
+    std::function<std::string(const std::exception_ptr& error)> kindOf;
+    // Throws the exception of `kind` with `what`; returns when `kind` is none of these.
+    std::function<void(const std::string& kind, const std::string& what)> raise;
+};
+
 // How a worker ended. Ok carries the job's value; Error an exception the job threw, by kind
-// ("shader", "scene", "usage", "expectation", "invalid_argument", "runtime") and message:
-// rethrowJobError throws it again with its type (UsageError, SceneError, ShaderError, ...), so
-// the exit codes stay what they would be without the worker; runBounded does.
+// (JobErrorKinds) and message: rethrowJobError throws it again with its type; runBounded does.
 struct WorkerOutcome {
     enum class Kind {
         Ok,
@@ -52,12 +63,13 @@ struct WorkerOutcome {
 };
 
 // Throws an Error outcome's exception again, with its type.
-[[noreturn]] void rethrowJobError(const WorkerOutcome& outcome);
+[[noreturn]] void rethrowJobError(const WorkerOutcome& outcome, const JobErrorKinds& kinds);
 
 // Forks, and in the child applies the limits, runs `job`, sends its value back through a pipe
 // and _exits; the parent waits up to the time limit, then kills the child's process group.
 // Flushes stdout and stderr before forking (the child prints to the same ones).
-WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::json()>& job);
+WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::json()>& job,
+                         const JobErrorKinds& kinds);
 
 // job(0) ... job(count - 1) in order, each under the limits of one job, in as few workers as
 // may be: one worker runs them one after the other and sends each value back as it finishes,
@@ -67,6 +79,7 @@ WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::jso
 // called for each, in order.
 using SeriesJob = std::function<nlohmann::json(std::size_t)>;
 void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& job,
+                      const JobErrorKinds& kinds,
                       const std::function<void(std::size_t, const WorkerOutcome&)>& done);
 
 // Workers started after this keep Mesa's shader cache in `folder` (a private one the caller
@@ -78,7 +91,7 @@ void useShaderCacheFolder(const std::string& folder);
 // the first job that fails (its outcome is the last). The destructor kills a running worker.
 class BackgroundSeries {
   public:
-    BackgroundSeries(const Limits& limits, std::size_t count, SeriesJob job);
+    BackgroundSeries(const Limits& limits, std::size_t count, SeriesJob job, JobErrorKinds kinds);
     ~BackgroundSeries();
     BackgroundSeries(const BackgroundSeries&) = delete;
     BackgroundSeries& operator=(const BackgroundSeries&) = delete;
@@ -92,6 +105,7 @@ class BackgroundSeries {
     Limits limits_;
     std::size_t count_;
     SeriesJob job_;
+    JobErrorKinds kinds_;
     std::vector<WorkerOutcome> outcomes_;
     std::unique_ptr<Running> running_;
     bool failed_ = false;

@@ -1,4 +1,4 @@
-#include "grade/worker.h"
+#include "sandbox/worker.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -22,11 +22,8 @@
 #include <optional>
 #include <stdexcept>
 
-#include "gl/shader_library.h"
-#include "grade/bounds.h"
-#include "render/request.h"
-#include "scene/scene_json.h"
-#include "stages/expectations.h"
+#include "io/files.h"
+#include "io/usage_error.h"
 
 namespace sl {
 
@@ -34,36 +31,36 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The exception kinds carried from the child to the parent, most derived first.
-std::pair<std::string, std::string> classify(const std::exception_ptr& error) {
+// The exception kinds carried from the child to the parent: the caller's first (the most
+// derived), then the sandbox's own.
+std::pair<std::string, std::string> classify(const std::exception_ptr& error,
+                                             const JobErrorKinds& kinds) {
     try {
         std::rethrow_exception(error);
-    } catch (const ShaderError& e) {
-        return {"shader", e.what()};
-    } catch (const SceneError& e) {
-        return {"scene", e.what()};
+    } catch (const std::exception& e) {
+        std::string kind = kinds.kindOf ? kinds.kindOf(error) : std::string();
+        if (!kind.empty()) return {kind, e.what()};
+    } catch (...) {
+        return {"runtime", "an unknown exception in the worker"};
+    }
+    try {
+        std::rethrow_exception(error);
     } catch (const UsageError& e) {
         return {"usage", e.what()};
-    } catch (const ExpectationError& e) {
-        return {"expectation", e.what()};
     } catch (const std::invalid_argument& e) {
         return {"invalid_argument", e.what()};
     } catch (const std::exception& e) {
         return {"runtime", e.what()};
-    } catch (...) {
-        return {"runtime", "an unknown exception in the worker"};
     }
 }
 
 }  // namespace
 
-[[noreturn]] void rethrowJobError(const WorkerOutcome& outcome) {
+[[noreturn]] void rethrowJobError(const WorkerOutcome& outcome, const JobErrorKinds& kinds) {
     const std::string& kind = outcome.errorKind;
     const std::string& what = outcome.errorWhat;
-    if (kind == "shader") throw ShaderError(what);
-    if (kind == "scene") throw SceneError(what);
+    if (kinds.raise) kinds.raise(kind, what);  // returns when the kind is not one of the caller's
     if (kind == "usage") throw UsageError(what);
-    if (kind == "expectation") throw ExpectationError(what);
     if (kind == "invalid_argument") throw std::invalid_argument(what);
     throw std::runtime_error(what);
 }
@@ -129,8 +126,8 @@ void writeAll(int fd, const std::string& text) {
 
 // The child: jobs [first, count) in order, one line of JSON for each as it finishes; it stops
 // after a job that threw (the parent rethrows) or ran out of memory.
-[[noreturn]] void runChild(const Limits& limits, const SeriesJob& job, std::size_t first,
-                           std::size_t count, int fd, pid_t parent) {
+[[noreturn]] void runChild(const Limits& limits, const SeriesJob& job, const JobErrorKinds& kinds,
+                           std::size_t first, std::size_t count, int fd, pid_t parent) {
     ::setpgid(0, 0);  // its own group: a timeout kills whatever it started too
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(125);  // the parent died before prctl
@@ -162,10 +159,10 @@ void writeAll(int fd, const std::string& text) {
             } catch (const std::bad_alloc&) {
                 reply = {{"oom", true}};
             } catch (...) {
-                auto [kind, what] = classify(std::current_exception());
+                auto [kind, what] = classify(std::current_exception(), kinds);
                 reply = {{"error", {{"kind", kind}, {"what", capped(what, kMaxErrorText)}}}};
             }
-            // What the job cost: the parent's budgets are calibrated on these (grade/budget.h).
+            // What the job cost: the parent's budgets are calibrated on these (sandbox/budget.h).
             const double cpuAfter = ownCpuSeconds();
             reply["cpu"] = cpuAfter - cpuBefore;
             reply["cpu_total"] = cpuAfter;
@@ -418,7 +415,8 @@ namespace {
 // current job has used so far.
 class Worker {
   public:
-    Worker(const Limits& limits, const SeriesJob& job, std::size_t first, std::size_t count)
+    Worker(const Limits& limits, const SeriesJob& job, const JobErrorKinds& kinds,
+           std::size_t first, std::size_t count)
         : limits_(limits) {
         std::cout.flush();  // else the child inherits unwritten output and writes it twice
         std::cerr.flush();
@@ -436,7 +434,7 @@ class Worker {
         }
         if (pid_ == 0) {
             ::close(fds[0]);
-            runChild(limits, job, first, count, fds[1], parent);
+            runChild(limits, job, kinds, first, count, fds[1], parent);
         }
         ::setpgid(pid_, pid_);  // as the child does: whichever runs first
         ::close(fds[1]);
@@ -600,8 +598,9 @@ struct BackgroundSeries::Running {
     Clock::time_point since;
 };
 
-BackgroundSeries::BackgroundSeries(const Limits& limits, std::size_t count, SeriesJob job)
-    : limits_(limits), count_(count), job_(std::move(job)) {}
+BackgroundSeries::BackgroundSeries(const Limits& limits, std::size_t count, SeriesJob job,
+                                   JobErrorKinds kinds)
+    : limits_(limits), count_(count), job_(std::move(job)), kinds_(std::move(kinds)) {}
 
 BackgroundSeries::~BackgroundSeries() = default;  // ~Worker kills and reaps a running child
 
@@ -610,7 +609,8 @@ bool BackgroundSeries::poll() {
     while (outcomes_.size() < count_) {
         if (!running_) {  // a fresh worker for the next job (the first, or after a failure)
             running_ = std::make_unique<Running>();
-            running_->worker = std::make_unique<Worker>(limits_, job_, outcomes_.size(), count_);
+            running_->worker =
+                std::make_unique<Worker>(limits_, job_, kinds_, outcomes_.size(), count_);
             running_->since = Clock::now();
         }
         // Only what has arrived: a deadline already past makes nextLine return at once, so
@@ -640,10 +640,11 @@ bool BackgroundSeries::poll() {
 }
 
 void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& job,
+                      const JobErrorKinds& kinds,
                       const std::function<void(std::size_t, const WorkerOutcome&)>& done) {
     std::size_t k = 0;
     while (k < count) {
-        auto worker = std::make_unique<Worker>(limits, job, k, count);
+        auto worker = std::make_unique<Worker>(limits, job, kinds, k, count);
         auto since = Clock::now();
         for (;;) {
             std::string line;
@@ -668,12 +669,13 @@ void runBoundedSeries(const Limits& limits, std::size_t count, const SeriesJob& 
     }
 }
 
-WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::json()>& job) {
+WorkerOutcome runBounded(const Limits& limits, const std::function<nlohmann::json()>& job,
+                         const JobErrorKinds& kinds) {
     WorkerOutcome outcome;
     runBoundedSeries(
-        limits, 1, [&](std::size_t) { return job(); },
+        limits, 1, [&](std::size_t) { return job(); }, kinds,
         [&](std::size_t, const WorkerOutcome& o) { outcome = o; });
-    if (outcome.kind == WorkerOutcome::Kind::Error) rethrowJobError(outcome);
+    if (outcome.kind == WorkerOutcome::Kind::Error) rethrowJobError(outcome, kinds);
     return outcome;
 }
 

@@ -1,4 +1,4 @@
-#include "metrics/image.h"
+#include "io/png.h"
 
 #include <png.h>
 #include <stb_image.h>
@@ -72,10 +72,6 @@ std::string readPng(const std::string& path, Image& image) {
     std::memcpy(image.rgba.data(), data, image.rgba.size());
     stbi_image_free(data);
     return {};
-}
-
-std::string writeTextFile(const std::string& path, const std::string& text) {
-    return writeFileAtomically(path, text.data(), text.size());
 }
 
 }  // namespace sl

@@ -13,18 +13,18 @@
 #include <optional>
 #include <string>
 
-#include "grade/worker.h"
+#include "sandbox/worker.h"
 
 namespace sl {
 
 // k and the floors (measured: docs/check.md "Budgets").
-constexpr double kCpuFactor = 8;            // a submission's CPU time: 8 x ours ...
-constexpr double kCpuFloorSeconds = 30;     // ... and at least 30 s
-constexpr double kMemoryFactor = 2;         // resident memory: 2 x our peak ...
-constexpr long kMemoryFloorMb = 512;        // ... and at least 512 MB, within the box
-constexpr double kWallFactor = 10;          // the wall-clock backstop: 10 x the CPU budget ...
-constexpr double kWallFloorSeconds = 300;   // ... and at least 300 s
-constexpr double kOursWallSeconds = 900;    // our own shaders: the backstop alone
+constexpr double kCpuFactor = 8;           // a submission's CPU time: 8 x ours ...
+constexpr double kCpuFloorSeconds = 30;    // ... and at least 30 s
+constexpr double kMemoryFactor = 2;        // resident memory: 2 x our peak ...
+constexpr long kMemoryFloorMb = 512;       // ... and at least 512 MB, within the box
+constexpr double kWallFactor = 10;         // the wall-clock backstop: 10 x the CPU budget ...
+constexpr double kWallFloorSeconds = 300;  // ... and at least 300 s
+constexpr double kOursWallSeconds = 900;   // our own shaders: the backstop alone
 
 // How the limits are chosen: each one fixed by the user, or calibrated (auto).
 struct BudgetRule {

@@ -1,4 +1,4 @@
-#include "grade/private_dir.h"
+#include "sandbox/private_dir.h"
 
 #include <dirent.h>
 #include <fcntl.h>

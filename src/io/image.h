@@ -2,7 +2,6 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace sl {
@@ -24,15 +23,5 @@ struct Image {
     // Rec. 601 luma of pixel (i, j) in [0, 255].
     float luma(int i, int j) const { return rec601Luma(at(i, j)); }
 };
-
-// Writes a PNG atomically: into a temporary file beside `path`, renamed over it only when
-// complete, so a failure never leaves a partial file. Returns an empty string or the error.
-std::string writePng(const std::string& path, const Image& image);
-
-// Reads a PNG as RGBA8. Returns an empty string or the error.
-std::string readPng(const std::string& path, Image& image);
-
-// Writes text atomically, as writePng does.
-std::string writeTextFile(const std::string& path, const std::string& text);
 
 }  // namespace sl
