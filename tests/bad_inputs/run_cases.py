@@ -246,7 +246,13 @@ def run_and_kill(exe, args, case, stdin, tmp):
                          stdin=stdin, env=env,
                          preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     time.sleep(seconds)
+    # Then until a worker runs (bounded): a slower build (AddressSanitizer's) may still be
+    # calibrating when the fixed delay is over, and the case is about killing a run mid-grade.
+    deadline = time.monotonic() + case.timeout / 2
     workers = shadowlab_processes_under(p.pid)
+    while not workers and p.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.05)
+        workers = shadowlab_processes_under(p.pid)
     WORKER_GROUPS[p.pid] = set(workers)
     problems = [] if workers else ["no worker was running when the signal came"]
     p.send_signal(sig)
