@@ -3,6 +3,16 @@
 import subprocess, sys
 
 failures = []
+checks = 0  # how many `check` calls passed
+
+
+def check(label, ok, detail=""):
+    """One named check, printed; the first that fails ends the test (exit 1) with its detail."""
+    global checks
+    checks += 1
+    print(("ok:   " if ok else "FAIL: ") + label + ("" if ok else " -- " + str(detail)[:1500]))
+    if not ok:
+        sys.exit(1)
 
 
 def expect(ok, what):

@@ -28,15 +28,8 @@ json.dump({"name": "margin only",
            "stages": [{"stage": "margin", "tree": "core", "files": ["margin/lit.frag"], "points": 10,
                        "lessons": {"margin margin-kind=slope": 0},
                        "views": {"cube-on-cube": {"weight": 0}}}]}, open(lab, "w"))
-checks = 0
-
-
-def check(label, ok, detail=""):
-    global checks
-    checks += 1
-    print(("ok:   " if ok else "FAIL: ") + label + ("" if ok else " -- " + str(detail)[:1500]))
-    if not ok:
-        sys.exit(1)
+import expect  # noqa: E402
+from expect import check  # noqa: E402
 
 
 def run(*args):
@@ -94,4 +87,4 @@ res = json.load(open(report)) if os.path.exists(report) else {}
 check("Gradescope's created_at with a 500,000-digit fraction: a note, no penalty, full points",
       r.returncode == 0 and "no late policy applied" in r.stderr and
       res.get("score") == res.get("max_score") == 10, (r.returncode, r.stderr[-600:]))
-print("%d checks" % checks)
+print("%d checks" % expect.checks)

@@ -21,15 +21,8 @@ json.dump({"name": "margin only",
 os.makedirs(outside + "/folder/inner")
 for rel in ("victim.txt", "folder/inner/keep.txt", "folder/ann.json"):
     open(os.path.join(outside, rel), "w").write("precious " + rel + "\n")
-checks = 0
-
-
-def check(label, ok, detail=""):
-    global checks
-    checks += 1
-    print(("ok:   " if ok else "FAIL: ") + label + ("" if ok else " -- " + str(detail)[:1500]))
-    if not ok:
-        sys.exit(1)
+import expect  # noqa: E402
+from expect import check  # noqa: E402
 
 
 def snapshot(root):
@@ -62,4 +55,4 @@ for name in sys.argv[4:] or names:
               r.returncode == 2 and len(lines) == 1 and (out + "/" + name) in lines[0] and
               "symbolic link" in lines[0], (r.returncode, r.stderr[-800:]))
         check(label + ": nothing outside --out changed", snapshot(outside) == before)
-print("%d checks" % checks)
+print("%d checks" % expect.checks)

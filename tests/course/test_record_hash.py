@@ -19,15 +19,8 @@ json.dump({"name": "margin only",
            "stages": [{"stage": "margin", "tree": "core", "files": ["margin/lit.frag"], "points": 10,
                        "lessons": {"margin margin-kind=slope": 0},
                        "views": {"cube-on-cube": {"weight": 0}}}]}, open(lab, "w"))
-checks = 0
-
-
-def check(label, ok, detail=""):
-    global checks
-    checks += 1
-    print(("ok:   " if ok else "FAIL: ") + label + ("" if ok else " -- " + str(detail)[:1500]))
-    if not ok:
-        sys.exit(1)
+import expect  # noqa: E402
+from expect import check  # noqa: E402
 
 
 def grade():
@@ -61,4 +54,4 @@ check("grades.csv gives bob his real score, not the edited one", scores() == rea
 r = grade()
 check("a third run keeps both records", r.returncode == 0 and "again:" not in r.stdout and
       "2 already graded, 0 to grade" in r.stdout, r.stdout[-800:])
-print("%d checks" % checks)
+print("%d checks" % expect.checks)

@@ -19,15 +19,8 @@ json.dump({"name": "margin only",
            "stages": [{"stage": "margin", "tree": "core", "files": ["margin/lit.frag"], "points": 10,
                        "lessons": {"margin margin-kind=slope": 0},
                        "views": {"cube-on-cube": {"weight": 0}}}]}, open(lab, "w"))
-checks = 0
-
-
-def check(label, ok, detail=""):
-    global checks
-    checks += 1
-    print(("ok:   " if ok else "FAIL: ") + label + ("" if ok else " -- " + str(detail)[:1500]))
-    if not ok:
-        sys.exit(1)
+import expect  # noqa: E402
+from expect import check  # noqa: E402
 
 
 def children(pid):
@@ -78,4 +71,4 @@ rerun = json.load(open(work + "/rerun.json"))
 check("the rerun grades it: exit 0, PASS, full points",
       code == 0 and rerun.get("status") == "PASS" and rerun.get("score") == rerun.get("max_score")
       and rerun.get("max_score", 0) > 0, (code, err[-800:], {k: rerun.get(k) for k in ("score", "max_score", "status")}))
-print("%d checks" % checks)
+print("%d checks" % expect.checks)
