@@ -244,6 +244,10 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
             r.evaluated = f.evaluated;
             r.truthLit = f.truthLit;
             r.truthShadow = f.truthShadow;
+            const Scene& scene = renderer.scene();
+            for (std::size_t i = 0; i < scene.objects.size(); ++i)
+                if (std::size_t(objectId(i)) < f.byObject.size())
+                    r.objects.push_back({scene.objects[i].name, f.byObject[objectId(i)]});
         }
         // A GL error while a student's program drew is theirs (ERROR), else the platform's.
         throwGlFailure(!SL_CHECK_GL(), "the check of stage " + r.stage);
@@ -283,6 +287,21 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
     return r;
 }
 
+namespace {
+
+nlohmann::json objectsJson(const std::vector<CheckResult::ObjectPixels>& objects) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const CheckResult::ObjectPixels& o : objects)
+        out.push_back({{"name", o.name},
+                       {"lit", o.counts.lit},
+                       {"false_shadow", o.counts.falseShadow},
+                       {"shadow", o.counts.shadow},
+                       {"false_lit", o.counts.falseLit}});
+    return out;
+}
+
+}  // namespace
+
 nlohmann::json checkJson(const CheckResult& r) {
     nlohmann::json params = nlohmann::json::object();
     for (const ParamSpec& p : r.parameters.specs()) params[p.name] = r.parameters.text(p.name);
@@ -316,6 +335,7 @@ nlohmann::json checkJson(const CheckResult& r) {
         {"figures", figures},
         {"pixels",
          {{"evaluated", r.evaluated}, {"truth_lit", r.truthLit}, {"truth_shadow", r.truthShadow}}},
+        {"objects", objectsJson(r.objects)},
         {"expectation", expectation},
         {"student_files", r.studentFiles},
         {"verdict", r.verdict()},
@@ -397,6 +417,10 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
         r.evaluated = pixels.at("evaluated").get<long>();
         r.truthLit = pixels.at("truth_lit").get<long>();
         r.truthShadow = pixels.at("truth_shadow").get<long>();
+        for (const auto& o : j.value("objects", nlohmann::json::array()))
+            r.objects.push_back({o.at("name").get<std::string>(),
+                                 {o.at("lit").get<long>(), o.at("false_shadow").get<long>(),
+                                  o.at("shadow").get<long>(), o.at("false_lit").get<long>()}});
         const auto& e = j.at("expectation");
         if (!e.is_null()) {
             r.expectation.entry = expectationByLabel(e.at("entry").get<std::string>(), r.tree);

@@ -27,6 +27,13 @@ struct CheckResult {
     glm::vec3 light{0};
     Accuracy figures;
     long evaluated = 0, truthLit = 0, truthShadow = 0;  // pixel counts behind the percentages
+    // A shadow stage's pixels outside the edge band, per object of the scene (by its name): where
+    // the false shadow and false lit lie (ShadowFigures::byObject). Empty for the mirror.
+    struct ObjectPixels {
+        std::string name;
+        ShadowFigures::ObjectCounts counts;
+    };
+    std::vector<ObjectPixels> objects;
     ExpectationMatch expectation;
     // The row's status (grade/status.h) and why, in one line. Figures are measured only for
     // PASS, FAIL and SKIP; MISSING, ERROR, TIMEOUT, CRASH and NOT GRADED rows have none.

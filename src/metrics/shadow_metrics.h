@@ -78,6 +78,14 @@ struct ShadowFigures {
     // Of the evaluated pixels: % clearly brighter in the "everything lit" frame than our own
     // lighting with its highlight (litTooBright): flat white, a flat colour, infinities.
     double litTooBrightPct = 0;
+    // Outside the band, per object id (index: ReferencePixel::objectId): where the errors lie, so
+    // a lesson's words ("specks on the floor", "most of the lit floor stays bright") can be held
+    // to its picture. Sums over the ids are litOutside, shadowOutside and their wrong pixels.
+    struct ObjectCounts {
+        long lit = 0, falseShadow = 0;  // truth lit; of those rendered shadowed
+        long shadow = 0, falseLit = 0;  // truth shadowed; of those rendered lit
+    };
+    std::vector<ObjectCounts> byObject;
     // Distance in pixels from each true edge pixel to the nearest rendered edge pixel of the same
     // object (the image's diagonal when there is none), less that pixel's tolerance beyond one
     // pixel (bandPx - 1, never below 0): the mean and the 95th percentile (nearest rank). When

@@ -168,17 +168,28 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const ShadowTruth& truth,
         long darkUnlit = 0, tooBright = 0, shadowShown = 0, shadowShownOff = 0;
         std::vector<float> lost;        // lightLost of each litOut pixel
         std::vector<double> distances;  // of each true edge pixel
+        std::vector<ShadowFigures::ObjectCounts> byObject;
     };
+    const std::vector<int>& ids = truth.objectIds;
+    const std::size_t idCount = truth.boxes.byId.size();
     std::vector<Counts> counts(bands);
     const double diagonal = std::hypot(double(w), double(h));
     forRowBands(h, bands, [&](int b, int first, int end) {
         Counts c;
+        c.byObject.resize(idCount);
         for (std::size_t k = std::size_t(first) * w; k < std::size_t(end) * w; ++k) {
             if (!evaluated[k]) continue;
             const float tolerance = bandPx ? bandPx[k] : 1.0f;
             const bool inBand = toStraddling[k] < tolerance;
             inBandOut[k] = inBand;
             const bool wrong = (shown[k] != 0) != (blocked[k] != 0);
+            if (!inBand && std::size_t(ids[k]) < idCount) {
+                ShadowFigures::ObjectCounts& o = c.byObject[std::size_t(ids[k])];
+                if (blocked[k])
+                    ++o.shadow, o.falseLit += wrong;
+                else
+                    ++o.lit, o.falseShadow += wrong;
+            }
             if (blocked[k]) {
                 (inBand ? c.shadowIn : c.shadowOut)++;
                 if (wrong) (inBand ? c.shadowInWrong : c.shadowOutWrong)++;
@@ -208,7 +219,13 @@ ShadowFigures shadowFigures(const ReferenceImage& ref, const ShadowTruth& truth,
     double litLost = 0.0, sum = 0.0;
     std::vector<double> distances;
     distances.reserve(std::size_t(figures.trueBoundary));
+    figures.byObject.resize(idCount);
     for (const Counts& c : counts) {
+        for (std::size_t id = 0; id < idCount; ++id) {
+            ShadowFigures::ObjectCounts& o = figures.byObject[id];
+            o.lit += c.byObject[id].lit, o.falseShadow += c.byObject[id].falseShadow;
+            o.shadow += c.byObject[id].shadow, o.falseLit += c.byObject[id].falseLit;
+        }
         all.litOut += c.litOut, all.litOutWrong += c.litOutWrong;
         all.litIn += c.litIn, all.litInWrong += c.litInWrong;
         all.litWrongSpeckled += c.litWrongSpeckled;

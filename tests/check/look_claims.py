@@ -71,6 +71,65 @@ def object_nouns(text, vocabulary):
     return nouns
 
 
+def amount_claims(text, vocabulary):
+    """[(phrase, amount claim, number said)] for each amount the text states."""
+    found = []
+    for a in vocabulary.get("amounts", []):
+        for m in re.finditer(a["pattern"], text, re.IGNORECASE):
+            found.append((m.group(0), a, float(m.group(1))))
+    return found
+
+
+def place_nouns(where, vocabulary, places):
+    nouns = [n for n in vocabulary["objects"]
+             if re.search(r"\b" + re.escape(n) + r"(e?s)?\b", where, re.IGNORECASE)]
+    if re.search(r"\bcasters?\b", where, re.IGNORECASE):
+        nouns.append("casters")
+    return nouns
+
+
+def named(obj, noun, places):
+    """Whether a report object is what a noun of a lesson text names."""
+    name = obj["name"].lower()
+    if noun == "casters":
+        return not any(r in name for r in places["receivers"])
+    return noun in name
+
+
+def place_problems(text, row, vocabulary, where_said, lines, problems):
+    """Where the text says errors lie (`places` in look_claims.json), against the row's objects."""
+    places = vocabulary["places"]
+    objects = row.get("objects") or []
+    for m in re.finditer(places["errors"], text, re.IGNORECASE):
+        nouns = place_nouns(m.group("where"), vocabulary, places)
+        if not nouns:
+            continue
+        total = sum(o["false_shadow"] for o in objects)
+        on = sum(o["false_shadow"] for o in objects if any(named(o, n, places) for n in nouns))
+        share = 100.0 * on / total if total else None
+        ok = share is not None and share >= places["share_min"]
+        lines.append(f"  {'ok ' if ok else 'BAD'} {where_said}: '{m.group(0)}' -> "
+                     f"{on} of {total} false-shadow pixels on {'/'.join(nouns)}")
+        if not ok:
+            problems.append(f"{where_said} says '{m.group(0)}', but {on} of the {total} "
+                            f"false-shadow pixels lie on {'/'.join(nouns)} (at least "
+                            f"{places['share_min']} % must): " + ", ".join(
+                                f"{o['name']} {o['false_shadow']}" for o in objects))
+    for rate in places.get("rates", []):
+        for m in re.finditer(rate["pattern"], text, re.IGNORECASE):
+            noun = m.group("noun").lower()
+            hit = [o for o in objects if named(o, noun, places)]
+            lit = sum(o["lit"] for o in hit)
+            dark = sum(o["false_shadow"] for o in hit)
+            value = 100.0 * dark / lit if lit else None
+            ok = value is not None and value <= rate["rate_max"]
+            lines.append(f"  {'ok ' if ok else 'BAD'} {where_said}: '{m.group(0)}' -> "
+                         f"{dark} of {lit} lit {noun} pixels dark")
+            if not ok:
+                problems.append(f"{where_said} says '{m.group(0)}' ({rate['means']}), but "
+                                f"{dark} of its {lit} lit pixels render dark")
+
+
 def same_value(a, b):
     try:
         return math.isclose(float(a), float(b), rel_tol=1e-9)
@@ -135,6 +194,16 @@ def check_entry(entry, rows, vocabulary):
                 if not ok:
                     problems.append(f"{where} says '{phrase}' ({parameter}={value}) while "
                                     f"{parameter}={used} is in use")
+            for phrase, amount, said in amount_claims(text, vocabulary):
+                value = row["figures"].get(amount["figure"])
+                low, high = said / amount["factor"], said * amount["factor"]
+                ok = value is not None and low <= value <= high
+                lines.append(f"  {'ok ' if ok else 'BAD'} {where}: '{phrase}' -> "
+                             f"{amount['figure']} {value} in [{low:.3g}, {high:.3g}]")
+                if not ok:
+                    problems.append(f"{where} says '{phrase}' ({amount['means']}), but "
+                                    f"{amount['figure']} is {value}")
+            place_problems(text, row, vocabulary, where, lines, problems)
             for noun in object_nouns(text, vocabulary):
                 ok = scene_has(row["scene"], noun)
                 lines.append(f"  {'ok ' if ok else 'BAD'} {where}: '{noun}' in scene {row['scene']}")
@@ -174,16 +243,26 @@ def self_test():
     row = {"tree": "core", "view": "lecture", "scene": "slides",
            "figures": {"false_shadow_pct": 0.067, "false_lit_pct": 0.0, "edge_p95_px": 0.0,
                        "false_shadow_speckle_pct": 100.0, "false_lit_band_pct": 9.1},
-           "parameters": {"map-size": "512", "margin": "0.01"}}
+           "parameters": {"map-size": "512", "margin": "0.01"},
+           "objects": [{"name": "floor", "lit": 1000, "false_shadow": 0, "shadow": 500, "false_lit": 0},
+                       {"name": "sphere", "lit": 100, "false_shadow": 10, "shadow": 0,
+                        "false_lit": 0}]}
     cases = [
         # (look, expected number of problems)
         ("no acne; the lit line is one map texel (map-size 2048)", 2),  # specks, and 512 in use
         ("a few specks on the sphere; the lit line is one map texel (map-size 512)", 0),
         ("clean shadows", 1),
-        ("acne on the slopes", 2),  # not acne here, and no slope in the scene
+        ("acne on the slopes", 3),  # not acne here, none of it on slopes, and no slope in the scene
         ("the acne gone, but for a few specks where the light grazes the sphere", 0),
         ("our method beside the peers'", 1),  # claims nothing measurable
         ("the 0.01 margin: the shadows still touch their casters", 0),
+        ("a few specks on the floor", 1),  # they lie on the sphere
+        ("a few specks on the casters' lit sides", 0),  # the sphere is a caster
+        ("a few specks, and most of the lit floor stays bright", 0),
+        ("a few specks, and most of the lit sphere stays bright", 0),  # 10 of its 100 dark
+        ("the shadow shrinks (about 3 % of the shadow)", 2),  # nothing lit in the shadow
+        ("the shadows in place, leaving their casters", 0),  # no claim in "leaving"
+        ("the shadows leave their casters", 1),
     ]
     bad = 0
     for look, expected in cases:

@@ -86,6 +86,27 @@ TEST(Metrics, SquareShadowShiftedTwoPixelsRight) {
     EXPECT_NEAR(f.edgeP95Px, 2.0, 1e-9);
 }
 
+TEST(Metrics, ErrorsAreCountedOnTheObjectTheyLieOn) {
+    // Two objects side by side: id 1 on the left half, id 2 on the right. Truth: nothing blocked.
+    // Rendered: specks at (5, 5) and (6, 15) on object 1 and a block [25, 30) x [0, 4) on object 2.
+    ReferenceImage ref = evaluatedEverywhere(40, 20);
+    for (int j = 0; j < 20; ++j)
+        for (int i = 20; i < 40; ++i) pixel(ref, i, j).objectId = 2;
+    std::vector<std::uint8_t> shown = maskRect(40, 20, 25, 0, 30, 4);
+    shown[5 * 40 + 5] = shown[15 * 40 + 6] = 1;
+    ShadowFigures f = shadowFigures(ref, shown);
+    ASSERT_EQ(f.byObject.size(), 3u);  // ids 0 (background), 1, 2
+    EXPECT_EQ(f.byObject[1].lit, 400);
+    EXPECT_EQ(f.byObject[1].falseShadow, 2);
+    EXPECT_EQ(f.byObject[2].lit, 400);
+    EXPECT_EQ(f.byObject[2].falseShadow, 20);
+    EXPECT_EQ(f.byObject[0].lit + f.byObject[0].shadow, 0);
+    long lit = 0, wrong = 0;
+    for (const ShadowFigures::ObjectCounts& o : f.byObject) lit += o.lit, wrong += o.falseShadow;
+    EXPECT_EQ(lit, f.litOutside);
+    EXPECT_NEAR(f.falseShadowPct, 100.0 * wrong / lit, 1e-9);
+}
+
 TEST(Metrics, StraightEdgeShiftedTwoPixelsIsTwoPixelsOff) {
     // Truth: everything left of x = 10 in shadow; rendered: left of x = 12.
     ReferenceImage ref = evaluatedEverywhere(30, 20);
