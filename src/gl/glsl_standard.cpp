@@ -2,11 +2,13 @@
 
 #include <glslang/Public/ShaderLang.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <mutex>
+#include <regex>
 #include <sstream>
 
 #include "gl/glsl_syntax.h"
@@ -183,6 +185,58 @@ std::string treeVersionError(GlslTree tree, const GlslSource& src, const Declare
                    "only; the legacy tree's shaders declare #version 120");
 }
 
+// Bytes on which compilers disagree, refused by one rule whatever this driver does: a NUL (Mesa
+// ends the source there, glslang reads on) and a carriage return alone as a line end (an old Mac
+// editor's; glslang then reads one long line and blames an #include). "" when there is neither.
+std::string textBytesError(const GlslSource& src, int version) {
+    const std::string& text = src.text;
+    int line = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+        } else if (text[i] == '\0') {
+            return placeOf(src, line, version) +
+                   ": error: a NUL byte (0x00): GLSL source is text, and drivers differ on it "
+                   "(Mesa stops reading there, glslang reads on): delete it";
+        } else if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) {
+            return placeOf(src, line, version) +
+                   ": error: a line ends in a carriage return alone (CR, an old Mac editor's "
+                   "line end): save the file with LF or CRLF line ends";
+        }
+    }
+    return {};
+}
+
+// `#pragma STDGL invariant(all)` in a fragment shader: GLSL 1.20 and 1.30-4.10 (section 4.6.1)
+// make it an error; glslang lets it pass and Mesa refuses it, so it is refused here for every
+// driver. Comments are skipped; "" when there is none.
+std::string invariantAllError(const GlslSource& src, int version) {
+    static const std::regex pragma(
+        R"(^[ \t]*#[ \t]*pragma[ \t]+STDGL[ \t]+invariant[ \t]*\([ \t]*all[ \t]*\))");
+    std::string code = src.text;  // comments blanked, line ends kept
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        std::size_t end = i;
+        if (code.compare(i, 2, "//") == 0)
+            end = code.find('\n', i);
+        else if (code.compare(i, 2, "/*") == 0)
+            end = code.find("*/", i + 2) + 2;
+        else
+            continue;
+        if (end < i || end > code.size()) end = code.size();  // unterminated
+        for (std::size_t k = i; k < end; ++k)
+            if (code[k] != '\n') code[k] = ' ';
+        i = end == 0 ? 0 : end - 1;
+    }
+    std::istringstream in(code);
+    std::string line;
+    for (int index = 0; std::getline(in, line); ++index)
+        if (std::regex_search(line.substr(0, 200), pragma))
+            return placeOf(src, index, version) +
+                   ": error: '#pragma STDGL invariant(all)' : not allowed in a fragment shader "
+                   "(GLSL section 4.6.1; glslang lets it pass, Mesa refuses it): delete it";
+    return {};
+}
+
 // glslang's message after its place in the words a student reads (the same as a driver's): its
 // empty token field dropped ("'' :  syntax error" is "syntax error"), and its grammar's token names
 // as the characters they stand for ("unexpected SEMICOLON" is "unexpected ';'", as Mesa writes it).
@@ -255,6 +309,9 @@ ParsedStage parseStage(EShLanguage language, const char* kind, const GlslSource&
         fileOf(src, 0) + ": " + kind + " shader did not compile " + kByGlslang + ":\n";
     Declared declared = declaredVersion(src.text);
     std::string versionError = treeVersionError(tree, src, declared);
+    if (versionError.empty()) versionError = textBytesError(src, declared.version);
+    if (versionError.empty() && language == EShLangFragment)
+        versionError = invariantAllError(src, declared.version);
     if (!versionError.empty()) throw ShaderError(header + versionError + "\n");
     ParsedStage p;
     p.version = declared.version;
@@ -322,6 +379,66 @@ std::vector<std::string> linkMessages(const std::string& log) {
 }
 
 // The identifier a link message quotes last (`fragment stage: " vec4 vNormal"` -> vNormal).
+// The components one global takes, from glslang's printed type ("uniform 4-element array of 3X3
+// matrix of float": 36); a structure is the sum of its members; samplers take none. Saturates
+// far above any limit, so a billion-element array is just "too many".
+double typeComponents(const std::string& type) {
+    static const std::regex array(R"((\d+)-element array of)"), matrix(R"((\d+)X(\d+) matrix)"),
+        vector(R"((\d+)-component vector)");
+    const std::size_t open = type.find('{');
+    const std::string head = type.substr(0, open);
+    double count = 1;
+    for (std::sregex_iterator m(head.begin(), head.end(), array), end; m != end; ++m)
+        count *= std::min(1e12, std::stod((*m)[1]));
+    std::smatch m;
+    if (open != std::string::npos) {
+        double members = 0;
+        int depth = 0;
+        std::size_t start = open + 1;
+        for (std::size_t i = open + 1; i < type.size() && depth >= 0; ++i) {
+            if (type[i] == '{') ++depth;
+            if ((type[i] == ',' && depth == 0) || (type[i] == '}' && depth-- == 0)) {
+                members += typeComponents(type.substr(start, i - start));
+                start = i + 1;
+            }
+        }
+        return std::min(1e15, count * members);
+    }
+    if (head.find("sampler") != std::string::npos) return 0;
+    if (std::regex_search(head, m, matrix)) return count * std::stod(m[1]) * std::stod(m[2]);
+    if (std::regex_search(head, m, vector)) return count * std::stod(m[1]);
+    return count;
+}
+
+// OpenGL 3.3's guaranteed uniform components a stage (GL_MAX_{VERTEX,FRAGMENT}_UNIFORM_COMPONENTS
+// at least 1024). A program over it links on a driver that gives more and fails on one that does
+// not (Mesa even runs out of memory on a huge array): refused here for every driver and both
+// trees (the legacy tree's drivers give at least as many).
+constexpr double kUniformComponents = 1024;
+
+// "" when each stage's used default-block uniforms fit, else the error naming the largest.
+std::string uniformComponentsError(const SyntaxTree& syntax, const GlslSource& src, int version,
+                                   const char* kind) {
+    double total = 0, largest = -1;
+    std::string name;
+    for (const SyntaxTree::Global& g : syntax.globals()) {
+        if (g.firstUse < 0 || !SyntaxTree::hasWord(g.type, "uniform") ||
+            g.type.find("block{") != std::string::npos)
+            continue;
+        const double n = typeComponents(g.type);
+        total += n;
+        if (n > largest) largest = n, name = g.name;
+    }
+    if (total <= kUniformComponents) return {};
+    std::ostringstream out;
+    out.precision(12);
+    out << placeOfName(name, syntax, src, version) << ": error: '" << name << "' : the " << kind
+        << " shader's uniforms take " << total << " components (this one " << largest
+        << "); OpenGL 3.3 guarantees " << kUniformComponents
+        << " a stage, so the program fails to link on a driver that gives no more";
+    return out.str();
+}
+
 std::string quotedName(const std::string& message) {
     std::size_t close = message.rfind('"');
     if (close == std::string::npos || close == 0) return {};
@@ -361,6 +478,11 @@ StageTrees requireStandardGlsl(GlslTree tree, const GlslSource& vertex,
         if (lines.empty()) lines.push_back(both + ": error: glslang could not link them");
         throw ShaderError(both + ": program did not link " + kByGlslang + ":\n" + joined(lines));
     }
+
+    for (std::string e : {uniformComponentsError(vertexSyntax, vertex, vs.version, "vertex"),
+                          uniformComponentsError(fragmentSyntax, fragment, fs.version, "fragment")})
+        if (!e.empty())
+            throw ShaderError(both + ": program did not link " + kByGlslang + ":\n" + e + "\n");
 
     // glslang links stages without asking whether each input the fragment stage reads has an
     // output to come from; the standard makes it a link error (GLSL 1.20 section 4.3.6, 3.30

@@ -29,6 +29,17 @@ CASES = [
      "'normalWorld' : the fragment shader reads this input, but the vertex shader"),
     ("varying_type", "margin", "core", "margin/lit.frag", 8,
      "Linking vertex and fragment stages: Types must match"),
+    # Where compilers disagree, one rule of ours (issue 38): Mesa stops at a NUL, glslang reads on;
+    # glslang passes invariant(all) in a fragment shader, Mesa refuses it; a lone CR made glslang
+    # blame an #include; a huge uniform array made Mesa run out of memory (a CRASH row).
+    ("cr_line_ends", "margin", "core", "margin/lit.frag", 1,
+     "a line ends in a carriage return alone (CR, an old Mac editor's line end)"),
+    ("nul_in_comment", "margin", "core", "margin/lit.frag", 2,
+     "a NUL byte (0x00): GLSL source is text, and drivers differ on it"),
+    ("invariant_all_fragment", "margin", "core", "margin/lit.frag", 2,
+     "'#pragma STDGL invariant(all)' : not allowed in a fragment shader"),
+    ("uniform_array_huge", "margin", "core", "margin/lit.frag", 2,
+     "'huge' : the fragment shader's uniforms take 400000019 components"),
 ]
 
 BY_GLSLANG = "by the GLSL standard (glslang, Khronos' reference compiler)"
