@@ -275,6 +275,8 @@ bool WindowSession::handleTrialEvents() {
                 if (!e.first) {
                     if (adoptedBatch_.empty()) errorsWhenBatchBegan_ = errorsBefore_;
                     adoptedBatch_.insert(e.stage);
+                    if (e.tree == shownTree() && !overlayBeforeBatch_.count(e.stage))
+                        overlayBeforeBatch_[e.stage] = renderer().shaders().overlayFiles(e.stage);
                 }
                 adopt(e.tree, {e.stage}, forceNextAdopt_ && shown);
                 if (shown) forceNextAdopt_ = false;
@@ -321,16 +323,36 @@ bool WindowSession::handleTrialEvents() {
         if (!errorsNow) {
             std::string stages;
             for (const auto& s : adoptedBatch_) stages += (stages.empty() ? "" : ", ") + s;
+            const std::string gone = filesGone();
             say(std::cout, errorsWhenBatchBegan_
-                               ? "shadowlab: shaders reloaded; every program builds again"
-                               : "shadowlab: shaders reloaded (" + stages + ")");
-            flash("shaders reloaded: " + stages + " drew in the trial worker first", false);
+                               ? "shadowlab: shaders reloaded; every program builds again" + gone
+                               : "shadowlab: shaders reloaded (" + stages + ")" + gone);
+            flash(gone.empty() ? "shaders reloaded: " + stages + " drew in the trial worker first"
+                               : "shaders reloaded" + gone,
+                  false);
         }
         adoptedBatch_.clear();
+        overlayBeforeBatch_.clear();
     }
     if (adoptedBatch_.empty()) errorsBefore_ = errorsNow;
     if (!errorsNow) saidErrors_.clear();  // a message that comes back is said again
     return !events.empty();
+}
+
+// "; your F is gone: ours draws in its place" for each student file the batch's stages drew from
+// before and no longer do (deleted or renamed), "" when none.
+std::string WindowSession::filesGone() const {
+    std::vector<std::string> gone;
+    for (const auto& [stage, before] : overlayBeforeBatch_) {
+        const std::vector<std::string> now = renderer().shaders().overlayFiles(stage);
+        for (const std::string& f : before)
+            if (std::find(now.begin(), now.end(), f) == now.end()) gone.push_back(f);
+    }
+    if (gone.empty()) return {};
+    std::string list;
+    for (const std::string& f : gone) list += (list.empty() ? "" : ", ") + f;
+    return "; your " + list + (gone.size() == 1 ? " is" : " are") + " gone: ours draws in " +
+           (gone.size() == 1 ? "its" : "their") + " place";
 }
 
 // One line for the HUD: which files, which lesson or values, what ended the trial (a loop: the

@@ -82,7 +82,8 @@ class WindowSession {
     void flash(const std::string& text, bool error);
     void complain(const std::string& text);                   // on the HUD and one line on stderr
     std::string refusalText(const Watchdog::Event& e) const;  // values refused: one HUD line
-    bool handleTrialEvents();                                 // true when something changed
+    std::string filesGone() const;  // the student files this batch stopped drawing from
+    bool handleTrialEvents();       // true when something changed
     static Sets nonDefault(const ParamSet& params);
     static void applySets(ParamSet& params, const Sets& sets);  // defaults, then these
     static bool offers(const StageInfo& stage, ViewMode view);
@@ -208,6 +209,9 @@ class WindowSession {
     std::string renderError_, printedRenderError_;
     std::set<std::string> saidErrors_;  // one stderr line per message
     std::set<std::string> adoptedBatch_;
+    // The student's files each adopted stage on screen drew from before this batch: a file gone
+    // since is said ("ours draws in its place"), not just "reloaded".
+    std::map<std::string, std::vector<std::string>> overlayBeforeBatch_;
     bool errorsWhenBatchBegan_ = false, errorsBefore_ = false;
     bool forceNextAdopt_ = false;  // `r`: rebuild even what did not change
     // The last values refused in the worker, said on the HUD while the values they were put

@@ -291,8 +291,13 @@ TEST(LiveWindow, ShaderSavedEveryWayComesAndGoes) {
     atomicSave(good);
     errorsShown(false, "atomic save of the repair");
     int before = reloads();
-    fs::remove(file);  // ours is used again
+    fs::remove(file);  // ours is used again, and the line says so
     EXPECT_TRUE(waitUntil([&] { return reloads() > before; }, 20)) << w.out();
+    EXPECT_EQ(countLines(w.out(),
+                         "shadowlab: shaders reloaded (margin); your margin/lit.frag is "
+                         "gone: ours draws in its place"),
+              1)
+        << w.out();
     errorsShown(false, "file deleted");
     std::ofstream(file) << bad;  // written again, broken: it must be seen again
     errorsShown(true, "deleted file written again");
