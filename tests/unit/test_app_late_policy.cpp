@@ -42,6 +42,9 @@ TEST(LatePolicy, OnlyRealDatesAndZones) {
     EXPECT_FALSE(parseIsoTime("2026-02-29T10:00:00Z"));  // not a leap year
     EXPECT_TRUE(parseIsoTime("2028-02-29T10:00:00Z"));
     EXPECT_FALSE(parseIsoTime("2026-04-00T10:00:00Z"));
+    EXPECT_FALSE(parseIsoTime("0026-02-28T12:00:00Z"));  // a typing error (the fuzzer's find)
+    EXPECT_TRUE(parseIsoTime("1970-01-01T00:00:00Z"));
+    EXPECT_FALSE(parseIsoTime("1970-01-01T00:30:00+01:00"));  // 1969 in UTC
     EXPECT_FALSE(parseIsoTime("2026-12-04T24:00:00Z"));
     EXPECT_FALSE(parseIsoTime("2026-12-04T23:59:00+99:99"));
     EXPECT_FALSE(parseIsoTime("2026-12-04T23:59:00-14:01"));
