@@ -41,6 +41,7 @@ void onDisplay() {
     if (!windowGone()) events->display();
 }
 void onReshape(int w, int h) {
+    keepOnScreenWithoutWindowManager();
     events->reshape(w, h);
 }
 void onKeyboard(unsigned char key, int, int) {

@@ -3,6 +3,7 @@
 #include <X11/Xlib.h>
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -74,6 +75,35 @@ bool takeKeyboardFocusIfNobodyHasIt() {
     XSync(display, False);
     XSetErrorHandler(before);
     return lastError == 0;
+}
+
+bool keepOnScreenWithoutWindowManager() {
+    Display* display = currentDisplay();
+    Window window = currentWindow();
+    if (!display || !window || lost) return false;
+    const Window root = DefaultRootWindow(display);
+    Atom type = None;
+    int format = 0;
+    unsigned long items = 0, after = 0;
+    unsigned char* data = nullptr;
+    const Atom check = XInternAtom(display, "_NET_SUPPORTING_WM_CHECK", True);
+    if (check != None && XGetWindowProperty(display, root, check, 0, 1, False, AnyPropertyType,
+                                            &type, &format, &items, &after, &data) == Success) {
+        if (data) XFree(data);
+        if (items > 0) return false;  // a window manager places windows
+    }
+    XWindowAttributes a;
+    if (!XGetWindowAttributes(display, window, &a) || a.map_state != IsViewable) return false;
+    int x = 0, y = 0;
+    Window child = 0;
+    XTranslateCoordinates(display, window, root, 0, 0, &x, &y, &child);
+    const Screen* screen = DefaultScreenOfDisplay(display);
+    const bool covers = a.width >= WidthOfScreen(screen) && a.height >= HeightOfScreen(screen);
+    const int toX = covers ? 0 : std::max(x, 0), toY = covers ? 0 : std::max(y, 0);
+    if (toX == x && toY == y) return false;
+    XMoveWindow(display, window, toX, toY);
+    XFlush(display);
+    return true;
 }
 
 bool windowStillExists() {

@@ -16,6 +16,12 @@ bool takeKeyboardFocusIfNobodyHasIt();
 // window does, instead of Xlib's message and exit 1.
 void watchWindow();
 
+// Without a window manager nobody places the window, and freeglut's full screen lands at +1+1
+// (one row and column off the screen) and, toggled back, at -1-1. Under a bare X server this
+// moves a window that covers the screen to 0,0 and one partly off the top or left back onto it;
+// under a window manager (one that announces itself, EWMH) it does nothing. True when it moved.
+bool keepOnScreenWithoutWindowManager();
+
 // False once the window has been destroyed by someone else (`xdotool windowclose`): freeglut
 // ignores DestroyNotify and would go on running with no window. One round trip to the server.
 // True when the context is not GLX (nothing to watch).

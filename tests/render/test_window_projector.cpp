@@ -79,9 +79,18 @@ TEST(LiveWindowProjector, FullScreenTextIsLegibleAt1920x1080) {
     ASSERT_TRUE(
         w.waitState([](const auto& s) { return s["width"] == 1920 && s["height"] == 1080; }, 30))
         << w.state().dump();
+    // No window manager places it: the window itself moves to 0,0 (freeglut left it at +1+1,
+    // its last row and column off the screen), and back from `f` it stays on the screen.
+    auto geometry = [&] { return w.capture("xdotool getwindowgeometry " + w.id()); };
+    auto at = [&](const std::string& where) {
+        return waitUntil([&] { return geometry().find("Position: " + where) != std::string::npos; },
+                         10);
+    };
+    EXPECT_TRUE(at("0,0")) << geometry();
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     Image shot = w.grab();
-    ASSERT_GE(shot.width, 1900);  // less a border pixel: no window manager to place it
+    ASSERT_EQ(shot.width, 1920);
+    ASSERT_EQ(shot.height, 1080);
     const int text = firstTextLineHeight(shot, w.state()["pictureTop"]);
     std::cout << "text height at 1920x1080: " << text << " px (" << 100.0 * text / 1080
               << " % of the height)\n";
@@ -89,9 +98,12 @@ TEST(LiveWindowProjector, FullScreenTextIsLegibleAt1920x1080) {
     ASSERT_TRUE(w.keys("f"));
     EXPECT_TRUE(w.waitState([](const auto& s) { return s["width"] == 640; }, 15))
         << w.state().dump();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    EXPECT_EQ(geometry().find("Position: -"), std::string::npos) << geometry();
     ASSERT_TRUE(w.keys("f"));
     EXPECT_TRUE(w.waitState([](const auto& s) { return s["width"] == 1920; }, 15))
         << w.state().dump();
+    EXPECT_TRUE(at("0,0")) << geometry();
     EXPECT_EQ(w.quit(), 0);
 
     std::string dir2 = tempDir("live-hud-scale");
