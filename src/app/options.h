@@ -4,8 +4,8 @@
 #include <CLI/CLI.hpp>
 
 #include "platform/headless.h"
-#include "render/request.h"
 #include "sandbox/budget.h"
+#include "stages/request.h"
 
 namespace sl {
 

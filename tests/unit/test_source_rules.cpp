@@ -10,8 +10,8 @@
 
 #include "gl/shader_library.h"
 #include "gl/source_rules.h"
-#include "render/request.h"
 #include "render/stage_interface.h"
+#include "stages/request.h"
 
 namespace fs = std::filesystem;
 using namespace sl;

@@ -1,4 +1,4 @@
-#include "render/request.h"
+#include "stages/request.h"
 
 #include <sys/stat.h>
 
