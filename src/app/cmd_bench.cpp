@@ -15,6 +15,7 @@
 #include "io/files.h"
 #include "io/usage_error.h"
 #include "metrics/callgrind.h"
+#include "stages/registry.h"
 
 namespace sl {
 

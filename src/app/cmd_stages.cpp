@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "io/usage_error.h"
 #include "stages/expectations.h"
+#include "stages/registry.h"
 
 namespace sl {
 

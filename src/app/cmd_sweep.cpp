@@ -13,6 +13,7 @@
 #include "io/files.h"
 #include "io/usage_error.h"
 #include "metrics/pareto.h"
+#include "stages/registry.h"
 
 namespace sl {
 

@@ -8,6 +8,7 @@
 #include "io/box.h"
 #include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
+#include "stages/registry.h"
 
 namespace sl {
 
@@ -272,8 +273,9 @@ Renderer& Evaluator::shippedRenderer(Shipped kind) {
         Scene scene = kind == Shipped::Ids             ? idColouredScene(r.scene())
                       : kind == Shipped::Unhighlighted ? withoutHighlight(r.scene())
                                                        : r.scene();
-        slot = std::make_unique<Renderer>(
-            std::move(scene), ShaderLibrary(tree, shaderTreeRoot(tree), ""), context_->height());
+        slot = std::make_unique<Renderer>(std::move(scene),
+                                          ShaderLibrary(tree, shaderTreeRoot(tree), ""),
+                                          context_->height(), stageInfos());
     }
     return *slot;
 }

@@ -15,6 +15,7 @@
 #include "io/usage_error.h"
 #include "sandbox/private_dir.h"
 #include "scene/scene_json.h"
+#include "stages/registry.h"
 #include "stages/stage.h"
 
 namespace sl {

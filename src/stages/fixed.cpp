@@ -216,8 +216,8 @@ class FixedStage : public Stage {
 
 }  // namespace
 
-StageInfo fixedStage() {
-    StageInfo s;
+StageDefinition fixedStage() {
+    StageDefinition s;
     s.id = "fixed";
     s.title = "The fixed-function way: copy, texgen, GL_COMPARE_R_TO_TEXTURE";
     s.lecture = "the SuperBible chapter: glCopyTexImage2D, eye-linear texgen, alpha test";

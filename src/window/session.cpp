@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "scene/scene_json.h"
+#include "stages/registry.h"
 #include "window/window_text.h"
 
 namespace sl {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/stage_interface.h"
+#include "stages/registry.h"
 
 namespace sl {
 

@@ -13,6 +13,7 @@
 #include "platform/headless.h"
 #include "render_fixture.h"
 #include "slow_figures.h"
+#include "stages/registry.h"
 
 using namespace sl;
 
@@ -55,8 +56,8 @@ void expectSameFigures(const ShadowFigures& fast, const ShadowFigures& slow,
 // them (one per context).
 std::unique_ptr<Renderer> shipped(Renderer& r, Scene scene, int height) {
     GlslTree tree = r.shaders().tree();
-    return std::make_unique<Renderer>(std::move(scene),
-                                      ShaderLibrary(tree, shaderTreeRoot(tree), ""), height);
+    return std::make_unique<Renderer>(
+        std::move(scene), ShaderLibrary(tree, shaderTreeRoot(tree), ""), height, stageInfos());
 }
 
 Image renderWith(HeadlessContext& context, const Renderer& r, Renderer& other,
