@@ -236,7 +236,7 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
     r.expectation = findExpectation(expectations(), r.stage, r.scene, r.tree, r.parameters);
     std::optional<ShadowEvidence> evidence;  // a shadow stage's renders, for its pictures
     try {
-        if (request.stage == "mirror") {
+        if (stageNeedsMirror(request.stage)) {
             r.figures = rig.accuracy();
         } else {
             evidence = rig.shadowEvidence();

@@ -70,10 +70,11 @@ struct StageInfo {
     std::string defaultScene;
     bool needsMirror = false;
     std::vector<ViewMode> views;
-    // The stage whose picture is this one's lighting without shadows, drawn with our shaders:
-    // `check` finds "dark without a caster" against it. Empty: the stage's own all-lit render
-    // (the fixed-function stage, whose lighting no shader of ours reproduces).
-    std::string unshadowedStage = "phong";
+    // What `check` finds "dark without a caster" against: by default the lighting stage's picture
+    // (the first stage the renderer is handed: lighting without shadows, drawn with our
+    // shaders); when set, the stage's own all-lit render (the fixed-function stage, whose
+    // lighting no shader of ours reproduces).
+    bool unshadowedIsOwn = false;
     std::function<std::unique_ptr<Stage>()> create;
 };
 

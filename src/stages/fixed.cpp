@@ -228,7 +228,7 @@ StageDefinition fixedStage() {
         ParamSpec::number("offset-units", 4.0, 0.0, 100.0, 1.0, "glPolygonOffset units"),
     };
     s.legacyOnly = true;
-    s.unshadowedStage = "";  // its Gouraud lighting is its own: judged against its all-lit render
+    s.unshadowedIsOwn = true;  // its Gouraud lighting is its own: judged against its all-lit render
     s.views = {ViewMode::Final};
     s.create = [] { return std::make_unique<FixedStage>(); };
     return s;

@@ -31,6 +31,15 @@ std::vector<std::string> stageIds() {
     return ids;
 }
 
+const StageDefinition& lightingStage() {
+    return stageRegistry().front();
+}
+
+bool stageNeedsMirror(const std::string& id) {
+    const StageDefinition* s = findStage(id);
+    return s && s->needsMirror;
+}
+
 std::vector<const StageInfo*> stageInfos() {
     std::vector<const StageInfo*> infos;
     for (const auto& s : stageRegistry()) infos.push_back(&s);

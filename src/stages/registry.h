@@ -22,6 +22,11 @@ struct StageDefinition : StageInfo {
 const std::vector<StageDefinition>& stageRegistry();
 const StageDefinition* findStage(const std::string& id);
 std::vector<std::string> stageIds();
+// The first stage (stage_list.h): lighting alone, drawn with our shaders. Every shadow stage's
+// unshadowed baseline (StageInfo::unshadowedIsOwn), bench's baseline and the default stage.
+const StageDefinition& lightingStage();
+// Whether `id` is a stage that needs a scene with a mirror (false for an unknown id).
+bool stageNeedsMirror(const std::string& id);
 // The registry as the renderer takes it (Renderer's constructor).
 std::vector<const StageInfo*> stageInfos();
 

@@ -106,7 +106,7 @@ SlowEvidence slowEvidence(const RenderRequest& request, Evaluator::EdgeTolerance
     auto baselineRenderer = shipped(r, unhighlighted, h);
     auto idRenderer = shipped(r, idColouredScene(r.scene()), h);
     auto litRenderer = shipped(r, r.scene(), h);
-    const std::string& unshadowed = r.stage().unshadowedStage;
+    const std::string unshadowed = r.stage().unshadowedIsOwn ? "" : lightingStage().id;
     Image baseline =
         unshadowed.empty() ? allLit : renderWith(*context, r, *baselineRenderer, unshadowed);
     ShadowFigureInputs inputs;
