@@ -7,10 +7,19 @@ set(SL_EXE $<TARGET_FILE:shadowlab>)
 # A command's exit code and its output, both (PASS_REGULAR_EXPRESSION alone ignores the exit code).
 set(SL_EXPECT python3 ${SL_CHECK_PY}/expect_run.py)
 file(MAKE_DIRECTORY ${SL_CHECK_DIR})
+# Counts come from the data, never pinned: the rows `check` plans (planned_rows.py reads
+# expectations.json and `stages --json`; its margin/core rows are the broken hand-in's errors,
+# the rest of the core tree its failures) and the stages (the SL_STAGE lines of stage_list.h).
+set(SL_ROWS "python3 ${SL_CHECK_PY}/planned_rows.py /dev/stdin")
+file(READ ${CMAKE_SOURCE_DIR}/src/stages/stage_list.h SL_STAGE_LIST)
+string(REGEX MATCHALL "\nSL_STAGE\\([a-z_]+\\)" SL_STAGE_LINES "\n${SL_STAGE_LIST}")
+list(LENGTH SL_STAGE_LINES SL_STAGE_COUNT)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+             ${CMAKE_SOURCE_DIR}/src/stages/stage_list.h)
 
 # Every stage in both trees shows its lesson: exit 0, and the report says so stage by stage.
 add_test(NAME check_all
-         COMMAND sh -c "rm -rf ${SL_CHECK_DIR}/all.json ${SL_CHECK_DIR}/all-diff && ${SL_EXE} check --all --report ${SL_CHECK_DIR}/all.json --diff-dir ${SL_CHECK_DIR}/all-diff && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all.json --count 212 --exit 0 --verdict peers/core=PASS --verdict peers/legacy=PASS --verdict rgb/core=PASS --verdict bias/legacy=PASS --verdict fixed/legacy=PASS && test -s ${SL_CHECK_DIR}/all-diff/hardware-core-lecture.png && test -s ${SL_CHECK_DIR}/all-diff/fixed-legacy-grazing.png")
+         COMMAND sh -c "rm -rf ${SL_CHECK_DIR}/all.json ${SL_CHECK_DIR}/all-diff && ${SL_EXE} check --all --report ${SL_CHECK_DIR}/all.json --diff-dir ${SL_CHECK_DIR}/all-diff && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all.json --count $(${SL_EXE} stages --json | ${SL_ROWS}) --exit 0 --verdict peers/core=PASS --verdict peers/legacy=PASS --verdict rgb/core=PASS --verdict bias/legacy=PASS --verdict fixed/legacy=PASS && test -s ${SL_CHECK_DIR}/all-diff/hardware-core-lecture.png && test -s ${SL_CHECK_DIR}/all-diff/fixed-legacy-grazing.png")
 set_tests_properties(check_all PROPERTIES LABELS check TIMEOUT 600)
 
 # rgb: margin 0 shows acne, the slides' 0.01 cures it; both are the lesson (exit 0), and the
@@ -53,7 +62,7 @@ add_test(NAME check_student_broken
                  -- ${SL_EXE} check --stage margin --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken)
 set_tests_properties(check_student_broken PROPERTIES LABELS check TIMEOUT 300)
 add_test(NAME check_all_student_broken
-         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/broken.json; ${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken.json; test $? -eq 2 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/broken.json --count 103 --exit 2 --verdict margin/core=ERROR --verdict hardware/core=MISSING")
+         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/broken.json; ${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken.json; test $? -eq 2 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/broken.json --count $(${SL_EXE} stages --json | ${SL_ROWS} --tree core) --exit 2 --verdict margin/core=ERROR --verdict hardware/core=MISSING")
 set_tests_properties(check_all_student_broken PROPERTIES LABELS check TIMEOUT 300)
 
 # The graders' formats through real parsers: Gradescope's results.json (its documented fields
@@ -61,10 +70,10 @@ set_tests_properties(check_all_student_broken PROPERTIES LABELS check TIMEOUT 30
 # test per stage and tree, the same names and verdicts in both. Our shaders: 15 passes; a
 # student overlay that does not build: its stage an <error>, the others still graded.
 add_test(NAME check_formats
-         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/gradescope.json ${SL_CHECK_DIR}/junit.xml && ${SL_EXE} check --all --report ${SL_CHECK_DIR}/gradescope.json --format gradescope --junit ${SL_CHECK_DIR}/junit.xml && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/gradescope.json --junit ${SL_CHECK_DIR}/junit.xml --count 212 --errors 0 --failures 0 --verdict rgb/core/lecture=PASS --verdict fixed/legacy/grazing=PASS")
+         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/gradescope.json ${SL_CHECK_DIR}/junit.xml && ${SL_EXE} check --all --report ${SL_CHECK_DIR}/gradescope.json --format gradescope --junit ${SL_CHECK_DIR}/junit.xml && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/gradescope.json --junit ${SL_CHECK_DIR}/junit.xml --count $(${SL_EXE} stages --json | ${SL_ROWS}) --errors 0 --failures 0 --verdict rgb/core/lecture=PASS --verdict fixed/legacy/grazing=PASS")
 set_tests_properties(check_formats PROPERTIES LABELS check TIMEOUT 600)
 add_test(NAME check_formats_student_broken
-         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/broken-gs.json ${SL_CHECK_DIR}/broken.xml; ${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken-gs.json --format gradescope --junit ${SL_CHECK_DIR}/broken.xml; test $? -eq 2 && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/broken-gs.json --junit ${SL_CHECK_DIR}/broken.xml --count 103 --errors 13 --failures 90 --verdict margin/core/lecture=ERROR --verdict hardware/core/lecture=MISSING")
+         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/broken-gs.json ${SL_CHECK_DIR}/broken.xml; ${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken-gs.json --format gradescope --junit ${SL_CHECK_DIR}/broken.xml; test $? -eq 2 && all=$(${SL_EXE} stages --json | ${SL_ROWS} --tree core) && margin=$(${SL_EXE} stages --json | ${SL_ROWS} --tree core --stage margin) && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/broken-gs.json --junit ${SL_CHECK_DIR}/broken.xml --count $all --errors $margin --failures $((all - margin)) --verdict margin/core/lecture=ERROR --verdict hardware/core/lecture=MISSING")
 set_tests_properties(check_formats_student_broken PROPERTIES LABELS check TIMEOUT 300)
 add_test(NAME check_format_unknown
          COMMAND ${SL_EXPECT} --exit 2 --output "--format: 'csv' is not one of json, gradescope"
@@ -113,7 +122,7 @@ set_tests_properties(example_list PROPERTIES LABELS example)
 
 # `stages --json` shows each stage's lesson from the same data file `check` reads.
 add_test(NAME stages_json_expected
-         COMMAND sh -c "${SL_EXE} stages --json | python3 -c \"import json,sys; s=json.load(sys.stdin); bad=[x['id'] for x in s if not x['expected']['outcome'] or not x['expected']['limits']]; print('stages without a lesson:', bad); sys.exit(1 if bad or len(s) < 9 else 0)\" && ${SL_EXE} stages | grep -c 'expected: .*; check: ' | grep -qx 9")
+         COMMAND sh -c "${SL_EXE} stages --json | python3 -c \"import json,sys; s=json.load(sys.stdin); bad=[x['id'] for x in s if not x['expected']['outcome'] or not x['expected']['limits']]; print('stages without a lesson:', bad); sys.exit(1 if bad or len(s) != ${SL_STAGE_COUNT} else 0)\" && ${SL_EXE} stages | grep -c 'expected: .*; check: ' | grep -qx ${SL_STAGE_COUNT}")
 set_tests_properties(stages_json_expected PROPERTIES LABELS check)
 
 # An example whose expected verdict is wrong exits 1 and says so.
@@ -126,7 +135,7 @@ set_tests_properties(example_unknown PROPERTIES LABELS example)
 
 # The same verdicts on the EGL backend (the headless path without OSMesa).
 add_test(NAME check_all_egl
-         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/all-egl.json && SHADOWLAB_BACKEND=egl ${SL_EXE} check --all --report ${SL_CHECK_DIR}/all-egl.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all-egl.json --count 212 --exit 0")
+         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/all-egl.json && SHADOWLAB_BACKEND=egl ${SL_EXE} check --all --report ${SL_CHECK_DIR}/all-egl.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all-egl.json --count $(${SL_EXE} stages --json | ${SL_ROWS}) --exit 0")
 set_tests_properties(check_all_egl PROPERTIES LABELS check TIMEOUT 600)
 
 # The mirror exercise's answer, worked by hand: eye (1, 1) reflected through the line p1 (-1, -1.5)

@@ -15,6 +15,7 @@
 #include "io/files.h"
 #include "io/usage_error.h"
 #include "metrics/callgrind.h"
+#include "stages/registry.h"
 
 namespace sl {
 
@@ -105,7 +106,7 @@ std::vector<BenchConfig> plan(bool quick, GlslTree tree) {
     // How cost grows with the window: every stage at its defaults.
     for (const auto& [w, h] : windows)
         for (const auto& s : stageRegistry())
-            if (s.id != "phong")  // phong is every context's baseline already
+            if (s.id != lightingStage().id)  // every context's baseline already
                 add("window", s.id, s.id, {}, w, h,
                     s.legacyOnly ? std::optional<GlslTree>(GlslTree::Legacy) : std::nullopt);
     return out;
@@ -122,8 +123,8 @@ std::vector<BenchConfig> benchConfigs(const BenchArgs& a, GlslTree tree) {
         if (!baselined[key]) {
             BenchConfig base = c;
             base.group = "baseline";
-            base.series = "phong";
-            base.stage = "phong";
+            base.series = lightingStage().id;
+            base.stage = lightingStage().id;
             base.sets.clear();
             base.scene = c.sceneName();  // the same scene as the stage it is the baseline of
             configs.push_back(base);

@@ -7,6 +7,7 @@
 #include "course/assignment_check.h"
 #include "grade/check_session.h"
 #include "io/usage_error.h"
+#include "stages/registry.h"
 
 namespace sl {
 
@@ -44,7 +45,7 @@ int runCheckCommand(const CheckArgs& a) {
         throw UsageError("--shaders: empty; give the student's folder (its files replace ours)");
     StageCheckArgs args;
     CommonOptions common = a.common;
-    common.stage = a.all ? "phong" : a.stage;
+    common.stage = a.all ? lightingStage().id : a.stage;
     args.base = toRequest(common);
     args.all = a.all;
     args.glslGiven = a.glslGiven;

@@ -19,6 +19,7 @@
 #include "metrics/mirror_figure.h"
 #include "sandbox/worker.h"
 #include "scene/scene_json.h"
+#include "stages/registry.h"
 
 namespace sl {
 
@@ -219,7 +220,7 @@ int renderExample(const std::vector<ExampleRender>& renders, const std::string& 
     for (const auto& er : renders) {
         std::string stem = outDir + "/" + base + (er.label.empty() ? "" : "-" + er.label);
         CheckResult result =
-            runCheck(rig, er.request, er.request.stage == "mirror" ? "" : stem + "-diff.png");
+            runCheck(rig, er.request, stageNeedsMirror(er.request.stage) ? "" : stem + "-diff.png");
         if (unjudged(result.status)) return kBadInput;
         Renderer& r = rig.renderer();
         r.view = er.view;

@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "io/usage_error.h"
 #include "stages/expectations.h"
+#include "stages/registry.h"
 
 namespace sl {
 
@@ -57,7 +58,11 @@ int listStages(bool json) {
                 {"lecture", s.lecture},
                 {"expectation", defaultsEntry(s).outcome + ": " + defaultsEntry(s).why},
                 {"trees",
-                 s.legacyOnly ? nlohmann::json{"legacy"} : nlohmann::json{"core", "legacy"}}};
+                 s.legacyOnly ? nlohmann::json{"legacy"} : nlohmann::json{"core", "legacy"}},
+                // The scene it draws when none is given, and whether it needs a mirror there
+                // (no displaced view: tests/check/planned_rows.py counts check's rows from these).
+                {"scene", s.defaultScene.empty() ? std::string("slides") : s.defaultScene},
+                {"needs_mirror", s.needsMirror}};
             j["expected"] = expectedJson(defaultsEntry(s));
             j["parameters"] = nlohmann::json::array();
             for (const auto& p : s.params) j["parameters"].push_back(paramJson(p));

@@ -13,6 +13,7 @@
 #include "io/files.h"
 #include "io/usage_error.h"
 #include "metrics/pareto.h"
+#include "stages/registry.h"
 
 namespace sl {
 
@@ -39,8 +40,8 @@ const std::vector<Axis>& axes() {
          {85, 75, 65, 55, 45, 35, 25, 20, 15, 10, 7, 5, 3, 2, 1},
          {85, 45, 15, 5, 1},
          false},
-        {"margin",
-         "margin",
+        {"margin",  // not a stage id: the axis, named after the parameter
+         "margin",  // not a stage id: the parameter (stages that declare it are swept)
          "margin (window depth)",
          {0, 0.001, 0.002, 0.003, 0.004, 0.006, 0.008, 0.01, 0.015, 0.02, 0.03, 0.04, 0.05},
          {0, 0.004, 0.01, 0.05},
@@ -113,7 +114,7 @@ int runSweep(const SweepArgs& a) {
 
     std::vector<std::string> stages;
     for (const auto& s : stageRegistry())
-        if (s.id != "phong" && s.id != "mirror" &&
+        if (s.id != lightingStage().id && !s.needsMirror &&
             (axis.param.empty() || declares(s.id, axis.param)))
             stages.push_back(s.id);
 

@@ -4,14 +4,15 @@
 #include <CLI/CLI.hpp>
 
 #include "platform/headless.h"
-#include "render/request.h"
 #include "sandbox/budget.h"
+#include "stages/registry.h"
+#include "stages/request.h"
 
 namespace sl {
 
 struct CommonOptions {
     // scene "" = not given: slides, or the stage's own default scene (StageInfo::defaultScene)
-    std::string stage = "phong", glsl = "core", scene, shaders, size = "640x480";
+    std::string stage = lightingStage().id, glsl = "core", scene, shaders, size = "640x480";
     std::string eye, at, fovy, light, view = "final", backend = "auto";
     std::optional<std::uint64_t> displace;  // --displace SEED: check's displaced view
     std::vector<std::string> sets;

@@ -22,8 +22,9 @@ std::vector<BenchConfig> equalAccuracyCandidates(bool quick, GlslTree tree,
     };
     std::vector<int> sizes =
         quick ? std::vector<int>{256, 1024} : std::vector<int>{256, 512, 1024, 2048};
-    std::vector<std::string> fits = quick ? std::vector<std::string>{"tight"}
-                                          : std::vector<std::string>{"tight", "sphere", "fixed"};
+    // not a stage id: the light fit "fixed" (--set light-fit)
+    const std::vector<std::string> allFits = {"tight", "sphere", "fixed"};
+    std::vector<std::string> fits = quick ? std::vector<std::string>{"tight"} : allFits;
     std::vector<BenchConfig> out;
     for (const Method& m : methods) {
         if (m.series.find(only) == std::string::npos) continue;

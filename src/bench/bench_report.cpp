@@ -9,6 +9,7 @@
 #include "io/files.h"
 #include "io/usage_error.h"
 #include "metrics/pareto.h"
+#include "stages/registry.h"
 
 namespace sl {
 
@@ -288,6 +289,7 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
             bySize[c.series].lo.push_back(r.t().frame.p25);
             bySize[c.series].hi.push_back(r.t().frame.p75);
         }
+        // not a stage id: the scene "mirror"
         if (!r.moving && (c.group == "window" || c.group == "baseline") && r.m->scene != "mirror") {
             byWindow[c.series].title = c.series;
             byWindow[c.series].xs.push_back(c.width * c.height / 1000.0);
@@ -357,6 +359,7 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
     };
     for (const Measured& m : results) {
         const BenchConfig& c = m.config;
+        // not a stage id: the scene "mirror"
         bool defaults = (c.group == "window" || (c.group == "baseline" && m.scene != "mirror")) &&
                         c.width == 640 && c.height == 480;
         if (!defaults) continue;

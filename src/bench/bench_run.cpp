@@ -4,6 +4,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <sstream>
 
+#include "stages/registry.h"
+
 // Set by CMake when it finds valgrind's header at configure time (CMakeLists.txt: a check that
 // runs again at every configure, so the build that follows installing valgrind has it).
 #ifdef SHADOWLAB_HAVE_CALLGRIND
@@ -62,7 +64,7 @@ PassTimes PassSamples::summary() const {
 BenchRig::Paired BenchRig::timeBesidePhong(const BenchConfig& c, int framesPerBlock, int blocks,
                                            bool movingLight) {
     BenchConfig phong = c;
-    phong.stage = "phong";
+    phong.stage = lightingStage().id;
     phong.sets.clear();
     phong.scene = c.sceneName();
     PassSamples config, base;

@@ -14,6 +14,7 @@
 #include "io/json_fields.h"
 #include "scene/scene_json.h"
 #include "stages/expectations.h"
+#include "stages/registry.h"
 #include "stages/stage.h"
 
 namespace sl {

@@ -11,7 +11,7 @@
 
 #include "grade/plan.h"
 #include "io/usage_error.h"
-#include "render/request.h"
+#include "stages/request.h"
 
 namespace sl {
 

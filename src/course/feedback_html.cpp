@@ -9,6 +9,7 @@
 
 #include "course/html_text.h"
 #include "io/files.h"
+#include "stages/registry.h"
 
 namespace sl {
 
@@ -149,7 +150,7 @@ bool shownToStudent(const StageRecord& st, const RowRecord& row) {
 // The three pictures of a row's check, side by side, with the legend of its difference picture
 // (the mirror's is its difference from our exact stencil reflection).
 std::string picturesOf(const CheckResult& row) {
-    const bool mirror = row.stage == "mirror";
+    const bool mirror = stageNeedsMirror(row.stage);
     const std::pair<const char*, std::string> pictures[] = {
         {"your picture", imageUri(row, "render")},
         {mirror ? "the exact reflection (stencil method, our shaders)" : "the truth (ray traced)",

@@ -11,7 +11,7 @@
 #include "io/data_paths.h"
 #include "io/files.h"
 #include "io/usage_error.h"
-#include "render/request.h"
+#include "stages/request.h"
 
 namespace sl {
 

@@ -8,6 +8,7 @@
 #include "io/box.h"
 #include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
+#include "stages/registry.h"
 
 namespace sl {
 
@@ -179,8 +180,8 @@ Accuracy Evaluator::accuracy() {
         auto found = ours_.find(key);
         if (found != ours_.end()) return found->second;
     }
-    Accuracy a = renderer_->stage().id == "mirror" ? mirrorAccuracy()
-                                                   : shadowAccuracy(shadowEvidence().figures);
+    Accuracy a = renderer_->stage().needsMirror ? mirrorAccuracy()
+                                                : shadowAccuracy(shadowEvidence().figures);
     if (!key.empty()) {
         ++oursMeasured_;
         constexpr std::size_t kMaxOurs = 64;
@@ -217,7 +218,8 @@ ShadowEvidence Evaluator::shadowEvidence() {
 const Evaluator::ShippedView& Evaluator::shippedView() {
     Renderer& r = *renderer_;
     shades();
-    const std::string& unshadowed = r.stage().unshadowedStage;
+    const std::string lighting = lightingStage().id;
+    const std::string unshadowed = r.stage().unshadowedIsOwn ? "" : lighting;
     std::shared_ptr<ShippedView>& slot =
         truth_->shipped[std::string(context_->backendName()) + "/" + treeName(r.shaders().tree()) +
                         "/" + unshadowed];
@@ -226,9 +228,9 @@ const Evaluator::ShippedView& Evaluator::shippedView() {
         if (!unshadowed.empty())
             view->baselineLuma =
                 lumaOf(renderWith(shippedRenderer(Shipped::Unhighlighted), unshadowed));
-        view->oursLuma = lumaOf(renderWith(shippedRenderer(Shipped::Lit), "phong"));
+        view->oursLuma = lumaOf(renderWith(shippedRenderer(Shipped::Lit), lighting));
         const std::vector<int> ids =
-            decodeIdImage(renderWith(shippedRenderer(Shipped::Ids), "phong"),
+            decodeIdImage(renderWith(shippedRenderer(Shipped::Ids), lighting),
                           int(r.scene().objects.size()), 1.0f);
         view->truth = shadowTruth(truth_->reference, ids, truth_->visible);
         slot = std::move(view);
@@ -272,8 +274,9 @@ Renderer& Evaluator::shippedRenderer(Shipped kind) {
         Scene scene = kind == Shipped::Ids             ? idColouredScene(r.scene())
                       : kind == Shipped::Unhighlighted ? withoutHighlight(r.scene())
                                                        : r.scene();
-        slot = std::make_unique<Renderer>(
-            std::move(scene), ShaderLibrary(tree, shaderTreeRoot(tree), ""), context_->height());
+        slot = std::make_unique<Renderer>(std::move(scene),
+                                          ShaderLibrary(tree, shaderTreeRoot(tree), ""),
+                                          context_->height(), stageInfos());
     }
     return *slot;
 }

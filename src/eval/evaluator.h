@@ -14,7 +14,7 @@
 #include "metrics/shadow_truth.h"
 #include "platform/headless.h"
 #include "reference/raytracer.h"
-#include "render/request.h"
+#include "stages/request.h"
 
 namespace sl {
 

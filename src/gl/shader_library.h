@@ -75,7 +75,7 @@ class ShaderLibrary {
 
     // What `rules` find in the student's files of the programs of `stage` built so far
     // (gl/source_rules.h), each finding once. Kept per program and by the rules' address: pass
-    // the stage's own (StageInfo::sourceRules), which live as long as the program.
+    // the stage's own (StageDefinition::sourceRules), which live as long as the program.
     std::vector<std::string> sourceNotes(const std::string& stage,
                                          const std::vector<SourceRule>& rules) const;
 

@@ -1,6 +1,6 @@
 // Source rules: parser-based rubrics (as in Andujar et al.'s GLSL grading tool at UPC) that read
 // what a stage's shaders say where a picture cannot show it. A rule is data of the stage
-// (StageInfo::sourceRules); a finding is a note on the row for the instructor, not a score.
+// (StageDefinition::sourceRules); a finding is a note on the row for the instructor, not a score.
 // The rules read glslang's syntax tree of a built program (gl/glsl_syntax.h) through a small
 // data-flow analysis: which inputs (uniforms, vertex attributes, built-ins) each value depends on,
 // through variables, functions and the vertex -> fragment interface.

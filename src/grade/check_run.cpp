@@ -17,6 +17,7 @@
 #include "io/usage_error.h"
 #include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
+#include "stages/registry.h"
 #include "stages/stage.h"
 
 namespace sl {
@@ -235,7 +236,7 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
     r.expectation = findExpectation(expectations(), r.stage, r.scene, r.tree, r.parameters);
     std::optional<ShadowEvidence> evidence;  // a shadow stage's renders, for its pictures
     try {
-        if (request.stage == "mirror") {
+        if (stageNeedsMirror(request.stage)) {
             r.figures = rig.accuracy();
         } else {
             evidence = rig.shadowEvidence();
@@ -262,7 +263,7 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         return r;
     }
     r.studentFiles = renderer.shaders().overlayFiles(r.stage);
-    if (const StageInfo* info = findStage(r.stage))
+    if (const StageDefinition* info = findStage(r.stage))
         r.sourceNotes = cappedList(renderer.shaders().sourceNotes(r.stage, info->sourceRules));
     for (const std::string& n : renderer.shaders().unsetUniformNotes(r.stage))
         r.note += (r.note.empty() ? "" : "; ") + n;

@@ -42,7 +42,7 @@ struct CheckResult {
     std::vector<std::string> studentFiles;  // the submission's files this row used (relative)
     std::string diffFile;                   // the diff image written, or ""
     std::string note;                       // e.g. why no diff image was written
-    // What the stage's source rules found in the student's files (StageInfo::sourceRules):
+    // What the stage's source rules found in the student's files (StageDefinition::sourceRules):
     // notes for the instructor, e.g. a comparison of eyePosition with a constant; not a score.
     std::vector<std::string> sourceNotes;
     std::string backend, machine;  // the headless backend, machineLine() of the context used

@@ -15,6 +15,7 @@
 #include "io/usage_error.h"
 #include "sandbox/private_dir.h"
 #include "scene/scene_json.h"
+#include "stages/registry.h"
 #include "stages/stage.h"
 
 namespace sl {
@@ -95,7 +96,8 @@ std::vector<RenderRequest> allRequests(const StageCheckArgs& a, std::vector<std:
 // --diff FILE.png for the first row, FILE-<view>[-<settings>].png for the others.
 std::string diffFileOf(const CheckOutputs& out, const CheckCase& c, bool first,
                        const std::string& baseScene) {
-    if (c.request.stage == "mirror") return out.diff;  // its difference picture: --diff as given
+    if (stageNeedsMirror(c.request.stage))
+        return out.diff;  // its difference picture: --diff as given
     std::string slug = c.view;
     for (const auto& [name, value] : c.request.sets) slug += "-" + name + "=" + value;
     if (c.request.sceneGiven && c.request.scene != baseScene) slug += "-" + c.request.scene;
@@ -329,7 +331,7 @@ int runStageCheck(const StageCheckArgs& a) {
     for (const StagePlan& st : plan.stages)
         for (const RowPlan& row : st.rows) {
             std::string path = diffOf(row.check);
-            if (!path.empty() && row.check.request.stage != "mirror")
+            if (!path.empty() && !stageNeedsMirror(row.check.request.stage))
                 requireWritable(a.out.diffDir.empty() ? "--diff" : "--diff-dir", path);
         }
     if (!a.out.diff.empty() || !a.out.diffDir.empty()) {

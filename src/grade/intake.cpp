@@ -14,7 +14,7 @@
 
 #include "io/content_hash.h"
 #include "io/files.h"
-#include "render/request.h"
+#include "stages/request.h"
 
 namespace sl {
 

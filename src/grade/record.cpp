@@ -7,7 +7,7 @@
 #include "grade/bounds.h"
 #include "grade/stage_runs.h"
 #include "io/json_fields.h"
-#include "render/request.h"
+#include "stages/request.h"
 
 namespace sl {
 

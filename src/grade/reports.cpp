@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "stages/registry.h"
 #include "stages/stage.h"
 
 namespace sl {

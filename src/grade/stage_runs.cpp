@@ -11,6 +11,7 @@
 #include "io/data_paths.h"
 #include "io/files.h"
 #include "scene/scene_json.h"
+#include "stages/registry.h"
 
 namespace sl {
 

@@ -187,6 +187,7 @@ const char* lightFitName(LightFit fit) {
         case LightFit::Sphere:
             return "sphere";
         case LightFit::Fixed:
+            // not a stage id: the light fit "fixed"
             return "fixed";
     }
     return "?";

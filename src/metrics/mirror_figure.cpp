@@ -73,6 +73,7 @@ std::string mirrorFigureScript(const MirrorTopView& v, const std::string& pngPat
     else
         s << "set title \"No reflected camera: " << v.reason << "\"\n";
 
+    // not a stage id: the figure block of the mirror
     block(s, "mirror", {{v.p1, v.p2}});
     block(s, "view", {{v.eye, v.at}});
     block(s, "rays", {{v.eye, v.p1}, {v.eye, v.p2}});

@@ -4,22 +4,30 @@
 
 namespace sl {
 
-Renderer::Renderer(Scene scene, ShaderLibrary shaders, int imageHeight)
+Renderer::Renderer(Scene scene, ShaderLibrary shaders, int imageHeight,
+                   std::vector<const StageInfo*> stages)
     : camera(scene.camera),
       lightPosition(scene.light.position),
       scene_(std::move(scene)),
       shaders_(std::move(shaders)),
-      gpu_(scene_, camera, imageHeight) {
-    for (const auto& s : stageRegistry()) params_.emplace(s.id, ParamSet(s.params));
-    selectStage(stageRegistry().front().id);
+      gpu_(scene_, camera, imageHeight),
+      stages_(std::move(stages)) {
+    if (stages_.empty()) throw std::invalid_argument("a renderer needs at least one stage");
+    for (const StageInfo* s : stages_) params_.emplace(s->id, ParamSet(s->params));
+    selectStage(stages_.front()->id);
 }
 
 void Renderer::selectStage(const std::string& id) {
-    const StageInfo* info = findStage(id);
+    const StageInfo* info = nullptr;
+    std::vector<std::string> known;
+    for (const StageInfo* s : stages_) {
+        known.push_back(s->id);
+        if (s->id == id) info = s;
+    }
     if (!info) {
         std::string ids;
-        for (const auto& s : stageIds()) ids += (ids.empty() ? "" : ", ") + s;
-        std::string hint = closestMatch(id, stageIds());
+        for (const auto& s : known) ids += (ids.empty() ? "" : ", ") + s;
+        std::string hint = closestMatch(id, known);
         throw std::invalid_argument("unknown stage '" + id + "'" +
                                     (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
                                     "; stages: " + ids);
@@ -30,9 +38,8 @@ void Renderer::selectStage(const std::string& id) {
 }
 
 std::size_t Renderer::stageIndex() const {
-    const auto& all = stageRegistry();
-    for (std::size_t i = 0; i < all.size(); ++i)
-        if (&all[i] == info_) return i;
+    for (std::size_t i = 0; i < stages_.size(); ++i)
+        if (stages_[i] == info_) return i;
     return 0;
 }
 

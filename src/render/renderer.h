@@ -13,11 +13,14 @@ namespace sl {
 class Renderer {
   public:
     // Needs a current GL context. `imageHeight` sets how finely spheres are tessellated.
-    Renderer(Scene scene, ShaderLibrary shaders, int imageHeight);
+    // `stages` (the registry's stageInfos(), never empty) outlive the renderer; the first is
+    // selected.
+    Renderer(Scene scene, ShaderLibrary shaders, int imageHeight,
+             std::vector<const StageInfo*> stages);
 
     // Throws std::invalid_argument naming the allowed ids.
     void selectStage(const std::string& id);
-    void selectStage(std::size_t index) { selectStage(stageRegistry().at(index).id); }
+    void selectStage(std::size_t index) { selectStage(stages_.at(index)->id); }
     const StageInfo& stage() const { return *info_; }
     std::size_t stageIndex() const;
     ParamSet& params() { return params_[info_->id]; }
@@ -49,6 +52,7 @@ class Renderer {
     Scene scene_;
     ShaderLibrary shaders_;
     GpuScene gpu_;
+    std::vector<const StageInfo*> stages_;
     const StageInfo* info_ = nullptr;
     std::unique_ptr<Stage> stage_;
     std::map<std::string, ParamSet> params_;  // kept per stage while switching

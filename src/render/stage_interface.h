@@ -1,7 +1,7 @@
 // What the renderer knows of a stage: an id, a title, the lecture step it teaches, its declared
 // parameters and a render hook. The stages themselves live in src/stages/ (listed in
 // stage_list.h, the expected outcome of their defaults in expectations.json); render/ never
-// includes them, it only calls the registry declared at the end of this file.
+// includes them nor calls their registry (stages/registry.h): a Renderer is handed the list.
 #pragma once
 
 #include <functional>
@@ -11,7 +11,6 @@
 
 #include "gl/debug.h"
 #include "gl/shader_library.h"
-#include "gl/source_rules.h"
 #include "render/gpu_scene.h"
 #include "render/stage_params.h"
 
@@ -71,20 +70,12 @@ struct StageInfo {
     std::string defaultScene;
     bool needsMirror = false;
     std::vector<ViewMode> views;
-    // The stage whose picture is this one's lighting without shadows, drawn with our shaders:
-    // `check` finds "dark without a caster" against it. Empty: the stage's own all-lit render
-    // (the fixed-function stage, whose lighting no shader of ours reproduces).
-    std::string unshadowedStage = "phong";
-    // What the student's shaders of this stage must or must not say, read from glslang's syntax
-    // tree (gl/source_rules.h): a finding is a note on the row for the instructor, not a score.
-    std::vector<SourceRule> sourceRules;
+    // What `check` finds "dark without a caster" against: by default the lighting stage's picture
+    // (the first stage the renderer is handed: lighting without shadows, drawn with our
+    // shaders); when set, the stage's own all-lit render (the fixed-function stage, whose
+    // lighting no shader of ours reproduces).
+    bool unshadowedIsOwn = false;
     std::function<std::unique_ptr<Stage>()> create;
 };
-
-// Every stage, in lecture order: declared here, defined by src/stages/registry.cpp (the order
-// of stage_list.h).
-const std::vector<StageInfo>& stageRegistry();
-const StageInfo* findStage(const std::string& id);
-std::vector<std::string> stageIds();
 
 }  // namespace sl

@@ -121,9 +121,10 @@ Scene parseScene(const std::string& text, const std::string& origin) {
                          (pos == std::string::npos ? what : what.substr(pos + 2)));
     }
     Reader r(origin);
-    r.allowKeys(
-        doc, "",
-        {"name", "description", "background", "camera", "light", "material", "objects", "mirror"});
+    const std::set<std::string> keys = {
+        "name",  "description", "background", "camera",
+        "light", "material",    "objects",    "mirror"};  // not a stage id: the scene's mirror
+    r.allowKeys(doc, "", keys);
     Scene s;
     if (const json* n = r.field(doc, "name")) {
         if (!n->is_string()) r.fail("/name", "must be a string");
@@ -212,6 +213,7 @@ Scene parseScene(const std::string& text, const std::string& origin) {
         s.objects.push_back(obj);
     }
 
+    // not a stage id: the scene file's "mirror" field
     if (const json* m = r.field(doc, "mirror")) {
         r.allowKeys(*m, "/mirror", {"center", "normal", "up", "width", "height"});
         Mirror mirror;

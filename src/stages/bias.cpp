@@ -25,8 +25,8 @@ class BiasStage : public ShadowStage {
 
 }  // namespace
 
-StageInfo biasStage() {
-    StageInfo s;
+StageDefinition biasStage() {
+    StageDefinition s;
     s.id = "bias";
     s.title = "The scale/bias matrix, +0.5 or the slides' -0.5 on z";
     s.lecture = "texture coordinates from light NDC: bias * P_light * V_light * model";

@@ -23,8 +23,8 @@ class DepthStage : public ShadowStage {
 
 }  // namespace
 
-StageInfo depthStage() {
-    StageInfo s;
+StageDefinition depthStage() {
+    StageDefinition s;
     s.id = "depth";
     s.title = "Depth texture written through gl_FragDepth";
     s.lecture = "more precision: GL_DEPTH_COMPONENT16 instead of 8-bit colour";

@@ -7,6 +7,7 @@
 
 #include "io/data_paths.h"
 #include "scene/scene_json.h"
+#include "stages/registry.h"
 #include "stages/stage.h"
 
 namespace sl {

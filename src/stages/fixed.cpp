@@ -216,8 +216,8 @@ class FixedStage : public Stage {
 
 }  // namespace
 
-StageInfo fixedStage() {
-    StageInfo s;
+StageDefinition fixedStage() {
+    StageDefinition s;
     s.id = "fixed";
     s.title = "The fixed-function way: copy, texgen, GL_COMPARE_R_TO_TEXTURE";
     s.lecture = "the SuperBible chapter: glCopyTexImage2D, eye-linear texgen, alpha test";
@@ -228,7 +228,7 @@ StageInfo fixedStage() {
         ParamSpec::number("offset-units", 4.0, 0.0, 100.0, 1.0, "glPolygonOffset units"),
     };
     s.legacyOnly = true;
-    s.unshadowedStage = "";  // its Gouraud lighting is its own: judged against its all-lit render
+    s.unshadowedIsOwn = true;  // its Gouraud lighting is its own: judged against its all-lit render
     s.views = {ViewMode::Final};
     s.create = [] { return std::make_unique<FixedStage>(); };
     return s;

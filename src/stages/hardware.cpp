@@ -33,8 +33,8 @@ class HardwareStage : public ShadowStage {
 
 }  // namespace
 
-StageInfo hardwareStage() {
-    StageInfo s;
+StageDefinition hardwareStage() {
+    StageDefinition s;
     s.id = "hardware";
     s.title = "Hardware compare: sampler2DShadow, polygon offset, PCF";
     s.lecture = "GL_COMPARE_REF_TO_TEXTURE + GL_LEQUAL, textureProj, glPolygonOffset(2, 4)";

@@ -27,8 +27,8 @@ class MarginStage : public ShadowStage {
 
 }  // namespace
 
-StageInfo marginStage() {
-    StageInfo s;
+StageDefinition marginStage() {
+    StageDefinition s;
     s.id = "margin";
     s.title = "The margin: constant or slope-scaled from N and L";
     s.lecture = "acne cured by a margin; too much of it detaches shadows";

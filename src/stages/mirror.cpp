@@ -390,8 +390,8 @@ class MirrorStage : public Stage {
 
 }  // namespace
 
-StageInfo mirrorStage() {
-    StageInfo s;
+StageDefinition mirrorStage() {
+    StageDefinition s;
     s.id = "mirror";
     s.title = "A planar mirror: the reflected camera rendered into a texture";
     s.lecture = "eye' behind the mirror, at' - eye' perpendicular to it, an off-axis frustum";

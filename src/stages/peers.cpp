@@ -46,8 +46,8 @@ class PeersStage : public ShadowStage {
 
 }  // namespace
 
-StageInfo peersStage() {
-    StageInfo s;
+StageDefinition peersStage() {
+    StageDefinition s;
     s.id = "peers";
     s.title = "The tutorials' methods: LearnOpenGL, opengl-tutorial, normal offset";
     s.lecture = "after the lecture: what the popular tutorials do, on the same scale as ours";

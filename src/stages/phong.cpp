@@ -2,6 +2,7 @@
 #include <chrono>
 
 #include "render/scene_pass.h"
+#include "stages/stage.h"
 
 namespace sl {
 
@@ -26,8 +27,8 @@ class PhongStage : public Stage {
 
 }  // namespace
 
-StageInfo phongStage() {
-    StageInfo s;
+StageDefinition phongStage() {
+    StageDefinition s;
     s.id = "phong";
     s.title = "Phong lighting, no shadows";
     s.lecture = "the starting point: the floor is bright where shadows belong";

@@ -1,15 +1,17 @@
+#include "stages/registry.h"
+
 #include <algorithm>
 
 #include "stages/stage.h"
 
 namespace sl {
 
-#define SL_STAGE(id) StageInfo id##Stage();
+#define SL_STAGE(id) StageDefinition id##Stage();
 #include "stages/stage_list.h"
 #undef SL_STAGE
 
-const std::vector<StageInfo>& stageRegistry() {
-    static const std::vector<StageInfo> stages = {
+const std::vector<StageDefinition>& stageRegistry() {
+    static const std::vector<StageDefinition> stages = {
 #define SL_STAGE(id) id##Stage(),
 #include "stages/stage_list.h"
 #undef SL_STAGE
@@ -17,7 +19,7 @@ const std::vector<StageInfo>& stageRegistry() {
     return stages;
 }
 
-const StageInfo* findStage(const std::string& id) {
+const StageDefinition* findStage(const std::string& id) {
     for (const auto& s : stageRegistry())
         if (s.id == id) return &s;
     return nullptr;
@@ -27,6 +29,21 @@ std::vector<std::string> stageIds() {
     std::vector<std::string> ids;
     for (const auto& s : stageRegistry()) ids.push_back(s.id);
     return ids;
+}
+
+const StageDefinition& lightingStage() {
+    return stageRegistry().front();
+}
+
+bool stageNeedsMirror(const std::string& id) {
+    const StageDefinition* s = findStage(id);
+    return s && s->needsMirror;
+}
+
+std::vector<const StageInfo*> stageInfos() {
+    std::vector<const StageInfo*> infos;
+    for (const auto& s : stageRegistry()) infos.push_back(&s);
+    return infos;
 }
 
 }  // namespace sl

@@ -28,8 +28,8 @@ class RgbStage : public ShadowStage {
 
 }  // namespace
 
-StageInfo rgbStage() {
-    StageInfo s;
+StageDefinition rgbStage() {
+    StageDefinition s;
     s.id = "rgb";
     s.title = "Depth as colour: gl_FragCoord.z in an RGB8 texture";
     s.lecture = "render-to-texture; compare with no margin: shadow acne";

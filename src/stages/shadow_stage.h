@@ -4,6 +4,7 @@
 #pragma once
 
 #include "render/shadow_map.h"
+#include "stages/stage.h"
 
 namespace sl {
 

@@ -1,5 +1,5 @@
 // The stages in lecture order. Adding a stage: a file src/stages/<id>.cpp defining
-// `StageInfo <id>Stage()`, its shaders in both trees, and one line here.
+// `StageDefinition <id>Stage()` (stages/registry.h), its shaders in both trees, and one line here.
 SL_STAGE(phong)
 SL_STAGE(rgb)
 SL_STAGE(depth)

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "scene/scene_json.h"
+#include "stages/registry.h"
 #include "window/window_text.h"
 
 namespace sl {
@@ -75,7 +76,9 @@ std::string WindowSession::stageScene(const StageInfo& s) {
     if (it == sceneHasMirror_.end())
         it = sceneHasMirror_.emplace(name, bool(loadScene(name).mirror)).first;
     // A scene without a mirror: the mirror stage brings its own scene (the HUD says so).
-    return it->second ? name : (s.defaultScene.empty() ? "mirror" : s.defaultScene);
+    if (it->second) return name;
+    // not a stage id: the scene "mirror"
+    return s.defaultScene.empty() ? "mirror" : s.defaultScene;
 }
 
 WindowSession::Slot& WindowSession::slotFor(GlslTree tree, const std::string& scene,
@@ -282,7 +285,7 @@ bool WindowSession::handleTrialEvents() {
                 if (shown) forceNextAdopt_ = false;
                 break;
             case Watchdog::Event::Kind::AdoptShared:
-                adopt(e.tree, {"common", "phong"}, false);
+                adopt(e.tree, {"common", lightingStage().id}, false);
                 break;
             case Watchdog::Event::Kind::Refused: {
                 const std::string how =

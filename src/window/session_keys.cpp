@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "math/orbit.h"
+#include "stages/registry.h"
 #include "window/session.h"
 #include "window/window_text.h"
 

@@ -15,8 +15,8 @@
 
 #include "eval/job_errors.h"
 #include "gl/debug.h"
-#include "render/request.h"
 #include "sandbox/worker.h"
+#include "stages/request.h"
 
 namespace sl {
 

@@ -25,7 +25,7 @@ using Sets = std::vector<std::pair<std::string, std::string>>;
 
 // The window's floor: two seconds of CPU, against grading's 30 s: one interactive frame. Our
 // shipped shaders draw a stage's trial (a fresh context, its programs compiled, every view at
-// 1920x1080) in 0.09-0.44 s of CPU on llvmpipe (README "The window", measured), so a copy of
+// 1920x1080) in 0.09-0.44 s of CPU on llvmpipe (docs/window.md, measured), so a copy of
 // ours or an ordinary student's shader never waits for a calibration, and a loop is refused
 // after 2 s of CPU, or after 8 x ours where our shaders take more than 0.25 s for that frame.
 constexpr double kWindowCpuFloorSeconds = 2;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/stage_interface.h"
+#include "stages/registry.h"
 
 namespace sl {
 
@@ -12,7 +13,7 @@ namespace {
 // (common/), the light view's (phong/). (hud/ is not: the window's text is always drawn with
 // ours.)
 bool sharedFolder(const std::string& folder) {
-    return folder == "common" || folder == "phong";
+    return folder == "common" || folder == lightingStage().id;
 }
 
 double secondsOf(Watchdog::Clock::time_point t) {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "platform/headless.h"
-#include "render/request.h"
 #include "sandbox/budget.h"
+#include "stages/request.h"
 
 namespace sl {
 

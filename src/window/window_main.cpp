@@ -9,6 +9,7 @@
 #include "gl/gl.h"
 #include "io/usage_error.h"
 #include "platform/glut_window.h"
+#include "stages/registry.h"
 #include "window/session.h"
 
 namespace sl {

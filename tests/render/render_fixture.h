@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "io/image.h"
-#include "render/request.h"
+#include "stages/request.h"
 
 namespace sl::test {
 

@@ -7,6 +7,7 @@
 
 #include "platform/headless.h"
 #include "render_fixture.h"
+#include "stages/registry.h"
 
 using namespace sl;
 

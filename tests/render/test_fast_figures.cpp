@@ -13,6 +13,7 @@
 #include "platform/headless.h"
 #include "render_fixture.h"
 #include "slow_figures.h"
+#include "stages/registry.h"
 
 using namespace sl;
 
@@ -55,8 +56,8 @@ void expectSameFigures(const ShadowFigures& fast, const ShadowFigures& slow,
 // them (one per context).
 std::unique_ptr<Renderer> shipped(Renderer& r, Scene scene, int height) {
     GlslTree tree = r.shaders().tree();
-    return std::make_unique<Renderer>(std::move(scene),
-                                      ShaderLibrary(tree, shaderTreeRoot(tree), ""), height);
+    return std::make_unique<Renderer>(
+        std::move(scene), ShaderLibrary(tree, shaderTreeRoot(tree), ""), height, stageInfos());
 }
 
 Image renderWith(HeadlessContext& context, const Renderer& r, Renderer& other,
@@ -105,7 +106,7 @@ SlowEvidence slowEvidence(const RenderRequest& request, Evaluator::EdgeTolerance
     auto baselineRenderer = shipped(r, unhighlighted, h);
     auto idRenderer = shipped(r, idColouredScene(r.scene()), h);
     auto litRenderer = shipped(r, r.scene(), h);
-    const std::string& unshadowed = r.stage().unshadowedStage;
+    const std::string unshadowed = r.stage().unshadowedIsOwn ? "" : lightingStage().id;
     Image baseline =
         unshadowed.empty() ? allLit : renderWith(*context, r, *baselineRenderer, unshadowed);
     ShadowFigureInputs inputs;

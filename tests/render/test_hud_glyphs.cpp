@@ -10,7 +10,7 @@
 
 #include "platform/headless.h"
 #include "render/hud.h"
-#include "render/request.h"
+#include "stages/request.h"
 
 using namespace sl;
 

@@ -22,6 +22,7 @@
 // Last: it includes Xlib, whose macros (None, Bool, Status...) would clash with gtest's headers.
 #include "io/png.h"
 #include "live_window.h"  // NOLINT(llvm-include-order)
+#include "stages/registry.h"
 
 using namespace sl;
 using namespace sl::test;

@@ -7,6 +7,7 @@
 #include "grade/record.h"
 #include "grade/reports.h"
 #include "grade/stage_runs.h"
+#include "stages/registry.h"
 #include "stages/stage.h"
 
 namespace sl {

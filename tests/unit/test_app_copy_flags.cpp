@@ -9,7 +9,7 @@
 
 #include "course/copy_flags.h"
 #include "course/release.h"
-#include "render/request.h"
+#include "stages/request.h"
 
 namespace sl {
 namespace {

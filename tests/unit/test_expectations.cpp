@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "stages/expectations.h"
+#include "stages/registry.h"
 #include "stages/stage.h"
 
 namespace sl {

@@ -11,7 +11,7 @@
 #include "gl/glsl_standard.h"
 #include "gl/shader_library.h"
 #include "gl/source_rules.h"
-#include "render/request.h"
+#include "stages/request.h"
 
 namespace fs = std::filesystem;
 using namespace sl;

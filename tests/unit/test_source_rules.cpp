@@ -10,8 +10,9 @@
 
 #include "gl/shader_library.h"
 #include "gl/source_rules.h"
-#include "render/request.h"
 #include "render/stage_interface.h"
+#include "stages/registry.h"
+#include "stages/request.h"
 
 namespace fs = std::filesystem;
 using namespace sl;
@@ -19,7 +20,7 @@ using namespace sl;
 namespace {
 
 const std::vector<SourceRule>& rulesOf(const std::string& stage) {
-    const StageInfo* info = findStage(stage);
+    const StageDefinition* info = findStage(stage);
     EXPECT_NE(info, nullptr) << stage;
     static const std::vector<SourceRule> none;
     return info ? info->sourceRules : none;
@@ -69,7 +70,7 @@ class Overlay {
 
 TEST(SourceRules, ShippedShadersHaveNoFinding) {
     int programs = 0;
-    for (const StageInfo& info : stageRegistry()) {
+    for (const StageDefinition& info : stageRegistry()) {
         if (info.sourceRules.empty()) continue;
         for (GlslTree tree : {GlslTree::Core, GlslTree::Legacy}) {
             // Our own tree as the overlay: every file counts as the student's.

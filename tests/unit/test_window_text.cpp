@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "render/hud.h"
+#include "stages/registry.h"
 #include "window/window_text.h"
 
 using namespace sl;

@@ -1,4 +1,4 @@
-#include "render/request.h"
+#include "stages/request.h"
 
 #include <sys/stat.h>
 
@@ -8,6 +8,7 @@
 #include "io/usage_error.h"
 #include "scene/displace.h"
 #include "scene/scene_json.h"
+#include "stages/registry.h"
 
 namespace sl {
 
@@ -119,7 +120,8 @@ std::unique_ptr<Renderer> makeRenderer(const RenderRequest& r) {
     if (r.fovy) camera.fovyDegrees = *r.fovy;
     scene.camera = camera;  // tessellation sees the camera actually used
     auto renderer = std::make_unique<Renderer>(
-        std::move(scene), ShaderLibrary(r.tree, shaderTreeRoot(r.tree), r.overlay), r.height);
+        std::move(scene), ShaderLibrary(r.tree, shaderTreeRoot(r.tree), r.overlay), r.height,
+        stageInfos());
     applyRequest(*renderer, r);
     return renderer;
 }

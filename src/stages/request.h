@@ -1,5 +1,6 @@
 // One render, as the command line, the tests and the grader describe it, and the code that
-// turns it into a configured Renderer. Bad values throw UsageError (exit code 2).
+// turns it into a configured Renderer. Bad values throw UsageError (exit code 2). It sits in
+// stages/, above render/: a request names a stage, resolved in the registry (stages/registry.h).
 #pragma once
 
 #include <cstdint>
