@@ -68,7 +68,10 @@ TEST(Drawn, SettingsOutsideTheRangesFindNoRow) {
     for (const DrawnParam& d : row->draw)
         if (d.choices.empty()) {
             ParamSet out = values;
-            out.set(d.name, std::to_string(d.max * 1.5 + 1e-3));
+            const bool integer = out.find(d.name)->kind == ParamKind::Integer;
+            std::string above = integer ? std::to_string(static_cast<long long>(d.max) + 64)
+                                        : std::to_string(d.max * 1.5);
+            ASSERT_EQ(out.set(d.name, above), "") << d.name;
             EXPECT_EQ(drawnRowFor("margin", "slides", "core", out), nullptr) << d.name;
         }
 }
