@@ -62,7 +62,7 @@ add_test(NAME check_student_broken
                  -- ${SL_EXE} check --stage margin --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken)
 set_tests_properties(check_student_broken PROPERTIES LABELS check TIMEOUT 300)
 add_test(NAME check_all_student_broken
-         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/broken.json; ${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken.json; test $? -eq 2 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/broken.json --count $(${SL_EXE} stages --json | ${SL_ROWS} --tree core) --exit 2 --verdict margin/core=ERROR --verdict hardware/core=MISSING")
+         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/broken.json; ${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken.json; test $? -eq 2 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/broken.json --count $(${SL_EXE} stages --json | ${SL_ROWS} --tree core --submission) --exit 2 --verdict margin/core=ERROR --verdict hardware/core=MISSING")
 set_tests_properties(check_all_student_broken PROPERTIES LABELS check TIMEOUT 300)
 
 # The graders' formats through real parsers: Gradescope's results.json (its documented fields
@@ -73,7 +73,7 @@ add_test(NAME check_formats
          COMMAND sh -c "rm -f ${SL_CHECK_DIR}/gradescope.json ${SL_CHECK_DIR}/junit.xml && ${SL_EXE} check --all --report ${SL_CHECK_DIR}/gradescope.json --format gradescope --junit ${SL_CHECK_DIR}/junit.xml && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/gradescope.json --junit ${SL_CHECK_DIR}/junit.xml --count $(${SL_EXE} stages --json | ${SL_ROWS}) --errors 0 --failures 0 --verdict rgb/core/lecture=PASS --verdict fixed/legacy/grazing=PASS")
 set_tests_properties(check_formats PROPERTIES LABELS check TIMEOUT 600)
 add_test(NAME check_formats_student_broken
-         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/broken-gs.json ${SL_CHECK_DIR}/broken.xml; ${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken-gs.json --format gradescope --junit ${SL_CHECK_DIR}/broken.xml; test $? -eq 2 && all=$(${SL_EXE} stages --json | ${SL_ROWS} --tree core) && margin=$(${SL_EXE} stages --json | ${SL_ROWS} --tree core --stage margin) && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/broken-gs.json --junit ${SL_CHECK_DIR}/broken.xml --count $all --errors $margin --failures $((all - margin)) --verdict margin/core/lecture=ERROR --verdict hardware/core/lecture=MISSING")
+         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/broken-gs.json ${SL_CHECK_DIR}/broken.xml; ${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken-gs.json --format gradescope --junit ${SL_CHECK_DIR}/broken.xml; test $? -eq 2 && all=$(${SL_EXE} stages --json | ${SL_ROWS} --tree core --submission) && margin=$(${SL_EXE} stages --json | ${SL_ROWS} --tree core --stage margin --submission) && python3 ${SL_CHECK_PY}/check_formats.py --gradescope ${SL_CHECK_DIR}/broken-gs.json --junit ${SL_CHECK_DIR}/broken.xml --count $all --errors $margin --failures $((all - margin)) --verdict margin/core/lecture=ERROR --verdict hardware/core/lecture=MISSING")
 set_tests_properties(check_formats_student_broken PROPERTIES LABELS check TIMEOUT 300)
 add_test(NAME check_format_unknown
          COMMAND ${SL_EXPECT} --exit 2 --output "--format: 'csv' is not one of json, gradescope"

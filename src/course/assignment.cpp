@@ -13,6 +13,7 @@
 #include "io/files.h"
 #include "io/json_fields.h"
 #include "scene/scene_json.h"
+#include "stages/drawn.h"
 #include "stages/expectations.h"
 #include "stages/registry.h"
 #include "stages/stage.h"
@@ -127,6 +128,8 @@ std::set<std::string> viewNamesOf(const std::string& stage, const std::string& t
     // The view displaced by the run's seed (check_run.h, checkCases): in the stage's own scene.
     const StageInfo* info = findStage(stage);
     if (info && !info->needsMirror) names.insert("displaced");
+    // The rows whose method parameters the seed draws (stages/drawn.h): the same displaced view.
+    if (!drawnRowsOf(stage, tree).empty()) names.insert("drawn");
     return names;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -111,7 +112,71 @@ bool fits(GLenum type, const char*& wanted, int setter) {
     }
 }
 
+// The GLSL name of a sampler type; nullptr for a type that is not a sampler.
+const char* samplerTypeName(GLenum type) {
+    switch (type) {
+        case GL_SAMPLER_2D:
+            return "sampler2D";
+        case GL_SAMPLER_3D:
+            return "sampler3D";
+        case GL_SAMPLER_CUBE:
+            return "samplerCube";
+        case GL_SAMPLER_2D_SHADOW:
+            return "sampler2DShadow";
+        case GL_SAMPLER_2D_ARRAY:
+            return "sampler2DArray";
+        case GL_SAMPLER_2D_ARRAY_SHADOW:
+            return "sampler2DArrayShadow";
+        case GL_SAMPLER_CUBE_SHADOW:
+            return "samplerCubeShadow";
+        case GL_INT_SAMPLER_2D:
+            return "isampler2D";
+        case GL_UNSIGNED_INT_SAMPLER_2D:
+            return "usampler2D";
+#ifdef GL_SAMPLER_1D
+        case GL_SAMPLER_1D:
+            return "sampler1D";
+        case GL_SAMPLER_1D_SHADOW:
+            return "sampler1DShadow";
+        case GL_SAMPLER_2D_RECT:
+            return "sampler2DRect";
+        case GL_SAMPLER_2D_RECT_SHADOW:
+            return "sampler2DRectShadow";
+#endif
+        default:
+            return nullptr;
+    }
+}
+
 }  // namespace
+
+void Program::checkSamplerUnits() {
+    struct Sampler {
+        std::string name;
+        const char* type;
+    };
+    std::map<GLint, Sampler> byUnit;  // the first sampler seen on each unit
+    std::string clash;
+    forEachActiveUniform(handle_.id(), [&](std::string name, GLenum type) {
+        const char* typeName = samplerTypeName(type);
+        if (!typeName || !clash.empty()) return;
+        GLint loc = glGetUniformLocation(handle_.id(), name.c_str());
+        if (loc < 0) return;
+        GLint unit = 0;
+        glGetUniformiv(handle_.id(), loc, &unit);
+        if (name.size() > 3 && name.compare(name.size() - 3, 3, "[0]") == 0)
+            name.resize(name.size() - 3);
+        auto [it, fresh] = byUnit.emplace(unit, Sampler{name, typeName});
+        if (!fresh && std::string(it->second.type) != typeName)
+            clash = std::string(it->second.type) + " '" + it->second.name + "' and " + typeName +
+                    " '" + name + "' both read texture unit " + std::to_string(unit);
+    });
+    if (!clash.empty())
+        throw ShaderError((origin_.empty() ? name_ : origin_) + ": " + clash +
+                          ": GL forbids samplers of different types on one unit (the draw is "
+                          "INVALID_OPERATION; Mesa draws anyway): give each its own unit or "
+                          "remove the unused one");
+}
 
 GLint Program::location(const char* uniform) {
     auto it = locations_.find(uniform);

@@ -74,6 +74,12 @@ class Program {
         glUniformMatrix4fv(typedLocation(u, Setter::Mat4), 1, GL_FALSE, &m[0][0]);
     }
 
+    // GL's rule, checked by us because Mesa waives it: two active samplers of different types
+    // (sampler2D and sampler2DShadow) on one texture unit make every draw INVALID_OPERATION.
+    // Asked right before a draw, once the stage has set the units; a ShaderError naming the
+    // files and both uniforms.
+    void checkSamplerUnits();
+
   private:
     enum class Setter { Int, Float, Vec3, Vec4, Mat3, Mat4 };
     GLint typedLocation(const char* uniform, Setter setter);

@@ -17,6 +17,7 @@
 #include "io/usage_error.h"
 #include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
+#include "stages/drawn.h"
 #include "stages/registry.h"
 #include "stages/stage.h"
 
@@ -103,6 +104,23 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
             r.displaceSeed = seed;
             cases.push_back({r, "displaced", label});
         }
+    }
+    // The rows whose method parameters the seed draws, seen from the displaced view (its truth
+    // is traced once for both), each held to our shaders at the same values (judgeDrawn). Only
+    // for a submission: our own shaders would be held to themselves.
+    if (narrowed || customView || !seed || base.overlay.empty()) return cases;
+    for (const DrawnRow* row : drawnRowsOf(base.stage, treeName(base.tree))) {
+        RenderRequest r = base;
+        r.sets = drawnSettings(*row, *seed);
+        if (!row->scene.empty()) {
+            r.scene = row->scene;
+            r.sceneGiven = true;
+        }
+        r.displaceSeed = seed;
+        std::string drawn;
+        for (std::size_t k = row->set.size(); k < r.sets.size(); ++k)
+            drawn += (drawn.empty() ? "" : " ") + r.sets[k].first + "=" + r.sets[k].second;
+        cases.push_back({r, "drawn", row->label() + " (drawn: " + drawn + ")"});
     }
     return cases;
 }
@@ -215,6 +233,14 @@ void writePictures(Evaluator& rig, const std::optional<ShadowEvidence>& e,
         r.note += (r.note.empty() ? "" : "; ") + ("no diff image: " + err);
 }
 
+// "slope-k=0.0061 slope-min=0.0021": the drawn parameters' values, as --set takes them.
+std::string drawnValues(const DrawnRow& row, const ParamSet& values) {
+    std::string text;
+    for (const DrawnParam& d : row.draw)
+        text += (text.empty() ? "" : " ") + d.name + "=" + values.text(d.name);
+    return text;
+}
+
 }  // namespace
 
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
@@ -275,13 +301,20 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
     }
-    Judgement j = request.displaceSeed  // without a submission's overlay, ours are measured
-                      ? judgeDisplaced(*r.expectation.entry, r.figureMap(),
-                                       shipped ? *shipped : r.figureMap())
-                      : judge(*r.expectation.entry, r.figureMap());
+    // Settings no lesson names but a drawn row covers (the seed's, or the same typed with --set):
+    // held to ours at the same values, not to the defaults' lesson.
+    const DrawnRow* drawn = request.displaceSeed && !r.expectation.exact
+                                ? drawnRowFor(r.stage, r.scene, r.tree, r.parameters)
+                                : nullptr;
+    const std::map<std::string, double> theirs = r.figureMap();
+    const std::map<std::string, double>& ours = shipped ? *shipped : theirs;
+    Judgement j = drawn ? judgeDrawn(*drawn, drawnValues(*drawn, r.parameters), theirs, ours)
+                  : request.displaceSeed  // without a submission's overlay, ours are measured
+                      ? judgeDisplaced(*r.expectation.entry, theirs, ours)
+                      : judge(*r.expectation.entry, theirs);
     r.status = j.status;
     r.message = j.message;
-    if (!r.expectation.exact)
+    if (!r.expectation.exact && !drawn)
         r.message += " [no entry for these settings: judged by the defaults' lesson]";
     writePictures(rig, evidence, diffPath, pictures, r);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -62,7 +62,9 @@ CheckResult checkResultFor(const RenderRequest& request);
 // goes to stderr and the rig is reset.
 // Other failures propagate (bad input: UsageError; GL: std::runtime_error).
 // A displaced case (RenderRequest::displaceSeed) is judged against the wider of the lesson's
-// bounds and `shipped`, our shipped shaders' figures in the same view (the case's own when null).
+// bounds and `shipped`, our shipped shaders' figures in the same view (the case's own when null);
+// one whose settings no lesson names but a drawn row covers (the seed's, or the same given with
+// --set) is held to `shipped` alone, within the row's tolerance (judgeDrawn).
 // `pictures` says which are written once the row is judged (RowPictures below): with the
 // render and the truth's shading (the mirror: our stencil reflection) beside the diff image
 // (DIFF.render.png, DIFF.truth.png), a feedback page shows the three side by side.
@@ -89,7 +91,9 @@ struct CheckCase {
 // gave a camera or light (`--eye`, `--at`, `--fovy`, `--light`: one view named "custom").
 // With a `seed`, each scene of a stage that casts shadows gets one more view, "displaced": the
 // scene's casters, light and camera moved by displacementFor(seed) (GUIDE section 4: a shader
-// that knows the fixed views' geometry or cameras cannot know this one's).
+// that knows the fixed views' geometry or cameras cannot know this one's). With a seed and a
+// submission's overlay (not narrowed, no custom view), each "drawn" row of the stage
+// (stages/drawn.h) adds one more, view "drawn": the displaced view at settings the seed draws.
 std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool customView,
                                   std::optional<std::uint64_t> seed = std::nullopt);
 

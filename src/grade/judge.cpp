@@ -52,4 +52,24 @@ Judgement judgeDisplaced(const Expectation& e, const std::map<std::string, doubl
     return j;
 }
 
+Judgement judgeDrawn(const DrawnRow& row, const std::string& drawnValues,
+                     const std::map<std::string, double>& theirs,
+                     const std::map<std::string, double>& ours) {
+    Expectation againstOurs;
+    againstOurs.stage = row.stage;
+    againstOurs.outcome = "our shaders' picture";
+    for (const DrawnTolerance& t : row.tolerances) {
+        auto found = ours.find(t.figure);
+        if (found == ours.end() || std::isnan(found->second)) continue;
+        double v = found->second;
+        againstOurs.limits.push_back(
+            {t.figure, std::max(0.0, v / t.factor - t.abs), v * t.factor + t.abs});
+    }
+    if (againstOurs.limits.empty())
+        return {Status::Skip, "our shaders measured none of " + row.label() + "'s figures"};
+    Judgement j = judge(againstOurs, theirs);
+    j.message += " [drawn " + drawnValues + ": held to our shaders at the same values]";
+    return j;
+}
+
 }  // namespace sl

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "grade/status.h"
+#include "stages/drawn.h"
 #include "stages/expectations.h"
 
 namespace sl {
@@ -26,5 +27,13 @@ Judgement judge(const Expectation& e, const std::map<std::string, double>& figur
 // one that hard-codes the scene misses by tens of pixels and percent.
 Judgement judgeDisplaced(const Expectation& e, const std::map<std::string, double>& theirs,
                          const std::map<std::string, double>& ours);
+
+// A row whose settings the seed drew (stages/drawn.h) has no lesson bounds of its own: each
+// figure the row's tolerance names is held to ours at the same values and view, within
+// [ours / factor - abs, ours * factor + abs] (the spread of valid formulations). The message names
+// the drawn values, so `check --set NAME=VALUE ... --seed S` repeats the row.
+Judgement judgeDrawn(const DrawnRow& row, const std::string& drawnValues,
+                     const std::map<std::string, double>& theirs,
+                     const std::map<std::string, double>& ours);
 
 }  // namespace sl

@@ -22,6 +22,7 @@ void drawSceneLit(Program& program, const FrameContext& f, const Viewer& viewer,
     program.set("specular", f.scene.material.specular);
     program.set("shininess", f.scene.material.shininess);
     program.set("debugView", debugView);
+    program.checkSamplerUnits();  // the stage set its units before calling
     f.gpu.bind();
     for (std::size_t i = 0; i < f.scene.objects.size(); ++i) {
         const Object& o = f.scene.objects[i];

@@ -1,0 +1,201 @@
+#include "stages/drawn.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+
+#include "stages/stage.h"
+
+namespace sl {
+
+namespace {
+
+using nlohmann::json;
+
+bool coversTree(const DrawnRow& row, const std::string& tree) {
+    if (row.trees.empty()) return true;
+    for (const auto& t : row.trees)
+        if (t == tree) return true;
+    return false;
+}
+
+DrawnParam parseDraw(const ParamSpec& spec, const json& v, const std::string& where) {
+    DrawnParam d;
+    d.name = spec.name;
+    if (spec.kind == ParamKind::Choice) {
+        if (!v.is_array() || v.size() < 2)
+            throw ExpectationError(where + ": a choice is drawn from a list of two or more");
+        for (const auto& c : v) {
+            bool known = false;
+            for (const auto& allowed : spec.choices)
+                known = known || (c.is_string() && c == allowed);
+            if (!known)
+                throw ExpectationError(where + ": '" + c.dump() + "' is not one of " +
+                                       spec.rangeText());
+            d.choices.push_back(c.get<std::string>());
+        }
+        return d;
+    }
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+        throw ExpectationError(where + ": a number is drawn from [min, max]");
+    d.min = v[0].get<double>();
+    d.max = v[1].get<double>();
+    if (!(d.min < d.max) || d.min < spec.min || d.max > spec.max)
+        throw ExpectationError(where + ": [min, max] must be increasing within " +
+                               spec.rangeText());
+    return d;
+}
+
+DrawnRow parseRow(const json& j, const std::string& where) {
+    auto fail = [&](const std::string& what) { throw ExpectationError(where + ": " + what); };
+    if (!j.is_object()) fail("an entry must be an object");
+    for (const auto& [key, value] : j.items())
+        if (key != "stage" && key != "scene" && key != "trees" && key != "set" && key != "draw" &&
+            key != "tolerance" && key != "why" && key != "measured")
+            fail("unknown field '" + key + "'");
+    DrawnRow row;
+    if (!j.contains("stage") || !j["stage"].is_string()) fail("missing \"stage\"");
+    row.stage = j["stage"].get<std::string>();
+    const StageInfo* info = findStage(row.stage);
+    if (!info) fail("unknown stage '" + row.stage + "'");
+    if (j.contains("scene")) row.scene = j.value("scene", "");
+    if (j.contains("trees")) row.trees = j["trees"].get<std::vector<std::string>>();
+    if (!j.contains("why") || !j["why"].is_string()) fail("missing \"why\"");
+    row.why = j["why"].get<std::string>();
+    ParamSet values(info->params);
+    const json set = j.contains("set") ? j["set"] : json::object();
+    if (!set.is_object()) fail("\"set\" must be an object of NAME: \"VALUE\"");
+    for (const auto& [name, value] : set.items()) {
+        if (!value.is_string()) fail("set." + name + " must be a string");
+        std::string err = values.set(name, value.get<std::string>());
+        if (!err.empty()) fail("set " + name + ": " + err);
+        row.set.emplace_back(name, value.get<std::string>());
+    }
+    if (!j.contains("draw") || !j["draw"].is_object() || j["draw"].empty())
+        fail("\"draw\" must be a non-empty object of PARAMETER: [min, max] or [choices]");
+    for (const auto& [name, value] : j["draw"].items()) {
+        const ParamSpec* spec = values.find(name);
+        if (!spec) fail("draw: stage " + row.stage + " has no parameter '" + name + "'");
+        row.draw.push_back(parseDraw(*spec, value, where + ": draw." + name));
+    }
+    if (!j.contains("tolerance") || !j["tolerance"].is_object() || j["tolerance"].empty())
+        fail("\"tolerance\" must be a non-empty object of FIGURE: {\"abs\": A, \"factor\": F}");
+    for (const auto& [figure, t] : j["tolerance"].items()) {
+        bool known = false;
+        for (const auto& f : figureNames()) known = known || f == figure;
+        if (!known) fail("tolerance: unknown figure '" + figure + "'");
+        if (!t.is_object() || !t.contains("abs") || !t["abs"].is_number() ||
+            !t.contains("factor") || !t["factor"].is_number() || t["factor"].get<double>() < 1 ||
+            t["abs"].get<double>() < 0 || t.size() != 2)
+            fail("tolerance." + figure + " must be {\"abs\": A >= 0, \"factor\": F >= 1}");
+        row.tolerances.push_back({figure, t["abs"].get<double>(), t["factor"].get<double>()});
+    }
+    return row;
+}
+
+// Two significant digits: "margin 0.0047", easy to type back with --set.
+std::string twoDigits(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2g", v);
+    return text;
+}
+
+std::uint64_t labelHash(const std::string& text) {  // FNV-1a: the same on every platform
+    std::uint64_t h = 1469598103934665603ull;
+    for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+    return h;
+}
+
+std::string drawOne(const DrawnParam& d, const ParamSpec& spec, std::mt19937_64& rng) {
+    std::uint64_t x = rng();
+    if (!d.choices.empty()) return d.choices[x % d.choices.size()];
+    double u = double(x >> 11) * 0x1.0p-53;  // [0, 1), not left to the library
+    double v = d.min + u * (d.max - d.min);
+    if (spec.kind == ParamKind::Integer) {
+        double step = d.max - d.min >= 256 ? 64 : 1;
+        v = std::clamp(std::round(v / step) * step, d.min, d.max);
+        return std::to_string(static_cast<long long>(v));
+    }
+    std::string text = twoDigits(v);
+    double back = std::stod(text);
+    return back < d.min || back > d.max ? twoDigits(std::clamp(back, d.min, d.max)) : text;
+}
+
+}  // namespace
+
+std::string DrawnRow::label() const {
+    std::string text = stage;
+    if (!scene.empty()) text += " scene=" + scene;
+    for (const auto& [name, value] : set) text += " " + name + "=" + value;
+    return text;
+}
+
+std::vector<DrawnRow> parseDrawnRows(const std::string& text, const std::string& origin) {
+    json doc = json::parse(text, nullptr, false);
+    std::vector<DrawnRow> rows;
+    if (!doc.is_object() || !doc.contains("drawn")) return rows;
+    if (!doc["drawn"].is_array()) throw ExpectationError(origin + ": \"drawn\" must be a list");
+    for (std::size_t k = 0; k < doc["drawn"].size(); ++k)
+        rows.push_back(parseRow(doc["drawn"][k], origin + ": drawn[" + std::to_string(k) + "]"));
+    return rows;
+}
+
+const std::vector<DrawnRow>& drawnRows() {
+    static const std::vector<DrawnRow> rows = [] {
+        std::ifstream in(expectationsPath());
+        std::stringstream text;
+        text << in.rdbuf();
+        return parseDrawnRows(text.str(), expectationsPath());
+    }();
+    return rows;
+}
+
+std::vector<const DrawnRow*> drawnRowsOf(const std::string& stage, const std::string& tree) {
+    std::vector<const DrawnRow*> out;
+    for (const DrawnRow& row : drawnRows())
+        if (row.stage == stage && coversTree(row, tree)) out.push_back(&row);
+    return out;
+}
+
+std::vector<std::pair<std::string, std::string>> drawnSettings(const DrawnRow& row,
+                                                               std::uint64_t seed) {
+    std::mt19937_64 rng(seed ^ labelHash(row.label()));
+    ParamSet values(findStage(row.stage)->params);
+    auto settings = row.set;
+    for (const DrawnParam& d : row.draw)
+        settings.emplace_back(d.name, drawOne(d, *values.find(d.name), rng));
+    return settings;
+}
+
+const DrawnRow* drawnRowFor(const std::string& stage, const std::string& scene,
+                            const std::string& tree, const ParamSet& values) {
+    for (const DrawnRow* row : drawnRowsOf(stage, tree)) {
+        if ((row->scene.empty() ? defaultSceneOf(stage) : row->scene) != scene) continue;
+        ParamSet expected(values.specs());
+        for (const auto& [name, value] : row->set) expected.set(name, value);
+        bool covered = true;
+        for (const ParamSpec& spec : values.specs()) {
+            const DrawnParam* d = nullptr;
+            for (const DrawnParam& p : row->draw)
+                if (p.name == spec.name) d = &p;
+            if (!d) {
+                covered = covered && values.text(spec.name) == expected.text(spec.name);
+            } else if (!d->choices.empty()) {
+                bool in = false;
+                for (const auto& c : d->choices) in = in || c == values.text(spec.name);
+                covered = covered && in;
+            } else {
+                double v = values.number(spec.name);
+                covered = covered && v >= d->min && v <= d->max;
+            }
+        }
+        if (covered) return row;
+    }
+    return nullptr;
+}
+
+}  // namespace sl

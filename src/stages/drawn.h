@@ -1,0 +1,61 @@
+// Rows whose settings the run's seed draws (expectations.json "drawn"): a stage's method
+// parameters (margin, slope k/min/max, map size, polygon offset, filter, depth format) drawn
+// within each lesson's meaningful range and seen from the displaced view. Such a row has no
+// lesson bounds of its own: the student's render is held to our shipped shaders' render at the
+// same values (grade/judge.h, judgeDrawn). A shader that ignores a uniform its method uses, or
+// recognises a lesson by a uniform's value or textureSize, cannot follow values nobody chose.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "stages/expectations.h"
+
+namespace sl {
+
+// One drawn parameter: a number or integer drawn in [min, max], or one of `choices`.
+struct DrawnParam {
+    std::string name;
+    double min = 0, max = 0;
+    std::vector<std::string> choices;  // non-empty for a choice parameter
+};
+
+// How far a figure of theirs may be from ours: within [ours / factor - abs, ours * factor + abs]
+// (a factor, not a difference: acne percentages of valid formulations differ by ratios).
+struct DrawnTolerance {
+    std::string figure;
+    double abs = 0, factor = 1;
+};
+
+struct DrawnRow {
+    std::string stage;
+    std::string scene;                                     // "" = the stage's default scene
+    std::vector<std::string> trees;                        // empty = every tree
+    std::vector<std::pair<std::string, std::string>> set;  // fixed settings (margin-kind=slope)
+    std::vector<DrawnParam> draw;
+    std::vector<DrawnTolerance> tolerances;
+    std::string why;
+    // "margin margin-kind=slope": the fixed part, the same for every seed
+    std::string label() const;
+};
+
+// Parses the data file's "drawn" list (absent = none); checks stages, parameters and ranges
+// against the registry and figure names against figureNames(). `origin` names the file.
+std::vector<DrawnRow> parseDrawnRows(const std::string& text, const std::string& origin);
+const std::vector<DrawnRow>& drawnRows();  // from expectationsPath(), loaded once
+std::vector<const DrawnRow*> drawnRowsOf(const std::string& stage, const std::string& tree);
+
+// The settings of `row` for `seed`: its fixed ones, then each drawn one (numbers to two
+// significant digits, integers to a multiple of 64 where the range allows). The same on every
+// platform (mt19937_64's output is fixed; the mapping is ours).
+std::vector<std::pair<std::string, std::string>> drawnSettings(const DrawnRow& row,
+                                                               std::uint64_t seed);
+
+// The row covering `values` in (stage, scene, tree): its fixed settings equal, its drawn ones
+// within their ranges, every other parameter at its default. nullptr when none does.
+const DrawnRow* drawnRowFor(const std::string& stage, const std::string& scene,
+                            const std::string& tree, const ParamSet& values);
+
+}  // namespace sl
