@@ -74,3 +74,7 @@ set_tests_properties(course_record_hash PROPERTIES LABELS course TIMEOUT 900)
 add_test(NAME course_hostile_text
          COMMAND python3 ${SL_COURSE_PY}/test_hostile_text.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/hostile-text)
 set_tests_properties(course_hostile_text PROPERTIES LABELS course TIMEOUT 900)
+# A student's page at a glance: the stages' overview, captions, TIMEOUT's cause, source notes (issue 39).
+add_test(NAME course_student_page
+         COMMAND python3 ${SL_COURSE_PY}/test_student_page.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/student-page)
+set_tests_properties(course_student_page PROPERTIES LABELS course TIMEOUT 600)

@@ -1,11 +1,13 @@
 #include "course/class_annotations.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <set>
 
 #include "course/adjustments.h"
 #include "course/copy_flags.h"
+#include "course/copy_pairs.h"
 #include "course/late_policy.h"
 #include "course/release.h"
 #include "io/files.h"
@@ -56,11 +58,9 @@ std::map<std::string, std::vector<Adjustment>> adjustmentsOf(
 
 }  // namespace
 
-std::map<std::string, std::vector<std::string>> copyFlagsOf(const Assignment& a,
-                                                            const std::vector<std::string>& names,
-                                                            const std::vector<std::string>& files,
-                                                            const std::string& out,
-                                                            const SolutionTrees& trees) {
+void addCopyFlags(ClassAnnotations& c, const Assignment& a, const std::vector<std::string>& names,
+                  const std::vector<std::string>& files, const std::string& out,
+                  const SolutionTrees& trees) {
     std::map<std::string, std::string> solutions, starters;
     for (const AssignmentStage* st : a.due())
         for (const std::string& f : st->files) {
@@ -83,10 +83,13 @@ std::map<std::string, std::vector<std::string>> copyFlagsOf(const Assignment& a,
         }
         handIns.push_back(std::move(h));
     }
-    std::map<std::string, std::vector<std::string>> flags;
-    for (const CopyFlag& f : findCopies(handIns, solutions, starters))
-        flags[f.student].push_back(f.text());
-    return flags;
+    c.flags.clear();
+    c.solutionCopies.clear();
+    for (const CopyFlag& f : findCopies(handIns, solutions, starters)) {
+        c.flags[f.student].push_back(f.text());
+        if (f.other.empty()) c.solutionCopies.push_back(f);
+    }
+    c.pairs = copyPairs(handIns, starters);
 }
 
 ClassAnnotations readAnnotations(const ClassGradeArgs& args, const Assignment& a,
@@ -112,11 +115,33 @@ ClassAnnotations readAnnotations(const ClassGradeArgs& args, const Assignment& a
     return c;
 }
 
+void warnOnDownloadTimes(const ClassAnnotations& c, const Assignment& a,
+                         const std::vector<std::string>& names,
+                         const std::vector<std::string>& entries) {
+    if (!a.late) return;
+    std::vector<long long> fileTimes;
+    for (std::size_t k = 0; k < names.size() && k < entries.size(); ++k)
+        if (!c.times.count(names[k]))
+            if (std::optional<long long> t = newestFileTime(entries[k])) fileTimes.push_back(*t);
+    if (!looksLikeDownload(*a.late, fileTimes)) return;
+    const auto [first, last] = std::minmax_element(fileTimes.begin(), fileTimes.end());
+    std::cout << "warning: the file times of " << fileTimes.size() << " hand-ins"
+              << (c.times.empty() ? "" : " not in --times")
+              << " all lie after the deadline, within " << (*last - *first + 59) / 60
+              << " min of each other (" << isoUtc(*first) << " to " << isoUtc(*last)
+              << "): that looks like when the class was downloaded, and each is charged late; "
+                 "give when each was handed in with --times times.csv (hand-in,time; "
+                 "docs/assignment.md \"Late policy\")\n";
+}
+
 // What the class adds to a kept record when outputs are drawn (its roster entry, its copy
 // flags, its lateness, its adjustments): true when that changed it, so it is written again.
 bool annotateRecord(const ClassAnnotations& c, const Assignment& a, const std::string& name,
                     const std::string& entry, StudentRecord& r) {
-    const auto& [roster, flags, times, adjustments] = c;
+    const auto& roster = c.roster;
+    const auto& flags = c.flags;
+    const auto& times = c.times;
+    const auto& adjustments = c.adjustments;
     const std::optional<LateRecord> late = lateOf(a, times, name, entry, r);
     bool changed = roster && attachRoster(*roster, name, r);
     auto given = adjustments.find(name);
@@ -137,7 +162,7 @@ bool annotateRecord(const ClassAnnotations& c, const Assignment& a, const std::s
     auto same = [](const std::optional<LateRecord>& x, const std::optional<LateRecord>& y) {
         return x.has_value() == y.has_value() &&
                (!x || (x->handedIn == y->handedIn && x->source == y->source && x->days == y->days &&
-                       std::abs(x->penalty - y->penalty) < 1e-9));
+                       x->capped == y->capped && std::abs(x->penalty - y->penalty) < 1e-9));
     };
     if (!same(late, r.late)) {
         r.late = late;

@@ -294,6 +294,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     }
     // The roster, --times and the adjustments: read (and refused, exit 2) before any work.
     ClassAnnotations annotations = readAnnotations(args, a, names);
+    warnOnDownloadTimes(annotations, a, names, entries);
     for (const std::string& wanted : args.regrade)
         if (std::find(names.begin(), names.end(), wanted) == names.end())
             throw UsageError("--regrade: no hand-in named '" + printableName(wanted) + "' in " +
@@ -442,6 +443,7 @@ int runClassGrade(const ClassGradeArgs& args) {
             std::optional<StudentRecord> r;
             if (!isFresh(k, r)) continue;
             reported.insert(k);
+            annotateRecord(annotations, a, names[k], entries[k], *r);  // the total, as pages show
             double left =
                 rowsLeft ? *rowsLeft
                          : now / double(reported.size()) * double(todo.size() - reported.size());
@@ -449,7 +451,7 @@ int runClassGrade(const ClassGradeArgs& args) {
             std::snprintf(line, sizeof line,
                           "[student %zu of %zu] %-24s %7.2f / %.2f  %-10s time left about %s\n",
                           n - todo.size() + reported.size(), n, printableName(names[k]).c_str(),
-                          r->score, r->maxScore, statusName(r->status()),
+                          r->graded() ? r->total() : r->score, r->maxScore, statusName(r->status()),
                           reported.size() == todo.size() ? "0 s" : duration(left).c_str());
             std::cout << line << std::flush;
         }
@@ -468,7 +470,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     poll();
 
     // The class's outputs from every record (those of earlier runs too).
-    annotations.flags = copyFlagsOf(a, names, files, args.out, trees);
+    addCopyFlags(annotations, a, names, files, args.out, trees);
     std::vector<StudentRecord> records;
     std::vector<std::string> pages;
     std::size_t notGraded = 0;
@@ -493,7 +495,9 @@ int runClassGrade(const ClassGradeArgs& args) {
     writeOrThrow(args.out + "/grades.csv", gradesCsv(records));
     writeOrThrow(args.out + "/gradebook-canvas.csv", canvasCsv(a.name, records));
     writeOrThrow(args.out + "/gradebook-moodle.csv", moodleCsv(a.name, records));
-    writeOrThrow(args.out + "/class.html", classPage(a.name, records, pages, listing.skipped));
+    writeOrThrow(args.out + "/class.html",
+                 classPage(a.name, records, pages, listing.skipped,
+                           {annotations.pairs, annotations.solutionCopies}));
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "graded " << n - notGraded << " of " << n;

@@ -24,26 +24,75 @@ std::string failureOf(const StageRecord& st) {
     return "";
 }
 
-// The copy flags of the class (course/copy_flags.h), one row per student and file: for the
-// instructor to look at, never a score, never on a student's page.
-std::string copyFlagsTable(const std::vector<StudentRecord>& records,
-                           const std::vector<std::string>& pages) {
-    std::ostringstream rows;
-    for (std::size_t k = 0; k < records.size(); ++k)
-        for (const std::string& f : records[k].flags)
-            rows << "<tr><td><a href=\"" << esc(pages[k]) << "\">" << esc(records[k].student)
-                 << "</a></td><td class=\"msg\">" << esc(f) << "</td></tr>\n";
-    if (rows.str().empty()) return "";
-    return "<h2>Possible copies (for the instructor: not a score)</h2>\n"
-           "<table><tr><th>student</th><th>file and what it equals</th></tr>\n" +
-           rows.str() + "</table>\n";
+// The possible copies (course/copy_pairs.h), for the instructor to look at, never a score, never
+// on a student's page: one row per pair at or above the threshold, ranked by the share of their
+// written due code in common; the pairs below it counted (short natural code is shared by
+// honest students); the files equal to the published solution, one row per student and file.
+std::string copiesTables(const ClassCopies& copies, const std::vector<StudentRecord>& records,
+                         const std::vector<std::string>& pages) {
+    std::map<std::string, std::string> pageOf;
+    for (std::size_t k = 0; k < records.size() && k < pages.size(); ++k)
+        pageOf[records[k].student] = pages[k];
+    auto who = [&](const std::string& name) {
+        auto it = pageOf.find(name);
+        return it == pageOf.end() ? esc(name)
+                                  : "<a href=\"" + esc(it->second) + "\">" + esc(name) + "</a>";
+    };
+    std::ostringstream pairs, solution;
+    std::size_t below = 0;
+    for (const CopyPair& p : copies.pairs) {
+        if (p.share < kCopyShareFlagged) {
+            ++below;
+            continue;
+        }
+        std::string files;
+        for (const std::string& f : p.files) files += (files.empty() ? "" : ", ") + f;
+        pairs << "<tr><td>" << who(p.a) << " and " << who(p.b) << "</td><td class=\"share\">"
+              << numText(100 * p.share, 0) << " %</td><td>" << p.files.size() << " ("
+              << p.commonTokens << " written tokens)</td><td class=\"msg\">" << esc(files)
+              << "</td></tr>\n";
+    }
+    for (const CopyFlag& f : copies.solution)
+        solution << "<tr><td>" << who(f.student) << "</td><td class=\"msg\">" << esc(f.file)
+                 << "</td></tr>\n";
+    if (pairs.str().empty() && solution.str().empty() && below == 0) return "";
+    std::ostringstream h;
+    h << "<h2>Possible copies (for the instructor: not a score)</h2>\n";
+    if (!pairs.str().empty())
+        h << "<table class=\"pairs\"><tr><th>pair</th><th>their written due code in common</th>"
+             "<th>files the same</th><th>which</th></tr>\n"
+          << pairs.str() << "</table>\n";
+    if (below)
+        h << "<p>" << below << (below == 1 ? " more pair has" : " more pairs have")
+          << " some due code the same, under " << numText(100 * kCopyShareFlagged, 0)
+          << " % of what they wrote (short code is often written the same by honest students): "
+             "not flagged.</p>\n";
+    if (!solution.str().empty())
+        h << "<table><tr><th>student</th><th>the same as the published solution</th></tr>\n"
+          << solution.str() << "</table>\n";
+    return h.str();
+}
+
+// A student's late penalty, adjustments and total (after both), as cells of the class table.
+std::string totalCells(const StudentRecord& r) {
+    if (!r.graded()) return "<td></td><td></td><td class=\"total\">not graded</td>";
+    std::string late, adjusted;
+    if (r.late && r.late->days > 0)
+        late = "-" + numText(r.late->penalty) + " (" + std::to_string(r.late->days) +
+               (r.late->days == 1 ? " day" : " days") + (r.late->capped ? ", capped" : "") + ")";
+    if (!r.adjustments.empty()) {
+        const double a = r.adjusted();
+        adjusted = (a >= 0 ? "+" : "") + numText(a);
+    }
+    return "<td>" + esc(late) + "</td><td>" + esc(adjusted) + "</td><td class=\"total\">" +
+           numText(r.total()) + " / " + numText(r.maxScore) + "</td>";
 }
 
 }  // namespace
 
 std::string classPage(const std::string& assignment, const std::vector<StudentRecord>& records,
                       const std::vector<std::string>& pages,
-                      const std::vector<std::string>& skipped) {
+                      const std::vector<std::string>& skipped, const ClassCopies& copies) {
     std::ostringstream h;
     h << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << esc(assignment)
       << ": the class</title>" << kStyle << "</head><body>\n<h1>" << esc(assignment) << "</h1>\n";
@@ -53,7 +102,9 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
             stages.push_back(st.stage + "/" + st.tree);
     h << "<p>" << records.size() << " students</p>\n<table><tr><th>student</th>";
     for (const auto& s : stages) h << "<th>" << esc(s) << "</th>";
-    h << "<th>total</th></tr>\n";
+    // The total is StudentRecord::total(), as in grades.csv, the exports and the student's page;
+    // what took it from the graded points is beside it.
+    h << "<th>late</th><th>adjusted</th><th>total</th></tr>\n";
     std::vector<std::map<std::string, int>> failures(stages.size());
     for (std::size_t k = 0; k < records.size(); ++k) {
         const StudentRecord& r = records[k];
@@ -74,8 +125,7 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
             if (!f.empty() && i < failures.size()) ++failures[i][f];
             ++i;
         }
-        h << "<td>" << (r.graded() ? numText(r.score) + " / " + numText(r.maxScore) : "not graded")
-          << "</td></tr>\n";
+        h << totalCells(r) << "</tr>\n";
     }
     h << "</table>\n<h2>Most common failure per "
          "stage</h2>\n<table><tr><th>stage</th><th>failure</th><th>students</th></tr>\n";
@@ -92,7 +142,7 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
     }
     h << "</table>\n";
     // The source rules' findings (possible gaming, a method not written): for the instructor,
-    // never a score by themselves, never on a student's page.
+    // never a score by themselves; the student's page shows their own (feedback_html.h).
     std::ostringstream notes;
     for (std::size_t k = 0; k < records.size(); ++k)
         for (const StageRecord& st : records[k].stages) {
@@ -109,7 +159,7 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
         h << "<h2>Notes from the source rules (for the instructor: not a score)</h2>\n"
              "<table><tr><th>student</th><th>stage</th><th>note</th></tr>\n"
           << notes.str() << "</table>\n";
-    h << copyFlagsTable(records, pages);
+    h << copiesTables(copies, records, pages);
     if (!skipped.empty()) {
         h << "<h2>Left out of the class folder (not hand-ins)</h2>\n<ul>\n";
         for (const std::string& s : skipped) h << "<li>" << esc(s) << "</li>\n";

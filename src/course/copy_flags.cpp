@@ -1,7 +1,10 @@
 #include "course/copy_flags.h"
 
+#include <algorithm>
 #include <cctype>
 #include <set>
+
+#include "course/copy_pairs.h"
 
 namespace sl {
 
@@ -117,28 +120,31 @@ std::vector<CopyFlag> findCopies(const std::vector<HandInFiles>& handIns,
             starter = normalizedTokens(it->second);
         if (auto it = solutions.find(file); it != solutions.end())
             solution = normalizedTokens(it->second);
-        // Hand-ins by their tokens: a group of two or more is a set of copies of each other.
-        std::map<std::vector<std::string>, std::vector<std::string>> groups;
         for (const HandInFiles& h : handIns) {
             auto it = h.files.find(file);
             if (it == h.files.end()) continue;
             std::vector<std::string> tokens = normalizedTokens(it->second);
             if (tokens.empty() || tokens == starter) continue;
             if (!solution.empty() && tokens == solution) out.push_back({h.name, file, ""});
-            groups[tokens].push_back(h.name);
         }
-        for (const auto& group : groups) {
-            const std::vector<std::string>& members = group.second;
-            if (members.size() < 2) continue;
-            for (const std::string& a : members) {  // the others: five named, then a count
-                std::string others;
-                int named = 0;
-                for (const std::string& b : members)
-                    if (b != a && named++ < 5) others += (others.empty() ? "" : ", ") + b;
-                if (named > 5) others += " and " + std::to_string(named - 5) + " more";
-                out.push_back({a, file, others});
-            }
+    }
+    // Classmates: only a pair sharing at least kCopyShareFlagged of its written due code (short
+    // natural code is written the same by honest students); per student and file, the others.
+    std::map<std::pair<std::string, std::string>, std::vector<std::string>> others;
+    for (const CopyPair& p : copyPairs(handIns, starters)) {
+        if (p.share < kCopyShareFlagged) break;  // ranked: the rest are below too
+        for (const std::string& file : p.files) {
+            others[{p.a, file}].push_back(p.b);
+            others[{p.b, file}].push_back(p.a);
         }
+    }
+    for (auto& [who, names] : others) {  // five named, then a count
+        std::sort(names.begin(), names.end());
+        std::string list;
+        for (std::size_t k = 0; k < names.size() && k < 5; ++k)
+            list += (list.empty() ? "" : ", ") + names[k];
+        if (names.size() > 5) list += " and " + std::to_string(names.size() - 5) + " more";
+        out.push_back({who.first, who.second, list});
     }
     return out;
 }

@@ -30,8 +30,9 @@ struct CopyFlag {
 };
 
 // The flags of a class: for each due file, every hand-in equal to its published solution
-// (`solutions`: file -> the solution's whole text) and every pair of hand-ins equal to each
-// other. A file equal to its starter (`starters`: what everyone was given) is never flagged.
+// (`solutions`: file -> the solution's whole text), and the files of every pair of hand-ins
+// that shares at least kCopyShareFlagged of its written due code (course/copy_pairs.h). A file
+// equal to its starter (`starters`: what everyone was given) is never flagged.
 std::vector<CopyFlag> findCopies(const std::vector<HandInFiles>& handIns,
                                  const std::map<std::string, std::string>& solutions,
                                  const std::map<std::string, std::string>& starters);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "course/html_text.h"
+#include "course/student_summary.h"
 #include "io/files.h"
 #include "stages/registry.h"
 
@@ -105,8 +106,10 @@ std::string plainWords(const RowRecord& rr) {
         case Status::NotGraded:
             return "This check could not be run on the grading machine. That is not your "
                    "submission's fault; it will be graded again.";
-        case Status::Error:
         case Status::Timeout:
+            return "Your shader could not be run: " + row.message + ". " + kTimeoutCause +
+                   " Fix this first; the stage gets no points until it runs.";
+        case Status::Error:
         case Status::Crash:
             return "Your shader could not be run: " + row.message +
                    ". Fix this first; the stage gets no points until it runs.";
@@ -140,12 +143,6 @@ std::string plainWords(const RowRecord& rr) {
 }
 
 namespace {
-
-// A page is handed back once grades are out (after the due date, published): every row but a
-// hidden one (or one of a hidden stage) is shown; hidden rows are counted, never shown.
-bool shownToStudent(const StageRecord& st, const RowRecord& row) {
-    return st.visibility != "hidden" && row.visibility != "hidden";
-}
 
 // The three pictures of a row's check, side by side, with the legend of its difference picture
 // (the mirror's is its difference from our exact stencil reflection).
@@ -184,10 +181,43 @@ std::string lateLine(const LateRecord& late, const StudentRecord& r) {
     else
         h << numText(late.minutes / 60.0, 1) << " hours late, " << late.days
           << (late.days == 1 ? " day" : " days")
-          << " charged by the late policy: " << numText(late.penalty) << " points off, "
+          << " charged by the late policy: " << numText(late.penalty) << " points off"
+          << (late.capped ? " (the policy's cap: no more is taken however late)" : "") << ", "
           << numText(r.total()) << " of " << numText(r.maxScore) << " points after the penalty.";
     h << "</p>\n";
     return h.str();
+}
+
+// The head line's points: the total (StudentRecord::total(), as the class page and the
+// gradebook show it), and what took it from the graded points when anything did.
+std::string totalLine(const StudentRecord& r) {
+    if (!r.graded())
+        return "not graded yet (the grading machine could not run every check; it will be "
+               "graded again)";
+    std::string line = "<span class=\"total\">" + numText(r.total()) + " of " +
+                       numText(r.maxScore) + " points</span>";
+    const bool late = r.late && r.late->days > 0;
+    if (!late && r.adjustments.empty()) return line;
+    line += " (graded " + numText(r.score);
+    if (late) line += ", late policy -" + numText(r.late->penalty);
+    if (!r.adjustments.empty())
+        line += ", adjusted " + std::string(r.adjusted() >= 0 ? "+" : "") + numText(r.adjusted());
+    return line + ")";
+}
+
+// The source rules' notes on a stage's files (in the student's own file names, grade/record.h),
+// once each: what the shader's text does that the pictures may not show.
+std::string sourceNotesOf(const StageRecord& st) {
+    std::set<std::string> seen;
+    std::ostringstream items;
+    for (const RowRecord& row : st.rows)
+        if (shownToStudent(st, row))
+            for (const std::string& n : row.result.sourceNotes)
+                if (seen.insert(n).second) items << "<li>" << esc(n) << "</li>\n";
+    if (items.str().empty()) return "";
+    return "<p>Notes on your source (for you and your instructor to read; they cost no "
+           "points by themselves):</p>\n<ul class=\"notes\">\n" +
+           items.str() + "</ul>\n";
 }
 
 std::string pointsOf(double points, double max, Status status) {
@@ -205,22 +235,16 @@ std::string studentPage(const StudentRecord& record) {
     h << "<h1>" << esc(record.assignment) << "</h1>\n<p><b>" << esc(record.student) << "</b>"
       << (record.roster ? " (" + esc(record.roster->name) + ", " + esc(record.roster->id) + ")"
                         : std::string())
-      << ": "
-      << (record.graded() ? numText(record.score) + " of " + numText(record.maxScore) + " points"
-                          : std::string("not graded yet (the grading machine could not run "
-                                        "every check; it will be graded again)"))
-      << "</p>\n";
+      << ": " << totalLine(record) << "</p>\n";
     // Nothing is charged on a student not graded: the late policy applies to a score.
     if (record.late && record.graded()) h << lateLine(*record.late, record);
     for (const Adjustment& a : record.adjustments)
         h << "<p>Adjusted by your teaching staff: " << (a.points >= 0 ? "+" : "")
           << numText(a.points) << " points on " << esc(a.stage) << ": " << esc(a.reason)
           << "</p>\n";
-    if (!record.adjustments.empty() && record.graded())
-        h << "<p>Your total: " << numText(record.total()) << " of " << numText(record.maxScore)
-          << " points.</p>\n";
     if (!record.error.empty()) h << "<p class=\"ERROR\">" << esc(record.error) << "</p>\n";
     for (const std::string& n : record.notes) h << "<p>Note: " << esc(n) << "</p>\n";
+    h << stagesSummary(record);
     int hiddenStages = 0;  // graded, but neither named nor shown: the student sees no result
     for (const StageRecord& st : record.stages) {
         if (st.visibility == "hidden") {
@@ -258,7 +282,9 @@ std::string studentPage(const StudentRecord& record) {
         }
         h << "</table>\n";
         if (hidden) h << "<p>" << hidden << " more checks of this stage are hidden.</p>\n";
-        if (shown && !shown->result.diffFile.empty()) h << picturesOf(shown->result);
+        h << sourceNotesOf(st);
+        if (shown && !shown->result.diffFile.empty())
+            h << picturesOf(shown->result) << lessonCaption(*shown);
     }
     if (hiddenStages)
         h << "<p>" << hiddenStages << (hiddenStages == 1 ? " more stage is" : " more stages are")

@@ -99,7 +99,8 @@ std::string submissionName(const std::string& path) {
 namespace {
 
 StudentWork intakeOrThrow(const std::string& path, const std::string& workDir,
-                          const std::vector<std::string>& stages) {
+                          const std::vector<std::string>& stages,
+                          const std::set<std::string>& listed) {
     StudentWork s;
     s.name = submissionName(path);
     std::error_code ec;
@@ -144,7 +145,7 @@ StudentWork intakeOrThrow(const std::string& path, const std::string& workDir,
     fs::permissions(snapshot, fs::perms::owner_all, ec);
     s.overlay = snapshot;
     try {
-        Submission sub = takeSubmission(root, snapshot, shippedTrees().both, stages);
+        Submission sub = takeSubmission(root, snapshot, shippedTrees().both, stages, listed);
         s.files = sub.files;
         for (const std::string& note : sub.notes) s.notes.push_back(namedAsHandedIn(note, shownAs));
     } catch (const NothingHandedIn& e) {
@@ -160,9 +161,10 @@ StudentWork intakeOrThrow(const std::string& path, const std::string& workDir,
 }  // namespace
 
 StudentWork intakeSubmission(const std::string& path, const std::string& workDir,
-                             const std::vector<std::string>& stages) {
+                             const std::vector<std::string>& stages,
+                             const std::set<std::string>& listed) {
     try {
-        StudentWork s = intakeOrThrow(path, workDir, stages);
+        StudentWork s = intakeOrThrow(path, workDir, stages, listed);
         hideInstructorPaths(s, path, workDir);
         return s;
     } catch (const SnapshotWriteError& e) {  // a full disk: NOT GRADED, never a score

@@ -4,6 +4,7 @@
 // no shipped file is not an error here: every due stage of it is MISSING with 0 points.
 #pragma once
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -15,10 +16,11 @@ namespace sl {
 // A zip, or a folder whose only entry (below lone wrapper folders) is a zip, is unpacked first.
 // A full disk is the machine's failure: `error` says so and `platformFailure` is set (NOT
 // GRADED, never a score). `stages`: the assignment's due stages, the only ones a near-miss note
-// suggests. Notes and the error name the hand-in by its own name, never by the instructor's
-// paths (`path`, `workDir`).
+// suggests; `listed`: the files it grades (a top-level file's note names only those). Notes and the
+// error name the hand-in by its own name, never by the instructor's paths (`path`, `workDir`).
 StudentWork intakeSubmission(const std::string& path, const std::string& workDir,
-                             const std::vector<std::string>& stages = {});
+                             const std::vector<std::string>& stages = {},
+                             const std::set<std::string>& listed = {});
 
 // The student's name for an entry of a class folder: its base name, without ".zip".
 std::string submissionName(const std::string& path);

@@ -20,6 +20,7 @@ LateRecord lateFor(const LatePolicy& p, long long handedIn, const std::string& s
     if (minutes <= p.graceMinutes) return r;  // on time, or within the grace
     r.minutes = minutes;
     r.days = int(std::ceil(minutes / 1440.0));
+    r.capped = p.penaltyPerDayPct * r.days > p.capPct;
     const double pct = std::min(p.capPct, p.penaltyPerDayPct * r.days);
     r.penalty = std::min(std::max(score, 0.0), maxPoints * pct / 100.0);
     return r;
@@ -55,6 +56,13 @@ std::map<std::string, long long> loadTimes(const std::string& path) {
             csvFail(path, r.line, "hand-in '" + shownValue(r.fields[0]) + "' is listed twice");
     }
     return out;
+}
+
+bool looksLikeDownload(const LatePolicy& p, const std::vector<long long>& fileTimes) {
+    if (fileTimes.size() < 2) return false;
+    const auto [first, last] = std::minmax_element(fileTimes.begin(), fileTimes.end());
+    const double lateAfter = double(p.deadline) + p.graceMinutes * 60.0;
+    return double(*first) > lateAfter && *last - *first <= kDownloadSpanSeconds;
 }
 
 std::optional<long long> newestFileTime(const std::string& path) {

@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "course/assignment.h"
 #include "course/iso_time.h"
@@ -23,6 +24,12 @@ LateRecord lateFor(const LatePolicy& p, long long handedIn, const std::string& s
 // `--times FILE`: a CSV with the header hand-in,time and one row per hand-in (ISO 8601 with a
 // zone). Throws UsageError naming the file and the line (exit 2).
 std::map<std::string, long long> loadTimes(const std::string& path);
+
+// Hand-ins' file times that look like when the class was downloaded, not when each was handed
+// in: at least two, every one after the deadline and its grace, all within kDownloadSpanSeconds
+// (an LMS's download or an unzip writes every file within moments; students hand in over days).
+constexpr long long kDownloadSpanSeconds = 30 * 60;
+bool looksLikeDownload(const LatePolicy& p, const std::vector<long long>& fileTimes);
 
 // The newest modification time of the hand-in at `path`: a zip's own, a folder's newest regular
 // file (at most 10,000 entries looked at); nullopt when there is none.

@@ -1,6 +1,7 @@
 #include "course/student_grade.h"
 
 #include <algorithm>
+#include <set>
 
 #include "course/intake_adapter.h"
 #include "grade/bounds.h"
@@ -62,7 +63,9 @@ std::vector<std::string> unlistedFileNotes(const Assignment& a, const StudentWor
 
 StudentWork intakeForAssignment(const Assignment& a, const std::string& path,
                                 const std::string& workDir) {
-    StudentWork s = intakeSubmission(path, workDir, dueStageNames(a));
+    std::set<std::string> listed;
+    for (const AssignmentStage* st : a.due()) listed.insert(st->files.begin(), st->files.end());
+    StudentWork s = intakeSubmission(path, workDir, dueStageNames(a), listed);
     std::vector<std::string> more = unlistedFileNotes(a, s);
     s.notes.insert(s.notes.end(), more.begin(), more.end());
     return s;

@@ -198,34 +198,72 @@ std::vector<std::string> respellings(const std::string& path) {
     return out;
 }
 
-// The shipped file a student's `path` nearly names, or "": the same path in another case or
-// spelling, under a copied shaders_core/ or shaders_legacy/ folder, or a file at the top whose
-// name is a stage file's. With `stages` (those being graded), only their files are suggested:
-// a hint towards a stage nobody grades sends the student the wrong way.
-std::string nearMiss(const std::string& path, const std::map<std::string, std::string>& byLower,
-                     const std::set<std::string>& shipped, const std::vector<std::string>& stages) {
+// The shipped files a student's `path` nearly names, or none: the same path in another case or
+// spelling, under a copied shaders_core/ or shaders_legacy/ folder (one file), or for a file at
+// the top, every graded stage's file of that name (lit.frag is several stages' file). With
+// `stages` (those being graded), only their files are suggested, and with `listed` only the
+// files an assignment grades: a hint towards a file nobody grades sends the student the wrong
+// way.
+std::vector<std::string> nearMisses(const std::string& path,
+                                    const std::map<std::string, std::string>& byLower,
+                                    const std::set<std::string>& shipped,
+                                    const std::vector<std::string>& stages,
+                                    const std::set<std::string>& listed) {
     auto graded = [&](const std::string& file) {
         return stages.empty() ||
                std::find(stages.begin(), stages.end(), stageOf(file)) != stages.end();
+    };
+    auto suggested = [&](const std::string& file) {
+        return graded(file) && (listed.empty() || listed.count(file));
     };
     std::string p = path;
     for (const char* tree : {"shaders_core/", "shaders_legacy/"})
         if (lower(p).rfind(tree, 0) == 0) p = p.substr(std::strlen(tree));
     for (const std::string& r : respellings(p)) {
         auto it = byLower.find(lower(r));
-        if (it != byLower.end()) return graded(it->second) ? it->second : "";
+        if (it != byLower.end())
+            return graded(it->second) ? std::vector<std::string>{it->second}
+                                      : std::vector<std::string>{};
     }
-    if (p.find('/') != std::string::npos) return "";
-    // At the top: a shipped file of that name in a graded stage's folder (the first graded).
-    for (const std::string& stage : stages)
-        for (const std::string& r : respellings(p))
-            for (const std::string& s : shipped)
-                if (stageOf(s) == stage && lower(baseName(s)) == lower(r)) return s;
-    if (!stages.empty()) return "";
-    for (const std::string& r : respellings(p))
+    if (p.find('/') != std::string::npos) return {};
+    std::vector<std::string> named;  // in the order of `stages` (the assignment's)
+    for (const std::string& r : respellings(p)) {
         for (const std::string& s : shipped)
-            if (lower(baseName(s)) == lower(r)) return s;
-    return "";
+            if (suggested(s) && lower(baseName(s)) == lower(r)) named.push_back(s);
+        if (!named.empty()) break;
+    }
+    auto rank = [&](const std::string& f) {
+        return std::find(stages.begin(), stages.end(), stageOf(f)) - stages.begin();
+    };
+    std::stable_sort(named.begin(), named.end(),
+                     [&](const std::string& x, const std::string& y) { return rank(x) < rank(y); });
+    return named;
+}
+
+// The note for `file` that was not used and nearly names `meant` (nearMisses): the files it
+// may be that the hand-in lacks ("did you mean `bias/lit.frag`?"), or, for a file at the top
+// when every one of them was handed in, where a stage's file goes. "" when it names nothing.
+std::string nearMissNote(const std::string& file, const std::vector<std::string>& meant,
+                         const std::set<std::string>& present) {
+    constexpr std::size_t kMaxNamed = 3;
+    std::vector<std::string> lacking;
+    for (const std::string& m : meant)
+        if (!present.count(m)) lacking.push_back(m);
+    const bool atTop = file.find('/') == std::string::npos;
+    const std::vector<std::string>& named = lacking.empty() && atTop ? meant : lacking;
+    if (named.empty()) return "";
+    const std::string last = lacking.empty() ? " and " : " or ";
+    std::string list;
+    for (std::size_t i = 0; i < named.size() && i < kMaxNamed; ++i)
+        list += (i == 0                                       ? ""
+                 : i + 1 == std::min(named.size(), kMaxNamed) ? last
+                                                              : ", ") +
+                "`" + named[i] + "`";
+    if (named.size() > kMaxNamed) list += last + "another stage's";
+    const std::string head = "`" + printableName(file) + "` was not used: ";
+    if (!lacking.empty()) return head + "did you mean " + list + "?";
+    return head + "a stage's files go in its folder, and " + list +
+           (named.size() == 1 ? " is" : " are") + " handed in already";
 }
 
 }  // namespace
@@ -282,7 +320,8 @@ const ShippedTrees& shippedTrees() {
 
 Submission takeSubmission(const std::string& folder, const std::string& privateDir,
                           const std::set<std::string>& shipped,
-                          const std::vector<std::string>& stages) {
+                          const std::vector<std::string>& stages,
+                          const std::set<std::string>& listed) {
     Submission s;
     s.source = s.folder = folder;
     s.root = privateDir;
@@ -333,10 +372,9 @@ Submission takeSubmission(const std::string& folder, const std::string& privateD
             replacesAny = true;
             continue;
         }
-        std::string meant = nearMiss(f, byLower, shipped, stages);
-        if (!meant.empty() && !present.count(meant))
-            misses.push_back("`" + printableName(f) + "` was not used: did you mean `" + meant +
-                             "`?");
+        std::string note =
+            nearMissNote(f, nearMisses(f, byLower, shipped, stages, listed), present);
+        if (!note.empty()) misses.push_back(note);
     }
     for (const auto* list : {&misses, &w.skipped})
         for (const std::string& n : *list) s.notes.push_back(n);

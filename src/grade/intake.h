@@ -2,10 +2,10 @@
 // private folder before anything is compiled (GUIDE section 7). A lone wrapper folder (as a zip
 // unpacks: `jdoe_lab4/margin/lit.frag`, a lone copy of `shaders_core/`) is descended into;
 // editor and archive junk is left out; files that nearly match a shipped one (case, `.fs`, at
-// the top, a copied `shaders_core/` path beside other entries) are named in a note and not used. Only regular files with one name are copied (no links, no
-// hard links), within the loader's size limit and a count, each opened once without following
-// links: the snapshot is what gets graded, so a student who edits or swaps files meanwhile
-// changes nothing.
+// the top, a copied `shaders_core/` path beside other entries) are named in a note and not used.
+// Only regular files with one name are copied (no links, no hard links), within the loader's size
+// limit and a count, each opened once without following links: the snapshot is what gets graded, so
+// a student who edits or swaps files meanwhile changes nothing.
 #pragma once
 
 #include <set>
@@ -74,10 +74,13 @@ const ShippedTrees& shippedTrees();
 // Resolves `folder` and copies its files into `privateDir` (an existing, empty folder of ours).
 // `shipped`: the shipped files of every tree (a near miss is judged against them); `stages`: the
 // stages being graded, the only ones a near miss suggests when given ("did you mean
-// `margin/lit.frag`?"). Throws IntakeError when nothing replaces a shipped file.
+// `margin/lit.frag`?"); `listed`, when not empty: the files an assignment grades, the only ones
+// a top-level file's note suggests (mirror/lit.frag is mirror's, but an assignment may grade
+// only mirror/surface.frag). Throws IntakeError when nothing replaces a shipped file.
 Submission takeSubmission(const std::string& folder, const std::string& privateDir,
                           const std::set<std::string>& shipped,
-                          const std::vector<std::string>& stages = {});
+                          const std::vector<std::string>& stages = {},
+                          const std::set<std::string>& listed = {});
 
 // The stage's own files (`<stage>/...`) that came from the student and replace one of
 // `shipped` (one tree's files): none means the stage is MISSING.

@@ -82,9 +82,14 @@ void sumStudent(StudentRecord& r) {
 
 }  // namespace
 
-double StudentRecord::total() const {
-    double t = score - (late ? late->penalty : 0.0);
+double StudentRecord::adjusted() const {
+    double t = 0;
     for (const Adjustment& a : adjustments) t += a.points;
+    return t;
+}
+
+double StudentRecord::total() const {
+    const double t = score - (late ? late->penalty : 0.0) + adjusted();
     return rounded(std::clamp(t, 0.0, std::max(maxScore, 0.0)));
 }
 
@@ -152,7 +157,8 @@ StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
         }
     }
     sumStage(st);
-    // Messages name the student's files as handed in, not by the private snapshot's path, and
+    // Messages and source notes name the student's files as handed in, not by the private
+    // snapshot's path (grades/work/NAME/snapshot/margin/lit.frag:33 is margin/lit.frag:33), and
     // our shipped files by their tree (shaders_core/common/phong.glsl): no grader's folder
     // reaches a record, a page or a report.
     const std::string snapshot = overlay.empty() ? "" : overlay + "/";
@@ -173,7 +179,10 @@ StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
         return text;
     };
     st.message = shown(st.message);
-    for (RowRecord& row : st.rows) row.result.message = shown(row.result.message);
+    for (RowRecord& row : st.rows) {
+        row.result.message = shown(row.result.message);
+        for (std::string& note : row.result.sourceNotes) note = shown(std::move(note));
+    }
     return st;
 }
 
@@ -304,7 +313,8 @@ json recordJson(const StudentRecord& r) {
                                    {"source", r.late->source},
                                    {"minutes", rounded(r.late->minutes)},
                                    {"days", r.late->days},
-                                   {"penalty", rounded(r.late->penalty)}}
+                                   {"penalty", rounded(r.late->penalty)},
+                                   {"capped", r.late->capped}}
                             : json()},
             {"summary",
              {{"checked", c.total},
@@ -344,9 +354,10 @@ StudentRecord recordFromJson(const json& j) {
                                          a.at("reason").get<std::string>()});
         if (j.contains("late") && !j["late"].is_null()) {
             const json& l = j["late"];
-            r.late = LateRecord{l.at("handed_in").get<std::string>(),
-                                l.at("source").get<std::string>(), l.at("minutes").get<double>(),
-                                l.at("days").get<int>(), l.at("penalty").get<double>()};
+            r.late =
+                LateRecord{l.at("handed_in").get<std::string>(), l.at("source").get<std::string>(),
+                           l.at("minutes").get<double>(),        l.at("days").get<int>(),
+                           l.at("penalty").get<double>(),        l.value("capped", false)};
         }
         if (j.contains("roster") && !j["roster"].is_null())
             r.roster = RosterInfo{j["roster"].at("id").get<std::string>(),

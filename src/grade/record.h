@@ -49,6 +49,7 @@ struct LateRecord {
     double minutes = 0;    // after the deadline (0 within the grace)
     int days = 0;          // days or parts of a day charged
     double penalty = 0;    // points lost
+    bool capped = false;   // the policy's cap limited the penalty (days x per day was more)
 };
 
 // A TA's adjustment of one stage (course/adjustments.h): points added (or taken off, < 0) and
@@ -78,8 +79,10 @@ struct StudentRecord {
     std::vector<std::string> flags;
     std::optional<LateRecord> late;  // when the assignment has a late policy
     std::vector<Adjustment> adjustments;
-    // The score with the adjustments and the late penalty, within [0, maxScore].
+    // The score with the adjustments and the late penalty, within [0, maxScore]: the one total
+    // every output shows (pages, grades.csv, the LMS exports, results.json, progress lines).
     double total() const;
+    double adjusted() const;  // the adjustments' points together
 
     Status status() const;  // the worst stage's (PASS when there is none)
     int exitCode() const { return exitCodeOf(status()); }

@@ -4,14 +4,16 @@ lessons and the grading views of each scene) and `shadowlab stages --json` (each
 its own scene and whether it needs a mirror), so adding a stage or a lesson edits no test.
 
 usage: planned_rows.py STAGES_JSON [--expectations PATH] [--tree core|legacy] [--stage ID]
-                       [--no-displaced]
+                       [--no-displaced] [--submission]
 
 The count follows GUIDE section 4 and docs/check.md, written here a second time on purpose (a
 check of grade/check_run.cpp's checkCases, not a copy of its answer): each lesson of a stage and
 tree (the entries of its id whose "trees" cover it) is seen from every view of its scene ("views"
 in the data; a scene without views has one, its own camera); with a seed (`check --all` draws
 one), each lesson in the stage's own scene gains a "displaced" view, unless the stage needs a
-mirror. Prints one number.
+mirror. A submission (`--shaders`) gains one row for each of the stage's "drawn" entries in the
+tree (parameters the seed draws, judged against our shaders at the same values: our own shaders
+get none). Prints one number.
 """
 import argparse
 import json
@@ -21,7 +23,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def planned_rows(stages, book, tree=None, only=None, displaced=True):
+def planned_rows(stages, book, tree=None, only=None, displaced=True, submission=False):
     views = book.get("views", {})
     rows = 0
     for stage in stages:
@@ -37,6 +39,9 @@ def planned_rows(stages, book, tree=None, only=None, displaced=True):
                 rows += len(views.get(scene, [])) or 1
                 if displaced and not stage["needs_mirror"] and scene == stage["scene"]:
                     rows += 1
+            if submission:
+                rows += sum(1 for d in book.get("drawn", [])
+                            if d["stage"] == stage["id"] and t in d.get("trees", [t]))
     return rows
 
 
@@ -48,6 +53,8 @@ def main():
     parser.add_argument("--tree", choices=["core", "legacy"])
     parser.add_argument("--stage")
     parser.add_argument("--no-displaced", action="store_true")
+    parser.add_argument("--submission", action="store_true",
+                        help="count a submission's rows: the drawn ones too")
     args = parser.parse_args()
     with open(args.stages, encoding="utf-8") as f:
         stages = json.load(f)
@@ -56,7 +63,8 @@ def main():
     known = {s["id"] for s in stages}
     if args.stage and args.stage not in known:
         sys.exit(f"planned_rows: no stage '{args.stage}' in {args.stages}")
-    print(planned_rows(stages, book, args.tree, args.stage, not args.no_displaced))
+    print(planned_rows(stages, book, args.tree, args.stage, not args.no_displaced,
+                       args.submission))
     return 0
 
 

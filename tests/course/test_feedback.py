@@ -97,7 +97,9 @@ notes = dim["notes"]
 print("notes:", notes)
 expect(any("`hardware/lit_pcf3x3.frag` is not graded" in n for n in notes),
        "no note for hardware/lit_pcf3x3.frag")
-expect(any("`lit.frag` was not used: did you mean `" in n for n in notes), "no hint for lit.frag")
+# The top-level lit.frag: the due stages' listed files of that name (mirror/lit.frag is mirror's,
+# but this assignment grades only mirror's surface shaders), issue 39 item 5.
+expect("`lit.frag` was not used: did you mean `hardware/lit.frag`?" in notes, "no hint for lit.frag")
 for n in notes:
     m = re.search(r"did you mean `([^/`]+)/", n)
     if m:
@@ -117,8 +119,11 @@ expect(not any(f.startswith("mirror/surface.frag: the same as the published solu
        "dim's changed surface.frag flagged as the solution")
 expect(recs["twin"]["score"] == recs["dim"]["score"], "a flag changed points")
 klass_page = open(os.path.join(out, "class.html"), encoding="utf-8").read()
-expect("Possible copies" in klass_page and "the hand-in of twin" in klass_page,
-       "the class page does not list the copies")
+# One row per pair, ranked by the share of their written due code in common (issue 39 item 8).
+expect(re.search(r'<tr><td><a href="feedback/dim\.html">dim</a> and <a href="feedback/twin\.html">twin</a>'
+                 r'</td><td class="share">100 %</td><td>2 \(\d+ written tokens\)</td><td class="msg">'
+                 r'mirror/surface\.frag, mirror/surface\.vert</td></tr>', klass_page),
+       "the class page does not show dim and twin as one pair sharing 100 %")
 expect("the same as" not in page, "a copy flag on the student's page")
 
 # No instructor path in anything a student sees.

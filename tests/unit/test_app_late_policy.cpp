@@ -34,6 +34,24 @@ TEST(LatePolicy, OneAndAHalfDaysLateLosesTwoDaysPoints) {
     EXPECT_DOUBLE_EQ(lateFor(p, p.deadline + 16 * 60, "", 100, 90).penalty, 10);    // past it
     EXPECT_DOUBLE_EQ(lateFor(p, p.deadline + 96 * hour, "", 100, 90).penalty, 30);  // the cap
     EXPECT_DOUBLE_EQ(lateFor(p, p.deadline + 36 * hour, "", 100, 5).penalty, 5);    // not below 0
+    EXPECT_FALSE(late.capped);                                             // 20 % is under the cap
+    EXPECT_TRUE(lateFor(p, p.deadline + 96 * hour, "", 100, 90).capped);   // 40 % is over it
+    EXPECT_FALSE(lateFor(p, p.deadline + 72 * hour, "", 100, 90).capped);  // 30 %: at it
+}
+
+// File times that look like a download (issue 39): all after the deadline within minutes.
+TEST(LatePolicy, FileTimesOfADownloadAreTold) {
+    LatePolicy p;
+    p.deadline = *parseIsoTime("2026-12-04T23:59:00+01:00");
+    p.graceMinutes = 15;
+    const long long day = 86400, t = p.deadline + 3 * day;
+    EXPECT_TRUE(looksLikeDownload(p, {t, t + 5, t + 40, t + 600}));
+    EXPECT_TRUE(looksLikeDownload(p, {t, t + kDownloadSpanSeconds}));
+    EXPECT_FALSE(looksLikeDownload(p, {t, t + kDownloadSpanSeconds + 1}));    // over a longer span
+    EXPECT_FALSE(looksLikeDownload(p, {t, t + 5, p.deadline - 3600}));        // one on time
+    EXPECT_FALSE(looksLikeDownload(p, {p.deadline + 60, p.deadline + 120}));  // within the grace
+    EXPECT_FALSE(looksLikeDownload(p, {t}));  // one hand-in alone says nothing
+    EXPECT_FALSE(looksLikeDownload(p, {}));
 }
 
 // Only real times (issue 38): a day the month has, a zone within +-14:00, a bounded fraction.

@@ -222,3 +222,41 @@ TEST(Intake, PrivateDirIsRemovedWithItsContents) {
     }
     EXPECT_FALSE(fs::exists(path));
 }
+
+// A stray top-level lit.frag is named whatever else was handed in (issue 39): the graded stages
+// whose file it may be and that the hand-in lacks, in the assignment's order; when every one
+// was handed in, where a stage's file goes.
+TEST(Intake, TopLevelFileNamesTheStagesItMayBelongTo) {
+    Folder one;
+    one.put("margin/lit.frag");
+    one.put("lit.frag");
+    EXPECT_TRUE(hasNote(take(one, {"margin", "depth"}),
+                        "`lit.frag` was not used: did you mean `depth/lit.frag`?"));
+    Folder two;
+    two.put("rgb/shadow.frag");
+    two.put("lit.frag");
+    EXPECT_TRUE(hasNote(take(two, {"rgb", "depth", "margin"}),
+                        "`lit.frag` was not used: did you mean `depth/lit.frag` or "
+                        "`margin/lit.frag`?"));
+    Folder all;
+    all.put("margin/lit.frag");
+    all.put("depth/lit.frag");
+    all.put("lit.frag");
+    EXPECT_TRUE(hasNote(take(all, {"margin", "depth"}),
+                        "`lit.frag` was not used: a stage's files go in its folder, and "
+                        "`margin/lit.frag` and `depth/lit.frag` are handed in already"));
+    Folder listed;  // an assignment grading depth/lit.vert alone: depth/lit.frag is no hint
+    listed.put("margin/lit.frag");
+    listed.put("lit.frag");
+    PrivateDir snapshot("sl-intake-listed");
+    Submission s = takeSubmission(listed.path(), snapshot.path(), kShipped, {"margin", "depth"},
+                                  {"margin/lit.frag", "depth/lit.vert"});
+    EXPECT_TRUE(hasNote(s,
+                        "`lit.frag` was not used: a stage's files go in its folder, and "
+                        "`margin/lit.frag` is handed in already"));
+    Folder deeper;  // a misspelt path of a file handed in: nothing to say
+    deeper.put("margin/lit.frag");
+    deeper.put("Margin/lit.frag");
+    for (const std::string& n : take(deeper, {"margin"}).notes)
+        EXPECT_EQ(n.find("Margin/lit.frag"), std::string::npos) << n;
+}

@@ -1,0 +1,40 @@
+// Copy flags by pair (issue 39): which two hand-ins have the same due code, ranked by how much of
+// what they wrote they share. Short natural code (one line of a shadow test) is written the same
+// by honest students; a copy shares nearly everything. So a pair is measured by the share of its
+// written due code in common, and only a pair at or above kCopyShareFlagged is flagged
+// (docs/assignment.md "Copy flags" gives the measurement behind the threshold).
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "course/copy_flags.h"
+
+namespace sl {
+
+// The tokens of `tokens` (normalizedTokens) a student wrote beyond `starter`'s: those left once
+// each of the starter's tokens has been matched once (a multiset difference).
+std::size_t writtenTokens(const std::vector<std::string>& tokens,
+                          const std::vector<std::string>& starter);
+
+// Two hand-ins with due files the same token for token (never the starter, never empty).
+struct CopyPair {
+    std::string a, b;                // a < b
+    std::vector<std::string> files;  // the due files they have the same
+    std::size_t commonTokens = 0;    // the written tokens of those files
+    // commonTokens over the written tokens of the due files of the one who wrote more: 1 for a
+    // whole copy, small for one short file in common.
+    double share = 0;
+};
+
+// A pair whose share is at least this is flagged; below it, it is counted, not named.
+constexpr double kCopyShareFlagged = 0.6;
+
+// Every pair of `handIns` with a due file in common, the largest share first (then by names).
+// `starters`: file -> what everyone was given (written tokens are counted beyond it).
+std::vector<CopyPair> copyPairs(const std::vector<HandInFiles>& handIns,
+                                const std::map<std::string, std::string>& starters);
+
+}  // namespace sl
