@@ -4,6 +4,7 @@
 // a dim ambient pass, then the lit pass whose shadowed fragments the alpha test discards.
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl/state.h"
@@ -15,6 +16,9 @@ namespace sl {
 
 namespace {
 
+// OpenGL ES (the browser edition) has no fixed function: there the stage is listed, with its
+// declarations, but never drawn (gl/gl_es3.h; docs/web.md).
+#ifndef SHADOWLAB_GL_ES
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
@@ -213,6 +217,7 @@ class FixedStage : public Stage {
     float factor_ = -1, units_ = -1;
     std::string note_;
 };
+#endif
 
 }  // namespace
 
@@ -230,7 +235,14 @@ StageInfo fixedStage() {
     s.legacyOnly = true;
     s.unshadowedStage = "";  // its Gouraud lighting is its own: judged against its all-lit render
     s.views = {ViewMode::Final};
+#ifndef SHADOWLAB_GL_ES
     s.create = [] { return std::make_unique<FixedStage>(); };
+#else
+    s.create = []() -> std::unique_ptr<Stage> {
+        throw std::runtime_error("stage 'fixed' needs desktop OpenGL's fixed function, which "
+                                 "WebGL lacks: run the native program (shadowlab window --stage fixed)");
+    };
+#endif
     return s;
 }
 
