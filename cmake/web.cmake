@@ -23,28 +23,34 @@ find_program(SYSTEM_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH REQUIRED)
 # contexts of the desktop (the page reads its pictures from the canvas).
 file(GLOB SL_WEB_SOURCES CONFIGURE_DEPENDS
      src/io/*.cpp src/math/*.cpp src/scene/*.cpp src/gl/*.cpp src/render/*.cpp src/stages/*.cpp
-     src/platform/webgl_context.cpp src/web/*.cpp)
+     src/platform/webgl_context.cpp src/window/lessons.cpp src/web/*.cpp)
 list(FILTER SL_WEB_SOURCES EXCLUDE REGEX
      "/(io/png|io/box|gl/glsl_standard|gl/loader|gl/machine)\\.cpp$")
 list(APPEND SL_WEB_SOURCES src/gl/glsl_standard_translated.cpp)
 
 set(SL_WEB_DATA ${CMAKE_BINARY_DIR}/data)
-file(GLOB_RECURSE SL_WEB_SHADERS CONFIGURE_DEPENDS shaders_core/*)
+file(GLOB_RECURSE SL_WEB_SHADERS CONFIGURE_DEPENDS shaders_core/* scenes/* slides_examples/*)
 add_custom_command(
   OUTPUT ${SL_WEB_DATA}/shaders_core.stamp
   COMMAND ${CMAKE_COMMAND} -E rm -rf ${SL_WEB_DATA}
   COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/scripts/web_shaders.py
           ${CMAKE_SOURCE_DIR}/shaders_core ${SL_WEB_DATA}/shaders_core
   COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/scenes ${SL_WEB_DATA}/scenes
+  COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/slides_examples
+          ${SL_WEB_DATA}/slides_examples
+  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/src/stages/expectations.json
+          ${SL_WEB_DATA}/src/stages/expectations.json
   COMMAND ${CMAKE_COMMAND} -E touch ${SL_WEB_DATA}/shaders_core.stamp
   DEPENDS ${SL_WEB_SHADERS} ${CMAKE_SOURCE_DIR}/scripts/web_shaders.py
-  COMMENT "Translating shaders_core to ESSL 3.00 (glslang -> SPIR-V -> spirv-cross)"
+          ${CMAKE_SOURCE_DIR}/src/stages/expectations.json
+  COMMENT "The page's data: shaders_core in ESSL 3.00 (glslang -> SPIR-V -> spirv-cross), scenes, lessons"
   VERBATIM)
 add_custom_target(web_data DEPENDS ${SL_WEB_DATA}/shaders_core.stamp)
 
 add_executable(shadowlab_web ${SL_WEB_SOURCES})
 add_dependencies(shadowlab_web web_data)
-target_include_directories(shadowlab_web PRIVATE src ${SL_WEB_INCLUDE})
+target_include_directories(shadowlab_web PRIVATE src)
+target_include_directories(shadowlab_web SYSTEM PRIVATE ${SL_WEB_INCLUDE})  # Debian's headers
 target_compile_definitions(shadowlab_web PRIVATE GLM_FORCE_CTOR_INIT)
 set_property(SOURCE src/io/data_paths.cpp APPEND PROPERTY  # the embedded data (web_main.cpp)
              COMPILE_DEFINITIONS SHADOWLAB_SOURCE_DIR="/data")

@@ -6,6 +6,9 @@
 
 #include <GLES3/gl3.h>
 
+#include <stdexcept>
+#include <string>
+
 #define SHADOWLAB_GL_ES 1
 
 typedef double GLdouble;
@@ -24,7 +27,7 @@ inline void glDebugMessageCallback(GLDEBUGPROC, const void*) {}
 // Desktop-only names the passes use, with their desktop values (never sent to WebGL as is).
 #define GL_CLAMP_TO_BORDER 0x812D
 #define GL_TEXTURE_BORDER_COLOR 0x1004
-#define GL_DOUBLE 0x140A  // a uniform type ES never reports
+#define GL_DOUBLE 0x140A                              // a uniform type ES never reports
 #define GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER 0x8CDB  // framebuffer statuses ES never returns
 #define GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER 0x8CDC
 #define GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS 0x8DA8
@@ -51,8 +54,15 @@ inline void texImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GL
 inline void drawBuffer(GLenum buffer) {
     glDrawBuffers(1, &buffer);
 }
-// WebGL refuses near > far (INVALID_OPERATION): the error is left to the GL checks.
+// WebGL refuses near > far (INVALID_OPERATION), so the flipped light projection of the bias
+// lesson cannot be built this way: said in words, not left as a GL error code.
 inline void depthRange(GLdouble nearValue, GLdouble farValue) {
+    if (nearValue > farValue)
+        throw std::runtime_error("glDepthRange(" + std::to_string(nearValue).substr(0, 3) + ", " +
+                                 std::to_string(farValue).substr(0, 3) +
+                                 "): WebGL refuses a near value above the far one "
+                                 "(INVALID_OPERATION); this setting runs in the native program "
+                                 "(docs/web.md)");
     glDepthRangef(static_cast<GLfloat>(nearValue), static_cast<GLfloat>(farValue));
 }
 inline void clearDepth(GLdouble value) {

@@ -17,7 +17,8 @@ void requireTranslated(const GlslSource& source) {
     if (source.text.compare(0, expected.size(), expected) != 0)
         throw ShaderError((source.files.empty() ? std::string("shader") : source.files[0]) +
                           ":1: error: the browser runs the build's ESSL 3.00 translation "
-                          "(scripts/web_shaders.py), which starts with '" + expected + "'");
+                          "(scripts/web_shaders.py), which starts with '" +
+                          expected + "'");
 }
 
 }  // namespace

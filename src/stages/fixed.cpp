@@ -4,8 +4,8 @@
 // a dim ambient pass, then the lit pass whose shadowed fragments the alpha test discards.
 #include <algorithm>
 #include <chrono>
-#include <stdexcept>
 #include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
 
 #include "gl/state.h"
 #include "render/scene_pass.h"
@@ -239,8 +239,9 @@ StageInfo fixedStage() {
     s.create = [] { return std::make_unique<FixedStage>(); };
 #else
     s.create = []() -> std::unique_ptr<Stage> {
-        throw std::runtime_error("stage 'fixed' needs desktop OpenGL's fixed function, which "
-                                 "WebGL lacks: run the native program (shadowlab window --stage fixed)");
+        throw std::runtime_error(
+            "stage 'fixed' needs desktop OpenGL's fixed function, which "
+            "WebGL lacks: run the native program (shadowlab window --stage fixed)");
     };
 #endif
     return s;

@@ -3,6 +3,8 @@
 // window. Strings returned to the page stay valid until the next call.
 #include <emscripten/emscripten.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -10,12 +12,14 @@
 #include "math/orbit.h"
 #include "platform/webgl_context.h"
 #include "render/request.h"
+#include "window/window_args.h"
 
 namespace {
 
 struct Page {
     sl::RenderRequest request;
     std::unique_ptr<sl::Renderer> renderer;
+    int lesson = -1;   // the current stage's lesson on screen (-1: the defaults)
     std::string text;  // the last string handed to the page
 };
 
@@ -35,7 +39,35 @@ std::string drawFrame() {
     if (!p.renderer) return "no stage selected";
     p.renderer->render(0, p.request.width, p.request.height);
     GLenum error = glGetError();
-    return error == GL_NO_ERROR ? "" : "WebGL error 0x" + std::to_string(error) + " in the frame";
+    if (error == GL_NO_ERROR) return "";
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04X", error);
+    return std::string("WebGL error ") + code + " in the frame";
+}
+
+// The stage's lessons the core tree runs, in the window's order (window/lessons.cpp: the
+// entries of expectations.json, then the lecture figures of slides_examples/).
+std::vector<const sl::WindowLesson*> stageLessons(const std::string& stage) {
+    static const std::vector<sl::WindowLesson> all = sl::windowLessons();
+    std::vector<const sl::WindowLesson*> found;
+    for (const auto& l : all)
+        if (l.stage == stage &&
+            (l.trees.empty() || std::find(l.trees.begin(), l.trees.end(), "core") != l.trees.end()))
+            found.push_back(&l);
+    return found;
+}
+
+// Rebuilds the renderer for `request` and draws; "" or the one-line reason.
+std::string show(const sl::RenderRequest& request) {
+    Page& p = page();
+    try {
+        sl::validateRequest(request);
+        p.renderer = sl::makeRenderer(request);
+        p.request = request;
+        return drawFrame();
+    } catch (const std::exception& e) {
+        return e.what();
+    }
 }
 
 }  // namespace
@@ -66,16 +98,67 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_select(const char* id) {
     if (info && info->legacyOnly)
         return handOver("stage '" + info->id +
                         "' needs desktop OpenGL's fixed function or GLSL 1.20, which WebGL lacks: "
-                        "run the native program (shadowlab window --stage " + info->id + ")");
+                        "run the native program (shadowlab window --stage " +
+                        info->id + ")");
+    sl::RenderRequest request;  // the stage's defaults: scene, camera, parameters, view
+    request.width = p.request.width;
+    request.height = p.request.height;
+    request.stage = id;
+    p.lesson = -1;
+    return handOver(show(request));
+}
+
+// The window's 'n': the stage's next lesson with its settings (scene, values, view) applied,
+// after the last one the defaults again.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_next_lesson() {
+    Page& p = page();
+    auto lessons = stageLessons(p.request.stage);
+    if (lessons.empty()) return handOver("");
+    p.lesson = p.lesson + 1 < static_cast<int>(lessons.size()) ? p.lesson + 1 : -1;
+    sl::RenderRequest request;
+    request.width = p.request.width;
+    request.height = p.request.height;
+    request.stage = p.request.stage;
+    if (p.lesson >= 0) {
+        const sl::WindowLesson& l = *lessons[static_cast<std::size_t>(p.lesson)];
+        if (!l.scene.empty()) {
+            request.scene = l.scene;
+            request.sceneGiven = true;
+        }
+        request.sets = l.sets;
+        request.view = l.view;
+    }
+    int lesson = p.lesson;
+    std::string message = show(request);
+    p.lesson = lesson;
+    return handOver(message);
+}
+
+// "lesson K/N: NAME\nLOOK" of the lesson on screen, or how many the stage has.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_lesson_text() {
+    Page& p = page();
+    auto lessons = stageLessons(p.request.stage);
+    if (p.lesson < 0)
+        return handOver(std::to_string(lessons.size()) + " lesson(s): n steps through them");
+    const sl::WindowLesson& l = *lessons[static_cast<std::size_t>(p.lesson)];
+    return handOver("lesson " + std::to_string(p.lesson + 1) + "/" +
+                    std::to_string(lessons.size()) + ": " + l.name + "\n" + l.look);
+}
+
+// The window's 'v': the stage's next view (final, shadow map, light, ...), as the stage lists;
+// "VIEW\tERROR" (ERROR empty when the frame drew).
+EMSCRIPTEN_KEEPALIVE const char* sl_web_next_view() {
+    Page& p = page();
+    if (!p.renderer) return handOver("no stage selected");
+    const auto& views = p.renderer->stage().views;
+    if (views.empty()) return handOver(std::string(sl::viewName(p.renderer->view)) + "\t");
+    auto at = std::find(views.begin(), views.end(), p.renderer->view);
+    p.renderer->view = at == views.end() || at + 1 == views.end() ? views.front() : *(at + 1);
+    p.request.view = p.renderer->view;
     try {
-        sl::RenderRequest request = p.request;
-        request.stage = id;
-        sl::validateRequest(request);
-        p.renderer = sl::makeRenderer(request);
-        p.request = request;
-        return handOver(drawFrame());
+        return handOver(std::string(sl::viewName(p.renderer->view)) + "\t" + drawFrame());
     } catch (const std::exception& e) {
-        return handOver(e.what());
+        return handOver(std::string(sl::viewName(p.renderer->view)) + "\t" + e.what());
     }
 }
 

@@ -4,7 +4,8 @@ WebGL 2) driven by Selenium opens build-web/site/index.html from the disk, steps
 core stage with the page's keys, and compares each picture with the native `shadowlab render`
 of the same stage and camera. A pixel differs when a channel differs by more than
 --channel-tolerance; a stage passes when at most --pixel-tolerance of its pixels differ.
-Saves the browser's picture of each stage (web_<id>.png) and prints one line per stage.
+Saves the browser's picture of each stage (web_<id>.png, docs/images/web/ holds a copy) and the
+whole page at 1920x1080; prints one line per stage.
 Exit 77 (ctest: skipped) with the reason when emscripten's build, Chromium or Selenium is absent,
 unless SHADOWLAB_WEB_REQUIRED=1 (CI's web step, which built the site first)."""
 import argparse
@@ -39,7 +40,7 @@ def browser():
     from selenium.webdriver.chrome.service import Service
     options = webdriver.ChromeOptions()
     for flag in ("--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-                 "--no-sandbox", "--window-size=1920,1080", "--allow-file-access-from-files"):
+                 "--no-sandbox", "--window-size=1920,1080"):
         options.add_argument(flag)
     return webdriver.Chrome(service=Service(driver_path), options=options)
 
@@ -62,6 +63,36 @@ img.onload = () => { const b = pixels(img); let differ = 0, worst = 0;
 img.onerror = () => done({error: 'the native PNG did not load'});
 img.src = nativeUrl;
 """
+
+
+def lessons_and_views(driver, body, stage):
+    """Steps through the stage's lessons ('n') and views ('v'): each must draw without a message,
+    or be refused in words naming what WebGL lacks. Returns the failures; prints what it reached."""
+    failures = []
+    count = int(driver.execute_script("return document.getElementById('lesson').textContent")
+                .split()[0])
+    for k in range(1, count + 1):
+        body.send_keys("n")
+        text, message = driver.execute_script(
+            "return [document.getElementById('lesson').textContent, shadowlab.lastMessage]")
+        name = text.splitlines()[0] if text else ""
+        if not name.startswith(f"lesson {k}/{count}:"):
+            failures.append(f"{stage} lesson {k}/{count}: the page shows {name!r}")
+        elif "WebGL refuses" in message:  # a difference docs/web.md lists, said in words
+            print(f"web: {stage:9} {name}: refused as docs/web.md says: {message}")
+        elif message:
+            failures.append(f"{stage} {name}: {message!r}")
+    views = []
+    for _ in range(6):
+        body.send_keys("v")
+        view, message = driver.execute_script("return [shadowlab.view, shadowlab.lastMessage]")
+        if message:
+            failures.append(f"{stage} view {view}: {message!r}")
+        if view in views:
+            break
+        views.append(view)
+    print(f"web: {stage:9} {count} lesson(s) and views {', '.join(views)} drawn")
+    return failures
 
 
 def main():
@@ -114,6 +145,8 @@ def main():
             if message:
                 failures.append(f"{stage['id']}: the page says {message!r}")
                 continue
+            failures += lessons_and_views(driver, body, stage["id"])
+            body.send_keys("x")  # the defaults again, for the comparison
             native = out / f"native_{stage['id']}.png"
             subprocess.run([args.shadowlab, "render", "--stage", stage["id"], "--out", str(native)],
                            check=True, capture_output=True)
@@ -130,6 +163,8 @@ def main():
                   f"{args.channel_tolerance}/255 (worst {r['worst']}): {verdict}")
             if verdict != "ok":
                 failures.append(f"{stage['id']}: {share:.3%} of pixels differ")
+        body.send_keys("2")  # the whole page as a student sees it at 1920x1080 (the README's)
+        driver.save_screenshot(str(out / "page_1920x1080.png"))
     finally:
         driver.quit()
     for f in failures:
