@@ -13,7 +13,9 @@ foreach(header_dir glm nlohmann)
   file(CREATE_LINK /usr/include/${header_dir} ${SL_WEB_INCLUDE}/${header_dir} SYMBOLIC)
 endforeach()
 file(CREATE_LINK /usr/include/stb/stb_easy_font.h ${SL_WEB_INCLUDE}/stb_easy_font.h SYMBOLIC)
-file(WRITE ${SL_WEB_INCLUDE}/shadowlab_glad.h "#pragma once\n#include \"gl/gl_es3.h\"\n")
+# Written only when it differs: a new date on it at every configure rebuilt every object.
+file(CONFIGURE OUTPUT ${SL_WEB_INCLUDE}/shadowlab_glad.h
+     CONTENT "#pragma once\n#include \"gl/gl_es3.h\"\n")
 
 find_program(SL_GLSLANG_VALIDATOR glslangValidator REQUIRED)
 find_program(SL_SPIRV_CROSS spirv-cross REQUIRED)
