@@ -180,6 +180,25 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_orbit(float yaw, float pitch) {
     return sl_web_frame();
 }
 
+// The stage's declared parameters with their values: "name\tvalue\trange\thelp" a line.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_params() {
+    std::string text;
+    if (page().renderer) {
+        sl::ParamSet& values = page().renderer->params();
+        for (const auto& spec : values.specs())
+            text += spec.name + "\t" + values.text(spec.name) + "\t" + spec.rangeText() + "\t" +
+                    spec.help + "\n";
+    }
+    return handOver(text);
+}
+
+// Sets a declared parameter from text (as --set does) and redraws; "" or the one-line reason.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_set(const char* name, const char* value) {
+    if (!page().renderer) return handOver("no stage selected");
+    std::string error = page().renderer->params().set(name, value);
+    return error.empty() ? sl_web_frame() : handOver(error);
+}
+
 // What the stage did in the last frame (the HUD's notes), one a line.
 EMSCRIPTEN_KEEPALIVE const char* sl_web_notes() {
     std::string text;

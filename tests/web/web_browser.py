@@ -95,6 +95,26 @@ def lessons_and_views(driver, body, stage):
     return failures
 
 
+def parameters(driver, stage):
+    """The page's parameter table must list the stage's declared parameters (the names and
+    defaults `stages --json` prints), and a value outside the declaration must be refused in one
+    line naming the parameter. Returns the failures."""
+    rows = driver.execute_script(
+        "return [...document.querySelectorAll('#params input')].map(i => [i.name, i.value])")
+    declared = [p["name"] for p in stage["parameters"]]
+    if [name for name, _ in rows] != declared:
+        return [f"{stage['id']}: the page's parameters {rows} are not the declared {declared}"]
+    if not rows:
+        return []
+    name = rows[0][0]
+    message = driver.execute_script(
+        "const i = document.querySelector('#params input'); i.value = 'not-a-value';"
+        "i.dispatchEvent(new Event('change')); return shadowlab.lastMessage")
+    if name not in message or "\n" in message.strip():
+        return [f"{stage['id']}: {name}=not-a-value gave {message!r}"]
+    return []
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--site", required=True)
@@ -146,6 +166,7 @@ def main():
                 failures.append(f"{stage['id']}: the page says {message!r}")
                 continue
             failures += lessons_and_views(driver, body, stage["id"])
+            failures += parameters(driver, stage)
             body.send_keys("x")  # the defaults again, for the comparison
             native = out / f"native_{stage['id']}.png"
             subprocess.run([args.shadowlab, "render", "--stage", stage["id"], "--out", str(native)],
