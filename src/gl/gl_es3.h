@@ -34,8 +34,8 @@ inline void glDebugMessageCallback(GLDEBUGPROC, const void*) {}
 
 namespace sl::es3 {
 
-// ES 3.0 has no border clamp: the edge texel is read instead. The shadow map's edge is the far
-// value wherever the light frustum holds the whole scene, which is how the stages fit it.
+// ES 3.0 has no border clamp: the edge texel is read instead. At the stages' defaults no pixel
+// changes for it (tests/web/web_browser.py compares with the native render); docs/web.md.
 inline void texParameteri(GLenum target, GLenum name, GLint value) {
     glTexParameteri(target, name, value == GL_CLAMP_TO_BORDER ? GL_CLAMP_TO_EDGE : value);
 }
