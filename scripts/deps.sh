@@ -4,14 +4,18 @@
 # package names below; any other system gets one message naming what to install.
 #   bash scripts/deps.sh          what building and running need (scripts/run.sh)
 #   bash scripts/deps.sh --test   also the fuzzer, sanitizer and valgrind packages (scripts/test.sh)
+#   bash scripts/deps.sh --web    also the browser edition's (scripts/web.sh, ctest -L web): only
+#                                 on Debian 12, the one system CI builds it on (emscripten is
+#                                 109 MB to download, 800 MB installed: not in every chroot)
 #   bash scripts/deps.sh --print  print the package names for this system and install nothing
 set -euo pipefail
 mode=run
 for a in "$@"; do
   case $a in
     --test) mode=test ;;
+    --web) web_wanted=1 ;;
     --print) print=1 ;;
-    *) echo "deps: unknown option '$a' (--test, --print)" >&2; exit 2 ;;
+    *) echo "deps: unknown option '$a' (--test, --web, --print)" >&2; exit 2 ;;
   esac
 done
 os_release=${SHADOWLAB_OS_RELEASE:-/etc/os-release}  # a test can point it elsewhere
@@ -62,6 +66,15 @@ case "$ID:${VERSION_ID:-}" in
 esac
 packages=("${common[@]}" "${run[@]}" "${course[@]}")
 [ "$mode" = test ] && packages+=("${test[@]}")
+# The browser edition (docs/web.md): Debian 12's emscripten 3.1.6 with its prebuilt system
+# libraries, the shader translation (glslang-tools above, spirv-cross) and the browser tests.
+if [ -n "${web_wanted:-}" ]; then
+  if [ "$system" = "Debian 12" ]; then
+    packages+=(emscripten spirv-cross chromium chromium-driver python3-selenium)
+  else
+    echo "deps: --web: the browser edition is built and tested on Debian 12 only; skipped on $system" >&2
+  fi
+fi
 if [ -n "${print:-}" ]; then
   echo "${packages[*]}"
   exit 0

@@ -83,7 +83,14 @@ case "${SHADOWLAB_TEST_SCOPE:-all}" in
     step ctest 840 ctest --test-dir build --output-on-failure -j2
     step sanitizers 660 bash scripts/sanitizers.sh
     step fuzz 180 bash scripts/fuzz.sh
-    step valgrind 90 bash scripts/valgrind.sh ;;
+    step valgrind 90 bash scripts/valgrind.sh
+    # The browser edition (docs/web.md), on Debian 12 (the CI host) only: its packages, the
+    # emscripten build (Debian's emscripten ships its system libraries prebuilt) and the browser
+    # test. Budget from 76 s of CPU for the cold build, 50 s of packages, 30 s of test (docs/ci.md).
+    if [ "${ID:-}:${VERSION_ID:-}" = debian:12 ]; then
+      step web 360 bash -c 'bash scripts/deps.sh --web && bash scripts/web.sh &&
+        SHADOWLAB_WEB_REQUIRED=1 ctest --test-dir build --output-on-failure -L "^web$"'
+    fi ;;
 esac
 if [ -n "$chroots" ]; then
   wait $prefetch

@@ -1,6 +1,7 @@
 #include "render/gpu_scene.h"
 
 #include <cstddef>
+#include <stdexcept>
 
 #include "gl/shader_library.h"
 
@@ -28,6 +29,9 @@ GpuScene::GpuScene(const Scene& scene, const Camera& camera, int imageHeight)
 }
 
 void GpuScene::bindFixedFunction() {
+#ifdef SHADOWLAB_GL_ES  // no client-state arrays in ES 3.0: the fixed stage is native only
+    throw std::runtime_error("the fixed-function vertex arrays need desktop OpenGL");
+#else
     if (!fixedVao_) {
         fixedVao_ = VertexArray::create();
         glBindVertexArray(fixedVao_.id());
@@ -41,6 +45,7 @@ void GpuScene::bindFixedFunction() {
                         reinterpret_cast<void*>(offsetof(Vertex, normal)));
     }
     glBindVertexArray(fixedVao_.id());
+#endif
 }
 
 void GpuScene::draw(const MeshPart& part) const {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
 
 #include "gl/state.h"
 #include "render/scene_pass.h"
@@ -15,6 +16,9 @@ namespace sl {
 
 namespace {
 
+// OpenGL ES (the browser edition) has no fixed function: there the stage is listed, with its
+// declarations, but never drawn (gl/gl_es3.h; docs/web.md).
+#ifndef SHADOWLAB_GL_ES
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
@@ -213,6 +217,7 @@ class FixedStage : public Stage {
     float factor_ = -1, units_ = -1;
     std::string note_;
 };
+#endif
 
 }  // namespace
 
@@ -230,7 +235,15 @@ StageDefinition fixedStage() {
     s.legacyOnly = true;
     s.unshadowedIsOwn = true;  // its Gouraud lighting is its own: judged against its all-lit render
     s.views = {ViewMode::Final};
+#ifndef SHADOWLAB_GL_ES
     s.create = [] { return std::make_unique<FixedStage>(); };
+#else
+    s.create = []() -> std::unique_ptr<Stage> {
+        throw std::runtime_error(
+            "stage 'fixed' needs desktop OpenGL's fixed function, which "
+            "WebGL lacks: run the native program (shadowlab window --stage fixed)");
+    };
+#endif
     return s;
 }
 

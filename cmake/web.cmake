@@ -1,0 +1,69 @@
+# The browser edition (GUIDE section 9, docs/web.md): configured with Debian's emscripten
+# (`emcmake cmake`, driven by scripts/web.sh), it compiles the same scene, math, GL layer,
+# renderer and stages as the native program for WebGL 2 into one self-contained .js
+# (-sSINGLE_FILE: opens from file:// too) and our own page, in <build>/site/.
+# Debian's glm and nlohmann-json headers are header-only: reached through links, since
+# -I/usr/include would mix the host's C library into emscripten's.
+set(SL_WEB_INCLUDE ${CMAKE_BINARY_DIR}/web_include)
+file(MAKE_DIRECTORY ${SL_WEB_INCLUDE})
+foreach(header_dir glm nlohmann)
+  if(NOT EXISTS /usr/include/${header_dir})
+    message(FATAL_ERROR "/usr/include/${header_dir} missing: install libglm-dev nlohmann-json3-dev")
+  endif()
+  file(CREATE_LINK /usr/include/${header_dir} ${SL_WEB_INCLUDE}/${header_dir} SYMBOLIC)
+endforeach()
+file(CREATE_LINK /usr/include/stb/stb_easy_font.h ${SL_WEB_INCLUDE}/stb_easy_font.h SYMBOLIC)
+# Written only when it differs: a new date on it at every configure rebuilt every object.
+file(CONFIGURE OUTPUT ${SL_WEB_INCLUDE}/shadowlab_glad.h
+     CONTENT "#pragma once\n#include \"gl/gl_es3.h\"\n")
+
+find_program(SL_GLSLANG_VALIDATOR glslangValidator REQUIRED)
+find_program(SL_SPIRV_CROSS spirv-cross REQUIRED)
+find_program(SYSTEM_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH REQUIRED)
+
+# What runs in the browser: no PNG writer, sandbox, reference tracer, glslang or platform
+# contexts of the desktop (the page reads its pictures from the canvas).
+file(GLOB SL_WEB_SOURCES CONFIGURE_DEPENDS
+     src/io/*.cpp src/math/*.cpp src/scene/*.cpp src/gl/*.cpp src/render/*.cpp src/stages/*.cpp
+     src/platform/webgl_context.cpp src/window/lessons.cpp src/web/*.cpp)
+list(FILTER SL_WEB_SOURCES EXCLUDE REGEX
+     "/(io/png|io/box|gl/glsl_standard|gl/loader|gl/machine)\\.cpp$")
+list(APPEND SL_WEB_SOURCES src/gl/glsl_standard_translated.cpp)
+
+set(SL_WEB_DATA ${CMAKE_BINARY_DIR}/data)
+file(GLOB_RECURSE SL_WEB_SHADERS CONFIGURE_DEPENDS shaders_core/* scenes/* slides_examples/*)
+add_custom_command(
+  OUTPUT ${SL_WEB_DATA}/shaders_core.stamp
+  COMMAND ${CMAKE_COMMAND} -E rm -rf ${SL_WEB_DATA}
+  COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/scripts/web_shaders.py
+          ${CMAKE_SOURCE_DIR}/shaders_core ${SL_WEB_DATA}/shaders_core
+  COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/scenes ${SL_WEB_DATA}/scenes
+  COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/slides_examples
+          ${SL_WEB_DATA}/slides_examples
+  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/src/stages/expectations.json
+          ${SL_WEB_DATA}/src/stages/expectations.json
+  COMMAND ${CMAKE_COMMAND} -E touch ${SL_WEB_DATA}/shaders_core.stamp
+  DEPENDS ${SL_WEB_SHADERS} ${CMAKE_SOURCE_DIR}/scripts/web_shaders.py
+          ${CMAKE_SOURCE_DIR}/src/stages/expectations.json
+  COMMENT "The page's data: shaders_core in ESSL 3.00 (glslang -> SPIR-V -> spirv-cross), scenes, lessons"
+  VERBATIM)
+add_custom_target(web_data DEPENDS ${SL_WEB_DATA}/shaders_core.stamp)
+
+add_executable(shadowlab_web ${SL_WEB_SOURCES})
+add_dependencies(shadowlab_web web_data)
+target_include_directories(shadowlab_web PRIVATE src)
+target_include_directories(shadowlab_web SYSTEM PRIVATE ${SL_WEB_INCLUDE})  # Debian's headers
+target_compile_definitions(shadowlab_web PRIVATE GLM_FORCE_CTOR_INIT)
+set_property(SOURCE src/io/data_paths.cpp APPEND PROPERTY  # the embedded data (web_main.cpp)
+             COMPILE_DEFINITIONS SHADOWLAB_SOURCE_DIR="/data")
+target_compile_options(shadowlab_web PRIVATE -Wall -Wextra -Wno-unused-parameter -fexceptions)
+set_target_properties(shadowlab_web PROPERTIES OUTPUT_NAME shadowlab SUFFIX .js
+                      RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/site)
+target_link_options(shadowlab_web PRIVATE
+  -fexceptions -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sSINGLE_FILE=1
+  -sALLOW_MEMORY_GROWTH=1 -sEXPORTED_RUNTIME_METHODS=ccall,cwrap
+  "SHELL:--embed-file ${SL_WEB_DATA}@/data")
+add_custom_command(TARGET shadowlab_web POST_BUILD
+  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/src/web/index.html
+          ${CMAKE_BINARY_DIR}/site/index.html
+  VERBATIM)

@@ -1,0 +1,15 @@
+# The browser edition in headless Chromium (tests/web/web_browser.py): every core stage through
+# the page's keys against the native `render` of the same stage and camera. Reads the site
+# scripts/web.sh built (build-web/site beside this build, or $SHADOWLAB_WEB_SITE); skipped with
+# the reason when there is none, or no Chromium, chromedriver or Selenium. About 25 s here.
+set(SL_WEB_SITE ${CMAKE_SOURCE_DIR}/build-web/site)
+if(DEFINED ENV{SHADOWLAB_WEB_SITE})
+  set(SL_WEB_SITE $ENV{SHADOWLAB_WEB_SITE})
+endif()
+add_test(NAME web_browser
+         COMMAND ${SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/web/web_browser.py
+                 --site ${SL_WEB_SITE} --shadowlab $<TARGET_FILE:shadowlab>
+                 --out ${CMAKE_BINARY_DIR}/web)
+# Chromium's SwiftShader takes both cores while it draws.
+set_tests_properties(web_browser PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 180
+                     RUN_SERIAL TRUE)

@@ -1,0 +1,197 @@
+#!/usr/bin/env python3
+"""The browser edition in a real browser (GUIDE section 9): headless Chromium (SwiftShader's
+WebGL 2) driven by Selenium opens build-web/site/index.html from the disk, steps through every
+core stage with the page's keys, and compares each picture with the native `shadowlab render`
+of the same stage and camera. A pixel differs when a channel differs by more than
+--channel-tolerance; a stage passes when at most --pixel-tolerance of its pixels differ.
+Saves the browser's picture of each stage (web_<id>.png, docs/images/web/ holds a copy) and the
+whole page at 1920x1080; prints one line per stage.
+Exit 77 (ctest: skipped) with the reason when emscripten's build, Chromium or Selenium is absent,
+unless SHADOWLAB_WEB_REQUIRED=1 (CI's web step, which built the site first)."""
+import argparse
+import base64
+import json
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+import time
+
+SKIP = 77
+
+
+def skip(reason):
+    if os.environ.get("SHADOWLAB_WEB_REQUIRED") == "1":
+        print(f"web: FAILED: {reason}")
+        sys.exit(1)
+    print(f"web: skipped: {reason}")
+    sys.exit(SKIP)
+
+
+def browser():
+    try:
+        from selenium import webdriver
+    except ImportError:
+        skip("python3-selenium is not installed (scripts/deps.sh --test installs it)")
+    driver_path = shutil.which("chromedriver")
+    if not shutil.which("chromium") or not driver_path:
+        skip("chromium or chromium-driver is not installed")
+    from selenium.webdriver.chrome.service import Service
+    options = webdriver.ChromeOptions()
+    for flag in ("--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+                 "--no-sandbox", "--window-size=1920,1080"):
+        options.add_argument(flag)
+    return webdriver.Chrome(service=Service(driver_path), options=options)
+
+
+# Draws an image (the canvas, or a PNG's data URL) on a 2D canvas and counts the pixels whose
+# largest channel difference exceeds the tolerance.
+COMPARE = """
+const [nativeUrl, tolerance, done] = arguments;
+const web = document.getElementById('canvas');
+const pixels = source => { const c = document.createElement('canvas');
+  c.width = web.width; c.height = web.height; const g = c.getContext('2d');
+  g.drawImage(source, 0, 0); return g.getImageData(0, 0, c.width, c.height).data; };
+const a = pixels(web);
+const img = new Image();
+img.onload = () => { const b = pixels(img); let differ = 0, worst = 0;
+  for (let i = 0; i < a.length; i += 4) { let d = 0;
+    for (let k = 0; k < 3; ++k) d = Math.max(d, Math.abs(a[i + k] - b[i + k]));
+    worst = Math.max(worst, d); if (d > tolerance) ++differ; }
+  done({differ, total: a.length / 4, worst, png: web.toDataURL('image/png')}); };
+img.onerror = () => done({error: 'the native PNG did not load'});
+img.src = nativeUrl;
+"""
+
+
+def lessons_and_views(driver, body, stage):
+    """Steps through the stage's lessons ('n') and views ('v'): each must draw without a message,
+    or be refused in words naming what WebGL lacks. Returns the failures; prints what it reached."""
+    failures = []
+    count = int(driver.execute_script("return document.getElementById('lesson').textContent")
+                .split()[0])
+    for k in range(1, count + 1):
+        body.send_keys("n")
+        text, message = driver.execute_script(
+            "return [document.getElementById('lesson').textContent, shadowlab.lastMessage]")
+        name = text.splitlines()[0] if text else ""
+        if not name.startswith(f"lesson {k}/{count}:"):
+            failures.append(f"{stage} lesson {k}/{count}: the page shows {name!r}")
+        elif "WebGL refuses" in message:  # a difference docs/web.md lists, said in words
+            print(f"web: {stage:9} {name}: refused as docs/web.md says: {message}")
+        elif message:
+            failures.append(f"{stage} {name}: {message!r}")
+    views = []
+    for _ in range(6):
+        body.send_keys("v")
+        view, message = driver.execute_script("return [shadowlab.view, shadowlab.lastMessage]")
+        if message:
+            failures.append(f"{stage} view {view}: {message!r}")
+        if view in views:
+            break
+        views.append(view)
+    print(f"web: {stage:9} {count} lesson(s) and views {', '.join(views)} drawn")
+    return failures
+
+
+def parameters(driver, stage):
+    """The page's parameter table must list the stage's declared parameters (the names and
+    defaults `stages --json` prints), and a value outside the declaration must be refused in one
+    line naming the parameter. Returns the failures."""
+    rows = driver.execute_script(
+        "return [...document.querySelectorAll('#params input')].map(i => [i.name, i.value])")
+    declared = [p["name"] for p in stage["parameters"]]
+    if [name for name, _ in rows] != declared:
+        return [f"{stage['id']}: the page's parameters {rows} are not the declared {declared}"]
+    if not rows:
+        return []
+    name = rows[0][0]
+    message = driver.execute_script(
+        "const i = document.querySelector('#params input'); i.value = 'not-a-value';"
+        "i.dispatchEvent(new Event('change')); return shadowlab.lastMessage")
+    if name not in message or "\n" in message.strip():
+        return [f"{stage['id']}: {name}=not-a-value gave {message!r}"]
+    return []
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--site", required=True)
+    ap.add_argument("--shadowlab", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--channel-tolerance", type=int, default=8)
+    ap.add_argument("--pixel-tolerance", type=float, default=0.01)
+    args = ap.parse_args()
+    page = pathlib.Path(args.site, "index.html").resolve()
+    if not pathlib.Path(args.site, "shadowlab.js").exists():
+        skip(f"no browser build in {args.site} (bash scripts/web.sh builds it)")
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    stages = json.loads(subprocess.run([args.shadowlab, "stages", "--json"], check=True,
+                                       capture_output=True, text=True).stdout)
+    stages = stages["stages"] if isinstance(stages, dict) else stages
+    failures = []
+    driver = browser()
+    try:
+        started = time.monotonic()
+        driver.get(page.as_uri())
+        for _ in range(300):
+            if driver.execute_script("return window.shadowlab && window.shadowlab.ready"):
+                break
+            time.sleep(0.1)
+        else:
+            skip_or_fail = driver.execute_script("return window.shadowlab && shadowlab.lastMessage")
+            print(f"web: FAILED: the page never became ready ({skip_or_fail})")
+            return 1
+        print(f"web: first picture {time.monotonic() - started:.2f} s after opening the page")
+        ids = driver.execute_script("return shadowlab.stages.map(s => s.id)")
+        if ids != [s["id"] for s in stages]:
+            failures.append(f"the page lists {ids}, the native program {[s['id'] for s in stages]}")
+        body = driver.find_element("tag name", "body")
+        for index, stage in enumerate(stages):
+            body.send_keys(str(index))  # the window's key for the stage
+            current, message = driver.execute_script(
+                "return [shadowlab.current, shadowlab.lastMessage]")
+            if current != index:
+                failures.append(f"key {index}: the page shows stage {current}")
+                continue
+            if "core" not in stage.get("trees", ["core"]):  # the legacy-only stage
+                ok = "native program" in message
+                print(f"web: {stage['id']:9} native only: {'told' if ok else 'NOT told'}")
+                if not ok:
+                    failures.append(f"{stage['id']}: no 'native program' note ({message!r})")
+                continue
+            if message:
+                failures.append(f"{stage['id']}: the page says {message!r}")
+                continue
+            failures += lessons_and_views(driver, body, stage["id"])
+            failures += parameters(driver, stage)
+            body.send_keys("x")  # the defaults again, for the comparison
+            native = out / f"native_{stage['id']}.png"
+            subprocess.run([args.shadowlab, "render", "--stage", stage["id"], "--out", str(native)],
+                           check=True, capture_output=True)
+            url = "data:image/png;base64," + base64.b64encode(native.read_bytes()).decode()
+            r = driver.execute_async_script(COMPARE, url, args.channel_tolerance)
+            if "error" in r:
+                failures.append(f"{stage['id']}: {r['error']}")
+                continue
+            pathlib.Path(out, f"web_{stage['id']}.png").write_bytes(
+                base64.b64decode(r["png"].split(",", 1)[1]))
+            share = r["differ"] / r["total"]
+            verdict = "ok" if share <= args.pixel_tolerance else "DIFFERS"
+            print(f"web: {stage['id']:9} {share:7.3%} of pixels differ by more than "
+                  f"{args.channel_tolerance}/255 (worst {r['worst']}): {verdict}")
+            if verdict != "ok":
+                failures.append(f"{stage['id']}: {share:.3%} of pixels differ")
+        body.send_keys("2")  # the whole page as a student sees it at 1920x1080 (the README's)
+        driver.save_screenshot(str(out / "page_1920x1080.png"))
+    finally:
+        driver.quit()
+    for f in failures:
+        print(f"web: FAILED: {f}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
