@@ -109,26 +109,10 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
 std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCase>& cases,
                                        const std::function<std::string(const CheckCase&)>& diffPath,
                                        const std::function<void(const CheckResult&)>& progress) {
-    // Our shipped shaders' figures in the displaced views, measured in one go before the
-    // submission's (one context for ours, one for theirs: switching per row rebuilt both and
-    // traced the reference again each time).
-    std::map<std::size_t, std::map<std::string, double>> ours;
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-        const RenderRequest& q = cases[k].request;
-        if (!q.displaceSeed || q.overlay.empty()) continue;
-        RenderRequest shipped = q;
-        shipped.overlay.clear();
-        rig.prepare(shipped);
-        CheckResult mine;
-        mine.figures = rig.accuracy();
-        ours[k] = mine.figureMap();
-    }
     std::vector<CheckResult> results;
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const CheckCase& c = cases[k];
-        auto found = ours.find(k);
-        CheckResult r = runCheck(rig, c.request, diffPath(c),
-                                 found == ours.end() ? nullptr : &found->second, c.pictures);
+        CheckResult r = runCheck(rig, c.request, diffPath(c), c.pictures);
         r.view = c.view;
         r.lesson =
             c.lesson.empty() && r.expectation.entry ? r.expectation.entry->label() : c.lesson;
@@ -217,7 +201,7 @@ void writePictures(Evaluator& rig, const std::optional<ShadowEvidence>& e,
 }  // namespace
 
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
-                     const std::map<std::string, double>* shipped, RowPictures pictures) {
+                     RowPictures pictures) {
     if (request.view != ViewMode::Final)
         throw UsageError("--view " + std::string(viewName(request.view)) +
                          ": check judges the final picture; use --view final (or leave it out)");
@@ -270,10 +254,11 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
     }
-    Judgement j = request.displaceSeed  // without a submission's overlay, ours are measured
-                      ? judgeDisplaced(*r.expectation.entry, r.figureMap(),
-                                       shipped ? *shipped : r.figureMap())
-                      : judge(*r.expectation.entry, r.figureMap());
+    const Expectation& lesson = *r.expectation.entry;
+    Judgement j = request.displaceSeed
+                      ? judgeDisplaced(lesson, r.figureMap(),
+                                       displacedFiguresOf(r.stage, r.tree, lesson.label()))
+                      : judge(lesson, r.figureMap());
     r.status = j.status;
     r.message = j.message;
     if (!r.expectation.exact)

@@ -55,7 +55,7 @@ CheckResult checkResultFor(const RenderRequest& request);
 // goes to stderr and the rig is reset.
 // Other failures propagate (bad input: UsageError; GL: std::runtime_error).
 // A displaced case (RenderRequest::displaceSeed) is judged against the wider of the lesson's
-// bounds and `shipped`, our shipped shaders' figures in the same view (the case's own when null).
+// bounds and the solution's figures in displaced views (data: stages/displaced_bounds.h).
 // `pictures` says which are written once the row is judged (RowPictures below): with the
 // render and the truth's shading (the mirror: our stencil reflection) beside the diff image
 // (DIFF.render.png, DIFF.truth.png), a feedback page shows the three side by side.
@@ -66,7 +66,6 @@ enum class RowPictures {
                        // shows a stage's first failing row, else its first row (`grade`)
 };
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
-                     const std::map<std::string, double>* shipped = nullptr,
                      RowPictures pictures = RowPictures::Difference);
 
 // One thing a (stage, tree) check judges: a lesson entry's settings seen from one view.
