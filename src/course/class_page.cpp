@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "course/html_text.h"
+#include "io/files.h"
 
 namespace sl {
 
@@ -31,8 +32,9 @@ std::string copyFlagsTable(const std::vector<StudentRecord>& records,
     std::ostringstream rows;
     for (std::size_t k = 0; k < records.size(); ++k)
         for (const std::string& f : records[k].flags)
-            rows << "<tr><td><a href=\"" << esc(pages[k]) << "\">" << esc(records[k].student)
-                 << "</a></td><td class=\"msg\">" << esc(f) << "</td></tr>\n";
+            rows << "<tr><td><a href=\"" << esc(pages[k]) << "\">"
+                 << esc(escapedName(records[k].student)) << "</a></td><td class=\"msg\">" << esc(f)
+                 << "</td></tr>\n";
     if (rows.str().empty()) return "";
     return "<h2>Possible copies (for the instructor: not a score)</h2>\n"
            "<table><tr><th>student</th><th>file and what it equals</th></tr>\n" +
@@ -57,7 +59,7 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
     std::vector<std::map<std::string, int>> failures(stages.size());
     for (std::size_t k = 0; k < records.size(); ++k) {
         const StudentRecord& r = records[k];
-        h << "<tr><td><a href=\"" << esc(pages[k]) << "\">" << esc(r.student) << "</a>"
+        h << "<tr><td><a href=\"" << esc(pages[k]) << "\">" << esc(escapedName(r.student)) << "</a>"
           << (r.roster ? " " + esc(r.roster->name) : std::string()) << "</td>";
         std::size_t i = 0;
         for (const StageRecord& st : r.stages) {
@@ -101,7 +103,7 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
                 for (const std::string& n : row.result.sourceNotes)
                     if (seen.insert(n).second)
                         notes << "<tr><td><a href=\"" << esc(pages[k]) << "\">"
-                              << esc(records[k].student) << "</a></td><td>"
+                              << esc(escapedName(records[k].student)) << "</a></td><td>"
                               << esc(st.stage + "/" + st.tree) << "</td><td class=\"msg\">"
                               << esc(n) << "</td></tr>\n";
         }

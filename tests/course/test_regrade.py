@@ -11,6 +11,8 @@ one-stage assignment:
   3. a rerun with nothing changed grades nobody;
   4. a changed hand-in (bo fixes his shader) is regraded, alone;
   5. --regrade NAME and a changed assignment regrade; an unknown --regrade name is refused;
+     one seed a class: --regrade NAME without --seed keeps the class's seed, another --seed
+     over kept records is refused with one line before any work (issue 39);
   6. check --assignment on the same hand-in gives the same rows, points and exit code as grade.
 usage: test_regrade.py SHADOWLAB REPO WORKDIR"""
 import csv, json, os, shutil, subprocess, sys
@@ -42,9 +44,10 @@ hand_in("cy", "README.txt", "nothing yet\n")
 out = work + "/out"
 
 
-def grade(*extra, code=0):
-    r = subprocess.run([exe, "grade", work + "/class", "--assignment", lab, "--out", out,
-                        "--seed", SEED] + list(extra), capture_output=True, text=True, timeout=900)
+def grade(*extra, code=0, seed=SEED):
+    r = subprocess.run([exe, "grade", work + "/class", "--assignment", lab, "--out", out] +
+                       (["--seed", seed] if seed else []) + list(extra),
+                       capture_output=True, text=True, timeout=900)
     print("$ grade", *extra, "->", r.returncode)
     print(r.stdout, r.stderr[-2000:])
     assert r.returncode == code, (extra, r.returncode, code)
@@ -120,8 +123,16 @@ assert record("bo")["status"] == "PASS"
 assert stamp("ann") == before["ann"] and stamp("cy") == before["cy"]
 
 # 5. Asked for, an unknown name, the assignment changed.
-text = grade("--regrade", "ann")
+text = grade("--regrade", "ann", seed=None)  # the class's seed, not a new one
 assert "grading ann again: asked for (--regrade)" in text and text.count("[student ") == 1, text
+assert "the class's seed 4242 (kept from its records)" in text, text
+assert record("ann")["seed"] == int(SEED), record("ann")["seed"]
+kept = {n: stamp(n) for n in ("ann", "bo", "cy")}
+r = subprocess.run([exe, "grade", work + "/class", "--assignment", lab, "--out", out, "--seed", "7"],
+                   capture_output=True, text=True, timeout=60)
+assert r.returncode == 2 and r.stderr.count("\n") == 1, (r.returncode, r.stderr)
+assert "--seed 7: the class in" in r.stderr and "was graded with seed 4242 (one seed a class)" in r.stderr
+assert "grading the solution" not in r.stdout and kept == {n: stamp(n) for n in kept}, r.stdout
 r = subprocess.run([exe, "grade", work + "/class", "--assignment", lab, "--out", out,
                     "--regrade", "nobody"], capture_output=True, text=True)
 assert r.returncode == 2 and "--regrade: no hand-in named 'nobody'" in r.stderr, (r.returncode, r.stderr)
