@@ -78,3 +78,7 @@ set_tests_properties(course_hostile_text PROPERTIES LABELS course TIMEOUT 900)
 add_test(NAME course_student_page
          COMMAND python3 ${SL_COURSE_PY}/test_student_page.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/student-page)
 set_tests_properties(course_student_page PROPERTIES LABELS course TIMEOUT 600)
+# Names as the file system gives them (not UTF-8) and a full disk said in one line (issue 39).
+add_test(NAME course_names_disks
+         COMMAND python3 ${SL_COURSE_PY}/test_names_disks.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/names-disks)
+set_tests_properties(course_names_disks PROPERTIES LABELS course TIMEOUT 300)

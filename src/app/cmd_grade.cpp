@@ -64,7 +64,7 @@ Command addGradeCommand(CLI::App& app) {
                     args->jobs = *jobs == "auto" ? 0 : parseJobs(*jobs);
                     args->settings.backend = toBackend(*backend);
                     args->settings.budget = limits->rule();
-                    args->settings.seed = *seed ? **seed : drawSeed();
+                    args->seed = *seed;
                     return runClassGrade(*args);
                 });
             }};

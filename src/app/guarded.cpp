@@ -24,6 +24,9 @@ int guarded(const std::function<int()>& body) {
     } catch (const std::invalid_argument& e) {
         std::cerr << "shadowlab: " << printable(e.what()) << "\n";
         return kBadInput;
+    } catch (const DiskFullError& e) {  // the machine's, said as it is
+        std::cerr << "shadowlab: " << printable(e.what()) << "\n";
+        return kGlFailure;
     } catch (const std::exception& e) {
         std::cerr << "shadowlab: GL or platform failure: " << printable(e.what()) << "\n";
         return kGlFailure;

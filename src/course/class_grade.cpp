@@ -30,12 +30,14 @@
 #include "course/roster.h"
 #include "course/solution_check.h"
 #include "course/student_grade.h"
+#include "grade/check_run.h"  // drawSeed
 #include "io/box.h"
 #include "io/content_hash.h"
 #include "io/files.h"
 #include "io/usage_error.h"
 #include "sandbox/private_dir.h"
 #include "sandbox/worker.h"
+#include "stages/displaced_bounds.h"
 #include "stages/expectations.h"
 
 namespace sl {
@@ -45,9 +47,21 @@ using nlohmann::json;
 
 namespace {
 
+// A job that could not write for want of space exits with this (its log may be lost with it).
+constexpr int kJobDiskFull = 4;
+
+// A write the disk had no room for is the machine's failure (exit 3), in one line: records and
+// outputs are written atomically, so whatever an earlier run wrote is still whole.
+[[noreturn]] void throwWriteError(const std::string& err) {
+    if (diskFull(errno))
+        throw DiskFullError("grade: the disk is full: " + err +
+                            " (what earlier runs wrote is kept): free space and rerun grade");
+    throw UsageError("grade: " + err);
+}
+
 void writeOrThrow(const std::string& path, const std::string& text) {
     std::string err = writeFileAtomically(path, text.data(), text.size());
-    if (!err.empty()) throw UsageError("grade: " + err);
+    if (!err.empty()) throwWriteError(err);
 }
 
 // A record as kept in OUT/students/: its JSON with "record_hash", the FNV-1a of the rest of it
@@ -101,12 +115,13 @@ std::string handInHash(const std::string& path) {
 // Why a student is graded in this run: "" when their kept record stands, "new" when there is
 // none, else why it is set aside.
 std::string whyGrade(const std::optional<StudentRecord>& kept, const std::string& handIn,
-                     const std::string& assignment, bool asked) {
+                     const std::string& assignment, std::uint64_t seed, bool asked) {
     if (asked) return "asked for (--regrade)";
     if (!kept) return "new";
     if (!kept->graded()) return "not graded last time";
     if (kept->assignmentHash != assignment) return "the assignment changed";
     if (kept->handInHash != handIn) return "the hand-in changed";
+    if (kept->seed != seed) return "graded in another displaced view than the class's seed";
     return "";
 }
 
@@ -195,12 +210,43 @@ std::string duration(double s) {
     return t;
 }
 
+// The class's displaced-view seed, one for every record: --seed, else the seed most kept records
+// share (a rerun, --regrade NAME: a student graded with another is graded again), else drawn
+// now. A --seed other than the kept records' is refused unless --regrade-all grades everyone in
+// the new views: two seeds in one class would hold students to different views.
+std::uint64_t classSeed(const ClassGradeArgs& args, const std::vector<std::string>& recordPaths,
+                        const std::vector<std::string>& students) {
+    std::map<std::uint64_t, std::size_t> kept;  // seed: records
+    for (std::size_t k = 0; k < recordPaths.size(); ++k)
+        if (std::optional<StudentRecord> r = keptRecord(recordPaths[k], students[k]); r && r->seed)
+            ++kept[*r->seed];
+    auto most = std::max_element(kept.begin(), kept.end(),
+                                 [](const auto& a, const auto& b) { return a.second < b.second; });
+    if (!args.seed) {
+        if (kept.empty()) return drawSeed();
+        std::cout << "the class's seed " << most->first << " (kept from its records)\n";
+        return most->first;
+    }
+    if (kept.empty() || most->first == *args.seed) return *args.seed;
+    if (!args.regradeAll)
+        throw UsageError("grade: --seed " + std::to_string(*args.seed) + ": the class in " +
+                         printableName(args.out) + " was graded with seed " +
+                         std::to_string(most->first) +
+                         " (one seed a class): leave --seed out to keep it, or add --regrade-all "
+                         "to grade every student again with the new one");
+    std::cout << "the class's seed is now " << *args.seed << " (was " << most->first
+              << "): --regrade-all grades every student in the new displaced views\n";
+    return *args.seed;
+}
+
 // What a passed solution check saw: the assignment's text, the solution trees' files and the
 // expectations they were graded by. A rerun (a class graded in parts, a regrade, a platform
 // failure retried) with the same key skips the check: the solution earns the same points.
-std::string solutionCheckKey(const std::string& assignmentHash, const SolutionTrees& trees) {
+std::string solutionCheckKey(const std::string& assignmentHash, const SolutionTrees& trees,
+                             std::uint64_t seed) {
     return assignmentHash + " " + contentHash(trees.root("core")) + " " +
-           contentHash(trees.root("legacy")) + " " + handInHash(expectationsPath());
+           contentHash(trees.root("legacy")) + " " + handInHash(expectationsPath()) + " " +
+           handInHash(displacedBoundsPath()) + " seed " + std::to_string(seed);
 }
 
 bool solutionCheckPassed(const std::string& out, const std::string& key) {
@@ -248,6 +294,15 @@ int runClassGrade(const ClassGradeArgs& args) {
         throw UsageError(
             "grade: " + printableName(args.submissions) + " holds no submission" +
             (listing.skipped.empty() ? "" : " (left out: " + skippedList(listing) + ")"));
+    GradeSettings settings = args.settings;
+    {
+        std::vector<std::string> kept, students;
+        for (const ClassEntry& e : listing.handIns) {
+            kept.push_back(args.out + "/students/" + e.key + ".json");
+            students.push_back(e.student);
+        }
+        settings.seed = classSeed(args, kept, students);
+    }
     // Mesa's shader cache, one for the whole run (the solution check, every job, every worker):
     // our shipped programs are compiled once per class instead of once per student, lesson and
     // view, and a student's own once per student. Keyed by the shader's text and the driver, so
@@ -255,7 +310,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     PrivateDir shaderCache("shadowlab-shader-cache");
     useShaderCacheFolder(shaderCache.path());
     SolutionTrees trees = solutionTrees(args.solutions);
-    const std::string checkKey = solutionCheckKey(assignmentHash, trees);
+    const std::string checkKey = solutionCheckKey(assignmentHash, trees, *settings.seed);
     const bool checked = solutionCheckPassed(args.out, checkKey);
     if (checked) {
         std::cout << "the solution (" << trees.describe() << ") passed "
@@ -264,7 +319,7 @@ int runClassGrade(const ClassGradeArgs& args) {
         std::cout << "grading the solution (" << trees.describe() << ") by "
                   << printableName(args.assignment) << " first\n"
                   << std::flush;
-        verifySolution(a, trees, args.settings);
+        verifySolution(a, trees, settings);
     }
     std::error_code mkdirError;
     fs::create_directories(args.out, mkdirError);
@@ -283,6 +338,7 @@ int runClassGrade(const ClassGradeArgs& args) {
         std::string line = checkKey + "\n";
         std::string err =
             writeFileAtomically(args.out + "/solution_check.txt", line.data(), line.size());
+        if (!err.empty() && diskFull(errno)) throwWriteError(err);
         if (!err.empty()) throw std::runtime_error("grade: " + err);
     }
     std::vector<std::string> entries, names, files, refusals;
@@ -310,13 +366,14 @@ int runClassGrade(const ClassGradeArgs& args) {
                                                   names[k]) != args.regrade.end();
         bool edited = false;
         std::optional<StudentRecord> kept = keptRecord(recordPath(k), names[k], &edited);
-        std::string why = whyGrade(kept, hashes[k], assignmentHash, asked);
+        std::string why = whyGrade(kept, hashes[k], assignmentHash, *settings.seed, asked);
         if (edited && !asked) why = "its record does not match its content hash (edited?)";
         if (why.empty()) continue;
         todo.push_back(k);
         ++reasons[why];
         if (why != "new")
-            std::cout << "grading " << printableName(names[k]) << " again: " << why << "\n";
+            std::cout << "grading " << printableName(escapedName(names[k])) << " again: " << why
+                      << "\n";
     }
     std::cout << "grade " << n << " submissions by " << printableName(args.assignment) << " ("
               << a.name << ")";
@@ -346,7 +403,6 @@ int runClassGrade(const ClassGradeArgs& args) {
         std::error_code ec;
         fs::create_directories(args.out + "/work/" + files[k] + "/images", ec);
     }
-    GradeSettings settings = args.settings;
     settings.pictures = true;
     settings.pagePicturesOnly = true;
     std::map<std::string, std::string> imageDirs;
@@ -385,7 +441,8 @@ int runClassGrade(const ClassGradeArgs& args) {
             // O_NOFOLLOW: a link planted at the log's name is never truncated through.
             int fd =
                 ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
-            if (fd < 0) ::_exit(3);  // its students get no record: named, not graded, exit 3
+            // Its students get no record: named, not graded, exit 3.
+            if (fd < 0) ::_exit(diskFull(errno) ? kJobDiskFull : 3);
             if (fd >= 0) {
                 ::dup2(fd, 1);
                 ::dup2(fd, 2);
@@ -410,6 +467,9 @@ int runClassGrade(const ClassGradeArgs& args) {
                         r.assignmentHash = assignmentHash;
                         writeOrThrow(recordPath(index[i]), sealedRecordText(r));
                     });
+            } catch (const DiskFullError& e) {
+                std::cerr << "shadowlab: grade job " << j << ": " << e.what() << "\n";
+                code = kJobDiskFull;
             } catch (const std::exception& e) {
                 std::cerr << "shadowlab: grade job " << j << ": " << e.what() << "\n";
                 code = 3;
@@ -427,7 +487,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     std::vector<std::string> progressFiles;
     for (int j = 0; j < jobs; ++j) progressFiles.push_back(progressPath(j));
     Pace pace;
-    int exitCode = 0;
+    int exitCode = 0, diskFullJobs = 0;
     std::size_t running = pids.size();
     auto isFresh = [&](std::size_t k, std::optional<StudentRecord>& r) {
         r = keptRecord(recordPath(k), names[k]);
@@ -450,7 +510,8 @@ int runClassGrade(const ClassGradeArgs& args) {
             char line[512];
             std::snprintf(line, sizeof line,
                           "[student %zu of %zu] %-24s %7.2f / %.2f  %-10s time left about %s\n",
-                          n - todo.size() + reported.size(), n, printableName(names[k]).c_str(),
+                          n - todo.size() + reported.size(), n,
+                          printableName(escapedName(names[k])).c_str(),
                           r->graded() ? r->total() : r->score, r->maxScore, statusName(r->status()),
                           reported.size() == todo.size() ? "0 s" : duration(left).c_str());
             std::cout << line << std::flush;
@@ -462,12 +523,20 @@ int runClassGrade(const ClassGradeArgs& args) {
         if (done > 0 && std::find(pids.begin(), pids.end(), done) != pids.end()) {
             --running;
             if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) exitCode = 3;
+            if (WIFEXITED(status) && WEXITSTATUS(status) == kJobDiskFull) ++diskFullJobs;
         } else if (done <= 0) {
             std::this_thread::sleep_for(std::chrono::milliseconds(300));
         }
         poll();
     }
     poll();
+    if (diskFullJobs > 0) {  // one line, not one a student: the outputs would not fit either
+        std::size_t lost = todo.size() - reported.size();
+        throw DiskFullError("grade: the disk under " + printableName(args.out) + " is full: " +
+                            std::to_string(lost) + " of " + std::to_string(todo.size()) +
+                            " students' records could not be written (not graded; what earlier "
+                            "runs wrote is kept): free space and rerun grade");
+    }
 
     // The class's outputs from every record (those of earlier runs too).
     addCopyFlags(annotations, a, names, files, args.out, trees);
@@ -477,7 +546,7 @@ int runClassGrade(const ClassGradeArgs& args) {
     for (std::size_t k = 0; k < n; ++k) {
         std::optional<StudentRecord> r;
         if (!isFresh(k, r)) {
-            std::cerr << "shadowlab: " << printableName(names[k])
+            std::cerr << "shadowlab: " << printableName(escapedName(names[k]))
                       << ": no record (its job failed; see " << args.out
                       << "/logs/): not graded, rerun grade\n";
             ++notGraded;
@@ -500,6 +569,13 @@ int runClassGrade(const ClassGradeArgs& args) {
                            {annotations.pairs, annotations.solutionCopies}));
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::size_t copyFull = 0;  // hand-ins whose private copy found the disk full (NOT GRADED)
+    for (std::size_t k : todo) copyFull += subs[k].platformFailure;
+    if (copyFull > 0)
+        std::cerr << "shadowlab: grade: the disk was full: " << copyFull
+                  << (copyFull == 1 ? " hand-in" : " hand-ins")
+                  << " could not be copied to be graded (NOT GRADED, not the students' fault): "
+                     "free space and rerun grade\n";
     std::cout << "graded " << n - notGraded << " of " << n;
     if (notGraded > 0) std::cout << "; " << notGraded << " not graded: rerun";
     std::cout << " in " << duration(seconds) << ": " << args.out << "/grades.csv, " << args.out

@@ -9,6 +9,8 @@
 // class page.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,7 +27,11 @@ struct ClassGradeArgs {
     std::string roster;                // --roster roster.csv (course/roster.h), or ""
     std::string times;                 // --times times.csv (course/late_policy.h), or ""
     std::string adjust;                // --adjust adjust.csv (course/adjustments.h), or ""
-    GradeSettings settings;
+    // --seed: the displaced views' seed. Without it a class keeps the seed its records share
+    // (a rerun, --regrade NAME), or draws one; a different seed over kept records is refused
+    // unless --regrade-all grades everyone in the new views (one seed a class).
+    std::optional<std::uint64_t> seed;
+    GradeSettings settings;  // its seed is set by runClassGrade
 };
 
 // The solution is graded by the assignment first (course/solution_check.h): a row it loses

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "course/html_text.h"
+#include "io/files.h"
 
 namespace sl {
 
@@ -35,8 +36,9 @@ std::string copiesTables(const ClassCopies& copies, const std::vector<StudentRec
         pageOf[records[k].student] = pages[k];
     auto who = [&](const std::string& name) {
         auto it = pageOf.find(name);
-        return it == pageOf.end() ? esc(name)
-                                  : "<a href=\"" + esc(it->second) + "\">" + esc(name) + "</a>";
+        return it == pageOf.end() ? esc(escapedName(name))
+                                  : "<a href=\"" + esc(it->second) + "\">" +
+                                        esc(escapedName(name)) + "</a>";
     };
     std::ostringstream pairs, solution;
     std::size_t below = 0;
@@ -108,7 +110,7 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
     std::vector<std::map<std::string, int>> failures(stages.size());
     for (std::size_t k = 0; k < records.size(); ++k) {
         const StudentRecord& r = records[k];
-        h << "<tr><td><a href=\"" << esc(pages[k]) << "\">" << esc(r.student) << "</a>"
+        h << "<tr><td><a href=\"" << esc(pages[k]) << "\">" << esc(escapedName(r.student)) << "</a>"
           << (r.roster ? " " + esc(r.roster->name) : std::string()) << "</td>";
         std::size_t i = 0;
         for (const StageRecord& st : r.stages) {
@@ -151,7 +153,7 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
                 for (const std::string& n : row.result.sourceNotes)
                     if (seen.insert(n).second)
                         notes << "<tr><td><a href=\"" << esc(pages[k]) << "\">"
-                              << esc(records[k].student) << "</a></td><td>"
+                              << esc(escapedName(records[k].student)) << "</a></td><td>"
                               << esc(st.stage + "/" + st.tree) << "</td><td class=\"msg\">"
                               << esc(n) << "</td></tr>\n";
         }

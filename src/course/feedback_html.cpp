@@ -230,9 +230,10 @@ std::string pointsOf(double points, double max, Status status) {
 std::string studentPage(const StudentRecord& record) {
     std::ostringstream h;
     h << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>"
-      << esc(record.student) << ": " << esc(record.assignment) << "</title>" << kStyle
+      << esc(escapedName(record.student)) << ": " << esc(record.assignment) << "</title>" << kStyle
       << "</head><body>\n";
-    h << "<h1>" << esc(record.assignment) << "</h1>\n<p><b>" << esc(record.student) << "</b>"
+    h << "<h1>" << esc(record.assignment) << "</h1>\n<p><b>" << esc(escapedName(record.student))
+      << "</b>"
       << (record.roster ? " (" + esc(record.roster->name) + ", " + esc(record.roster->id) + ")"
                         : std::string())
       << ": " << totalLine(record) << "</p>\n";
@@ -252,24 +253,22 @@ std::string studentPage(const StudentRecord& record) {
             continue;
         }
         std::string id = st.stage + "/" + st.tree;
-        std::string status = statusName(st.status);
+        // The rows this student sees: a hidden row's points or status would give it away.
+        const SeenStage seen = seenStage(st);
+        std::string status = statusName(seen.status);
         h << "<h2 id=\"" << esc(id) << "\">" << esc(id) << ": "
-          << pointsOf(st.points, st.maxPoints, st.status) << " <span class=\"" << esc(status)
+          << pointsOf(seen.points, seen.maxPoints, seen.status) << " <span class=\"" << esc(status)
           << "\">" << esc(status) << "</span></h2>\n<p>"
-          << esc(st.status == Status::NotGraded
+          << esc(seen.status == Status::NotGraded
                      ? "The grading machine could not run this stage. That is not your "
                        "submission's fault; it will be graded again."
                      : st.message)
           << "</p>\n";
-        int hidden = 0;
         const RowRecord* shown = nullptr;
         h << "<table><tr><th>view</th><th>setting</th><th>verdict</th><th>points</th><th>in plain "
              "words</th></tr>\n";
         for (const RowRecord& row : st.rows) {
-            if (!shownToStudent(st, row)) {
-                ++hidden;
-                continue;
-            }
+            if (!seenByStudent(st, row)) continue;
             const Status v = row.status();
             if (!shown || (shown->status() == Status::Pass && v != Status::Pass &&
                            !row.result.diffFile.empty()))
@@ -281,7 +280,8 @@ std::string studentPage(const StudentRecord& record) {
               << "</td><td class=\"msg\">" << esc(plainWords(row)) << "</td></tr>\n";
         }
         h << "</table>\n";
-        if (hidden) h << "<p>" << hidden << " more checks of this stage are hidden.</p>\n";
+        if (seen.hidden)  // how many is not said: with the total it would tell their verdicts
+            h << "<p>More checks of this stage are graded but hidden.</p>\n";
         h << sourceNotesOf(st);
         if (shown && !shown->result.diffFile.empty())
             h << picturesOf(shown->result) << lessonCaption(*shown);

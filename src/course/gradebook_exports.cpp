@@ -27,8 +27,8 @@ std::string canvasCsv(const std::string& assignment, const std::vector<StudentRe
     out << "Student,ID,SIS User ID,SIS Login ID,Section," << csvCell(assignment) << "\r\n";
     for (const StudentRecord& r : records) {
         const RosterInfo who = r.roster.value_or(RosterInfo{});
-        out << csvCell(who.name.empty() ? r.student : who.name) << ",," << csvCell(who.id) << ",,,"
-            << totalCell(r) << "\r\n";
+        out << csvCell(who.name.empty() ? escapedName(r.student) : who.name) << ",,"
+            << csvCell(who.id) << ",,," << totalCell(r) << "\r\n";
     }
     return out.str();
 }
@@ -74,8 +74,8 @@ std::string gradesCsv(const std::vector<StudentRecord>& records) {
     out << ",adjustments,late_penalty,total,max,not_graded\r\n";
     for (const StudentRecord& r : records) {
         const RosterInfo who = r.roster.value_or(RosterInfo{});
-        out << csvCell(r.student) << "," << csvCell(who.id) << "," << csvCell(who.name) << ","
-            << csvCell(who.email) << "," << csvCell(statusName(r.status()));
+        out << csvCell(escapedName(r.student)) << "," << csvCell(who.id) << "," << csvCell(who.name)
+            << "," << csvCell(who.email) << "," << csvCell(statusName(r.status()));
         std::string reasons;
         for (const StageRecord& st : r.stages) {
             // A stage that is not graded has no points, not 0: an empty cell, the reason last.

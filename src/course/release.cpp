@@ -33,6 +33,40 @@ void writeText(const std::string& path, const std::string& text) {
     if (!err.empty()) throw UsageError("release: " + err);
 }
 
+// How a student gets the program: the student edition (every solution region stubbed), the
+// .deb or the default install of a build (README.md, "Systems"; docs/assignment.md).
+std::string installSection() {
+    return "\n## Install shadowlab\n\n"
+           "Install the student edition, the program `check` and `window` below need: the Debian\n"
+           "package your instructor gives you (`sudo apt-get install ./shadowlab_*.deb`), or\n"
+           "from its source (`bash scripts/deps.sh` installs what the build needs):\n\n"
+           "```sh\ncmake --preset default && cmake --build build -j\"$(nproc)\" --target "
+           "shadowlab\n"
+           "cmake --install build --prefix ~/shadowlab && export "
+           "PATH=~/shadowlab/bin:$PATH\n```\n\n"
+           "It grades your work as the instructor's copy does (the same references and bounds).\n";
+}
+
+std::string numberText(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+
+// The late policy in a student's words (docs/assignment.md, "Late policy"), or nothing.
+std::string lateSection(const Assignment& a) {
+    if (!a.late) return "";
+    const LatePolicy& p = *a.late;
+    std::ostringstream r;
+    r << "\n## Late policy\n\nDeadline: " << p.deadlineText;
+    if (p.graceMinutes > 0) r << ", with " << numberText(p.graceMinutes) << " minutes of grace";
+    r << ". After it, each day or part of a day costs " << numberText(p.penaltyPerDayPct)
+      << " % of the assignment's points";
+    if (p.capPct < 100) r << ", at most " << numberText(p.capPct) << " % in all";
+    r << " (never more than you earned).\n";
+    return r.str();
+}
+
 std::string studentReadme(const Assignment& a) {
     std::ostringstream r;
     r << "# " << a.name << "\n\n";
@@ -49,6 +83,7 @@ std::string studentReadme(const Assignment& a) {
         r << "| " << s->stage << " (" << s->tree << ") | " << s->points << " | " << files << " | "
           << (s->todo.empty() ? "see the TODO in the file" : s->todo) << " |\n";
     }
+    r << lateSection(a) << installSection();
     r << "\n## Try it\n\n```sh\n"
       << "shadowlab window --shaders shaders --stage " << a.due().front()->stage
       << (a.due().front()->tree == "legacy" ? " --glsl legacy" : "")

@@ -20,6 +20,7 @@
 #include "io/files.h"
 #include "io/usage_error.h"
 #include "sandbox/private_dir.h"
+#include "stages/stage.h"
 
 namespace sl {
 
@@ -93,6 +94,42 @@ void refuseUnlistedMarked(const Assignment& a, const SolutionTrees& trees,
                         "'), but it is not in the stage's files: students have only a stub of "
                         "it; list it, or weigh that lesson 0");
                 }
+        }
+    }
+}
+
+// What refuseUnlistedMarked finds after grading, found before anything is rendered where the
+// stage can tell which programs a graded row draws with (Stage::passes: its settings alone): a
+// mistake visible in the files costs milliseconds, not the solution's grading.
+void refuseUnlistedMarkedByPlan(const Assignment& a, const SolutionTrees& trees,
+                                const GradingPlan& plan) {
+    for (std::size_t k = 0; k < a.stages.size(); ++k) {
+        const AssignmentStage& s = a.stages[k];
+        const StageInfo* info = findStage(s.stage);
+        if (!s.due || !info || !info->create) continue;
+        const std::unique_ptr<Stage> stage = info->create();
+        const std::vector<std::string> marked = markedFiles(trees.root(s.tree), s.stage);
+        auto has = [](const std::vector<std::string>& list, const std::string& f) {
+            return std::find(list.begin(), list.end(), f) != list.end();
+        };
+        for (const StagePlan& st : plan.stages) {
+            if (st.stage != s.stage || st.tree != s.tree || !st.rendered()) continue;
+            for (const RowPlan& row : st.rows) {
+                if (row.points <= 0) continue;
+                ParamSet params(info->params);
+                for (const auto& [name, value] : row.check.request.sets) params.set(name, value);
+                for (const std::string& pass : stage->passes(params))
+                    for (const char* ext : {".vert", ".frag"}) {
+                        const std::string f = s.stage + "/" + pass + ext;
+                        if (!has(marked, f) || has(s.files, f)) continue;
+                        throw AssignmentError(
+                            a.at("/stages/" + std::to_string(k) + "/files") + ": " + f + " (" +
+                            trees.describe() + ") holds a solution region and " + s.stage + "/" +
+                            s.tree + " draws with it (lesson '" + row.check.lesson +
+                            "'), but it is not in the stage's files: students have only a stub "
+                            "of it; list it, or weigh that lesson 0");
+                    }
+            }
         }
     }
 }
@@ -179,8 +216,9 @@ StudentRecord verifySolution(const Assignment& a, const SolutionTrees& trees,
     quiet.pictures = false;
     quiet.imageDir = nullptr;
     quiet.rowImage = nullptr;
-    StudentRecord record =
-        gradeSolution(planStudent(a, solution, quiet.seed), solution, quiet, dir.path());
+    const GradingPlan plan = planStudent(a, solution, quiet.seed);
+    refuseUnlistedMarkedByPlan(a, trees, plan);
+    StudentRecord record = gradeSolution(plan, solution, quiet, dir.path());
     refuseUnlistedMarked(a, trees, record);
     double lost = 0;
     int rowsLost = 0;

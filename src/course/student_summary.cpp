@@ -19,8 +19,8 @@ bool shownToStudent(const StageRecord& st, const RowRecord& row) {
 namespace {
 
 // The first thing to fix in a stage, from its status and rows (never from its message's words).
-std::string firstFix(const StageRecord& st) {
-    switch (st.status) {
+std::string firstFix(const StageRecord& st, Status seen) {
+    switch (seen) {
         case Status::Pass:
             return "nothing: every check shows the lesson";
         case Status::NotGraded:
@@ -58,13 +58,15 @@ std::string stagesSummary(const StudentRecord& record) {
     for (const StageRecord& st : record.stages) {
         if (st.visibility == "hidden") continue;
         const std::string id = st.stage + "/" + st.tree;
-        const std::string status = statusName(st.status);
+        // The rows this student sees only: a hidden row's points or status would give it away.
+        const SeenStage seen = seenStage(st);
+        const std::string status = statusName(seen.status);
         rows << "<tr><td><a href=\"#" << esc(id) << "\">" << esc(id) << "</a></td><td class=\""
              << esc(status) << "\">" << esc(status) << "</td><td>"
-             << (st.status == Status::NotGraded
+             << (seen.status == Status::NotGraded
                      ? std::string("not graded")
-                     : numText(st.points) + " of " + numText(st.maxPoints))
-             << "</td><td class=\"msg\">" << esc(firstFix(st)) << "</td></tr>\n";
+                     : numText(seen.points) + " of " + numText(seen.maxPoints))
+             << "</td><td class=\"msg\">" << esc(firstFix(st, seen.status)) << "</td></tr>\n";
     }
     if (rows.str().empty()) return "";
     return "<h2 id=\"summary\">Your stages at a glance</h2>\n<table class=\"summary\"><tr><th>"

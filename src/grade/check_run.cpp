@@ -108,7 +108,11 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
     // The rows whose method parameters the seed draws, seen from the displaced view (its truth
     // is traced once for both), each held to our shaders at the same values (judgeDrawn). Only
     // for a submission: our own shaders would be held to themselves.
-    if (narrowed || customView || !seed || base.overlay.empty()) return cases;
+    // Not in a student edition: its shaders are the stubs, and a drawn row compares with the
+    // solution's render at the drawn values, which only an install with the solutions can make
+    // (docs/check.md "Drawn rows": the home check says so and leaves them to the grader).
+    if (narrowed || customView || !seed || base.overlay.empty() || isStudentEdition(base.tree))
+        return cases;
     for (const DrawnRow* row : drawnRowsOf(base.stage, treeName(base.tree))) {
         RenderRequest r = base;
         r.sets = drawnSettings(*row, *seed);
@@ -128,13 +132,13 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
 std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCase>& cases,
                                        const std::function<std::string(const CheckCase&)>& diffPath,
                                        const std::function<void(const CheckResult&)>& progress) {
-    // Our shipped shaders' figures in the displaced views, measured in one go before the
-    // submission's (one context for ours, one for theirs: switching per row rebuilt both and
-    // traced the reference again each time).
+    // Our shaders' figures for the drawn rows, measured in one go before the submission's (one
+    // context for ours, one for theirs: switching per row rebuilt both and traced the reference
+    // again each time).
     std::map<std::size_t, std::map<std::string, double>> ours;
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const RenderRequest& q = cases[k].request;
-        if (!q.displaceSeed || q.overlay.empty()) continue;
+        if (cases[k].view != "drawn" || q.overlay.empty()) continue;
         RenderRequest shipped = q;
         shipped.overlay.clear();
         rig.prepare(shipped);
@@ -306,12 +310,14 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
     const DrawnRow* drawn = request.displaceSeed && !r.expectation.exact
                                 ? drawnRowFor(r.stage, r.scene, r.tree, r.parameters)
                                 : nullptr;
+    const Expectation& lesson = *r.expectation.entry;
     const std::map<std::string, double> theirs = r.figureMap();
-    const std::map<std::string, double>& ours = shipped ? *shipped : theirs;
-    Judgement j = drawn ? judgeDrawn(*drawn, drawnValues(*drawn, r.parameters), theirs, ours)
-                  : request.displaceSeed  // without a submission's overlay, ours are measured
-                      ? judgeDisplaced(*r.expectation.entry, theirs, ours)
-                      : judge(*r.expectation.entry, theirs);
+    Judgement j = drawn ? judgeDrawn(*drawn, drawnValues(*drawn, r.parameters), theirs,
+                                     shipped ? *shipped : theirs)
+                  : request.displaceSeed
+                      ? judgeDisplaced(lesson, theirs,
+                                       displacedFiguresOf(r.stage, r.tree, lesson.label()))
+                      : judge(lesson, theirs);
     r.status = j.status;
     r.message = j.message;
     if (!r.expectation.exact && !drawn)

@@ -62,9 +62,10 @@ CheckResult checkResultFor(const RenderRequest& request);
 // goes to stderr and the rig is reset.
 // Other failures propagate (bad input: UsageError; GL: std::runtime_error).
 // A displaced case (RenderRequest::displaceSeed) is judged against the wider of the lesson's
-// bounds and `shipped`, our shipped shaders' figures in the same view (the case's own when null);
-// one whose settings no lesson names but a drawn row covers (the seed's, or the same given with
-// --set) is held to `shipped` alone, within the row's tolerance (judgeDrawn).
+// bounds and the solution's figures in displaced views (data: stages/displaced_bounds.h); one
+// whose settings no lesson names but a drawn row covers (the seed's, or the same given with
+// --set) is held to `shipped`, our shaders' figures at the same values and view, within the
+// row's tolerance (judgeDrawn; the case's own figures when null).
 // `pictures` says which are written once the row is judged (RowPictures below): with the
 // render and the truth's shading (the mirror: our stencil reflection) beside the diff image
 // (DIFF.render.png, DIFF.truth.png), a feedback page shows the three side by side.

@@ -36,19 +36,23 @@ Judgement judge(const Expectation& e, const std::map<std::string, double>& figur
 }
 
 Judgement judgeDisplaced(const Expectation& e, const std::map<std::string, double>& theirs,
-                         const std::map<std::string, double>& ours) {
+                         const DisplacedFigures* ours) {
     Expectation widened = e;
     bool wider = false;
     for (Limit& l : widened.limits) {
-        auto found = ours.find(l.figure);
-        if (found == ours.end() || std::isnan(found->second)) continue;
-        double v = found->second, slack = std::max(0.5, 0.25 * std::abs(v));
-        if (!std::isnan(l.max) && v + slack > l.max) l.max = v + slack, wider = true;
-        if (!std::isnan(l.min) && v - slack < l.min) l.min = v - slack, wider = true;
+        auto found = ours ? ours->find(l.figure) : DisplacedFigures::const_iterator();
+        if (!ours || found == ours->end()) continue;
+        const FigureRange& range = found->second;
+        auto slack = [](double v) { return std::max(0.5, 0.25 * std::abs(v)); };
+        const double high = range.highest + slack(range.highest);
+        const double low = range.lowest - slack(range.lowest);
+        if (!std::isnan(l.max) && high > l.max) l.max = high, wider = true;
+        if (!std::isnan(l.min) && low < l.min) l.min = low, wider = true;
     }
     Judgement j = judge(widened, theirs);
     if (wider)
-        j.message += " [displaced view: bounds widened to our shipped shaders' figures here]";
+        j.message +=
+            " [displaced view: bounds widened to the solution's figures in displaced views]";
     return j;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "grade/status.h"
+#include "stages/displaced_bounds.h"
 #include "stages/drawn.h"
 #include "stages/expectations.h"
 
@@ -22,11 +23,12 @@ Judgement judge(const Expectation& e, const std::map<std::string, double>& figur
 // A displaced view is one nobody chose: its casters, light and camera may land where a lesson's
 // bounds, measured over the curated views, are out of reach for any method (a shadow stretched
 // at a grazing angle has a staircase edge wider than two pixels). There the submission is held
-// to the lesson's bounds or to what our shipped shaders measure in the same view (`ours`: a
-// quarter more, at least 0.5), whichever is wider: a shader that follows the map matches ours,
-// one that hard-codes the scene misses by tens of pixels and percent.
+// to the lesson's bounds or to what the solution measures over displaced views (`ours`, shipped
+// as data: stages/displaced_bounds.h; its extreme a quarter further, at least 0.5), whichever is
+// wider. The same data at home and in the grader: a student edition judges as `grade` does.
+// Null `ours`: the lesson's bounds alone.
 Judgement judgeDisplaced(const Expectation& e, const std::map<std::string, double>& theirs,
-                         const std::map<std::string, double>& ours);
+                         const DisplacedFigures* ours);
 
 // A row whose settings the seed drew (stages/drawn.h) has no lesson bounds of its own: each
 // figure the row's tolerance names is held to ours at the same values and view, within

@@ -150,9 +150,15 @@ StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
         if (bad) {
             st.message = bad->message;
         } else {
-            int shown = 0;
-            for (const RowRecord& row : st.rows) shown += earnsPoints(row.status());
-            st.message = std::to_string(shown) + " of " + std::to_string(st.rows.size()) +
+            // A student reads it: their rows only (a hidden stage is the instructor's: all).
+            int shown = 0, counted = 0;
+            for (const RowRecord& row : st.rows) {
+                if (st.visibility != "hidden" && !seenByStudent(st, row)) continue;
+                ++counted;
+                shown += earnsPoints(row.status());
+            }
+            st.message = std::to_string(shown) + " of " + std::to_string(counted) +
+                         (counted < int(st.rows.size()) ? " visible" : "") +
                          " checks show the lesson";
         }
     }
@@ -184,6 +190,26 @@ StageRecord stageRecord(const StagePlan& p, const std::vector<CheckResult>* got,
         for (std::string& note : row.result.sourceNotes) note = shown(std::move(note));
     }
     return st;
+}
+
+bool seenByStudent(const StageRecord& st, const RowRecord& row) {
+    return st.visibility != "hidden" && row.visibility != "hidden";
+}
+
+SeenStage seenStage(const StageRecord& st) {
+    SeenStage out;
+    for (const RowRecord& row : st.rows) {
+        if (!seenByStudent(st, row)) {
+            ++out.hidden;
+            continue;
+        }
+        ++out.seen;
+        out.shown += earnsPoints(row.status());
+        out.points += row.points;
+        out.maxPoints += row.maxPoints;
+        out.status = worst(out.status, row.status());
+    }
+    return out;
 }
 
 StudentRecord buildRecord(const GradingPlan& plan, const StudentWork& s,
@@ -257,6 +283,32 @@ RowCounts countRows(const StudentRecord& r) {
     return c;
 }
 
+// A name that is not UTF-8 (a hand-in folder named by an old zip tool in Latin-1) is kept in
+// the record as its bytes in hex beside its escaped text: JSON holds text only, and a record must
+// be found again under the exact name its hand-in has (or it is "no record" on every run).
+static std::string hexOf(const std::string& bytes) {
+    static const char* digits = "0123456789abcdef";
+    std::string out;
+    for (unsigned char c : bytes) {
+        out += digits[c >> 4];
+        out += digits[c & 15];
+    }
+    return out;
+}
+
+static std::string bytesOf(const std::string& hex) {
+    auto value = [](char c) {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+        throw std::invalid_argument("student_bytes: not lower-case hex");
+    };
+    if (hex.size() % 2) throw std::invalid_argument("student_bytes: an odd number of digits");
+    std::string out;
+    for (std::size_t i = 0; i < hex.size(); i += 2)
+        out += char(value(hex[i]) * 16 + value(hex[i + 1]));
+    return out;
+}
+
 static json adjustmentsJson(const std::vector<Adjustment>& adjustments) {
     json out = json::array();
     for (const Adjustment& a : adjustments)
@@ -294,7 +346,8 @@ json recordJson(const StudentRecord& r) {
     return {{"tool", r.tool},
             {"report_version", 2},
             {"assignment", r.assignment},
-            {"student", r.student},
+            {"student", validUtf8(r.student) == r.student ? r.student : escapedName(r.student)},
+            {"student_bytes", validUtf8(r.student) == r.student ? json() : json(hexOf(r.student))},
             {"status", statusName(r.status())},
             {"exit_code", r.exitCode()},
             {"error", r.error.empty() ? json() : json(r.error)},
@@ -337,6 +390,8 @@ StudentRecord recordFromJson(const json& j) {
         r.tool = j.at("tool").get<std::string>();
         r.assignment = j.at("assignment").get<std::string>();
         r.student = j.at("student").get<std::string>();
+        if (j.contains("student_bytes") && j["student_bytes"].is_string())
+            r.student = bytesOf(j["student_bytes"].get<std::string>());
         if (j.at("error").is_string()) r.error = j["error"].get<std::string>();
         r.notes = j.at("notes").get<std::vector<std::string>>();
         r.files = j.at("files").get<std::vector<std::string>>();

@@ -90,6 +90,19 @@ struct StudentRecord {
     bool graded() const { return status() != Status::NotGraded; }
 };
 
+// A stage as its student sees it: the rows neither hidden themselves nor in a hidden stage, their
+// worst status, points and how many show the lesson. A count with hidden rows in it (a stage's
+// "7 of 21 checks" beside 18 rows shown) would give their verdicts away, so whatever a student
+// reads (the stage's message, their page) counts these only.
+struct SeenStage {
+    Status status = Status::Pass;  // PASS when no row is seen
+    double points = 0, maxPoints = 0;
+    int seen = 0, shown = 0;  // rows seen; of them, rows that show the lesson (earn points)
+    int hidden = 0;           // rows left out
+};
+bool seenByStudent(const StageRecord& st, const RowRecord& row);
+SeenStage seenStage(const StageRecord& st);
+
 // A stage's record from its plan and, when it was rendered, its job's results (`got`; a job
 // that gave no results is one row, whose status every row takes). MISSING stages need none.
 // Messages lose the private snapshot's path (`overlay`): they name the student's own files.

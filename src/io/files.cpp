@@ -152,27 +152,42 @@ int writeUnnamed(const std::string& path, const void* data, std::size_t size, mo
 
 }  // namespace
 
+namespace {
+
+// The error's text, with errno left at `error` for the caller (diskFull(errno)).
+std::string failed(const std::string& path, int error) {
+    std::string text = failure(path, std::strerror(error));
+    errno = error;
+    return text;
+}
+
+}  // namespace
+
 std::string writeFileAtomically(const std::string& path, const void* data, std::size_t size) {
     if (std::string err = outputPathProblem(path); !err.empty()) return err;
     mode_t mask = ::umask(0);
     ::umask(mask);
     int error = writeUnnamed(path, data, size, 0666 & ~mask);
-    if (error > 0) return failure(path, std::strerror(error));
+    if (error > 0) return failed(path, error);
     if (error == 0) return {};
     // No O_TMPFILE here: mkstemp creates the name with O_EXCL, so a planted file or symlink at
     // a guessed temporary name makes it pick another, never write through it.
     std::string tmp = path + ".tmpXXXXXX";
     int fd = ::mkostemp(tmp.data(), O_CLOEXEC);
-    if (fd < 0) return failure(path, std::strerror(errno));
+    if (fd < 0) return failed(path, errno);
     ::fchmod(fd, 0666 & ~mask);  // mkstemp's 0600 would make outputs unreadable to others
     error = writeAll(fd, static_cast<const char*>(data), size);
     if (::close(fd) != 0 && !error) error = errno;
     if (!error && std::rename(tmp.c_str(), path.c_str()) != 0) error = errno;
     if (error) {
         ::unlink(tmp.c_str());
-        return failure(path, std::strerror(error));
+        return failed(path, error);
     }
     return {};
+}
+
+bool diskFull(int error) {
+    return error == ENOSPC || error == EDQUOT;
 }
 
 std::string writeTextFile(const std::string& path, const std::string& text) {
@@ -188,7 +203,11 @@ std::string printable(const std::string& text) {
     return out;
 }
 
-std::string validUtf8(const std::string& text) {
+namespace {
+
+// `text` with each byte that is not part of valid UTF-8 replaced by `bad(byte)`.
+template <class Bad>
+std::string keptUtf8(const std::string& text, Bad bad) {
     std::string out;
     out.reserve(text.size());
     std::size_t i = 0, n = text.size();
@@ -214,11 +233,27 @@ std::string validUtf8(const std::string& text) {
             out.append(text, i, length);
             i += length;
         } else {
-            out += '?';
+            out += bad(static_cast<unsigned char>(text[i]));
             ++i;
         }
     }
     return out;
+}
+
+std::string hexByte(unsigned char c) {
+    char t[8];
+    std::snprintf(t, sizeof t, "\\x%02X", c);
+    return t;
+}
+
+}  // namespace
+
+std::string validUtf8(const std::string& text) {
+    return keptUtf8(text, [](unsigned char) { return std::string("?"); });
+}
+
+std::string escapedName(const std::string& name) {
+    return keptUtf8(name, hexByte);
 }
 
 namespace {

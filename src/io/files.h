@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <stdexcept>
 #include <string>
 
 namespace sl {
@@ -28,6 +29,17 @@ std::string outputPathProblem(const std::string& path);
 // (mkstemp). Never through an existing name or link; every write and close checked; on failure
 // nothing is left. Returns "" or the error.
 std::string writeFileAtomically(const std::string& path, const void* data, std::size_t size);
+// (On failure errno is the cause: diskFull(errno) tells a full disk from a refused path.)
+
+// ENOSPC or EDQUOT: the machine's disk or quota is full, never the input's fault.
+bool diskFull(int error);
+
+// A write that failed for want of space: the machine's failure (exit 3), said in one line that
+// names the file; what was written before stays whole (every output is written atomically).
+class DiskFullError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
 
 // Writes text atomically, as writeFileAtomically does.
 std::string writeTextFile(const std::string& path, const std::string& text);
@@ -45,6 +57,11 @@ std::string printable(const std::string& text);
 
 // `text` with every byte that is not part of valid UTF-8 replaced by '?'.
 std::string validUtf8(const std::string& text);
+
+// A name as the file system gave it, any bytes, in text that says which: valid UTF-8 kept,
+// every other byte as \xNN ("caf\xE9" for Latin-1 "café"), so two names that differ in one
+// byte are told apart on a page or in a gradebook (which then treat it as any text).
+std::string escapedName(const std::string& name);
 
 // A file name as a message shows it: valid UTF-8, every control character (newline and tab
 // included) as '?', so that a name from a student's folder keeps a message on one line.

@@ -55,6 +55,11 @@ class Stage {
     virtual void render(FrameContext& frame) = 0;
     // A readable account of the matrices and choices of the last frame (`render --explain`).
     virtual std::string explain() const { return {}; }
+    // The programs of the stage's own folder (shaders_*/<id>/<pass>.vert, .frag) its final
+    // picture draws with under `params`, told without drawing (no GL): `release` and `grade`
+    // find from it, before rendering anything, a marked file a graded row needs that the
+    // assignment does not list. Empty: only drawing tells (the check after grading catches it).
+    virtual std::vector<std::string> passes(const ParamSet&) const { return {}; }
 };
 
 struct StageInfo {

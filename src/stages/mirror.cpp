@@ -32,6 +32,13 @@ double msSince(Clock::time_point start) {
 
 class MirrorStage : public Stage {
   public:
+    // The lit pass, the map's when shadows are on, and the mirror's surface (drawn in every view
+    // the mirror faces: the graded views are chosen to show it).
+    std::vector<std::string> passes(const ParamSet& p) const override {
+        std::vector<std::string> out = {"lit", "surface"};
+        if (p.is("shadows", "on")) out.push_back("shadow");
+        return out;
+    }
     void render(FrameContext& f) override {
         notes_.clear();
         explanation_.clear();

@@ -25,6 +25,10 @@ class ShadowStage : public Stage {
     // Built on demand from the last frame's map (formatting it every frame cost ~150,000
     // instructions a frame, callgrind).
     std::string explain() const override;
+    // Its map's pass and its lit pass (litPass), every frame.
+    std::vector<std::string> passes(const ParamSet& p) const override {
+        return {"shadow", litPass(p)};
+    }
 
   protected:
     virtual ShadowMapSettings settings(const ParamSet& p) const = 0;

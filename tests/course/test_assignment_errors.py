@@ -3,7 +3,8 @@
 file, the JSON path and the line of what is wrong (or the line and column of a syntax error):
 its syntax, types and ranges, any number JSON can hold, and what it may not mean (a degenerate
 extra view, a due stage that can earn nothing); `release` refuses what it cannot release (a
-stage without solution regions, an instructor's trees in the wrong layout) before grading.
+stage without solution regions, an instructor's trees in the wrong layout, a marked file a graded
+row draws with that the stage does not list) before grading.
 usage: test_assignment_errors.py SHADOWLAB WORKDIR"""
 import os, shutil, subprocess, sys
 
@@ -100,6 +101,18 @@ for k, (text, out, want) in enumerate(release_cases):
     open(path, "w").write(text)
     expect("release %d" % k, ["release", "--assignment", path, "--out", out], "", want)
     assert not os.path.exists(work + "/out"), "release %d wrote its folder" % k
+# A marked file a graded row draws with but the stage does not list (hardware's pcf3x3 lesson
+# draws with lit_pcf3x3.frag, weighted 1 by default) is seen from the files alone: refused before
+# the solution is rendered (issue 39: it took the solution's grading, 43-80 s, to find it).
+import time
+path = work + "/unlisted.json"
+open(path, "w").write('{"name": "x", "stages": [\n {"stage": "hardware", "files": ["hardware/lit.frag"], "points": 5}]}')
+start = time.monotonic()
+expect("unlisted", ["release", "--assignment", path, "--out", work + "/out"], path,
+       "/stages/0/files (line 2): hardware/lit_pcf3x3.frag (the shipped shaders) holds a solution region")
+took = time.monotonic() - start
+assert took < 3 and not os.path.exists(work + "/out"), ("found after %.1f s" % took)
+print("ok: the unlisted marked file found in %.2f s, before any rendering" % took)
 expect("solutions", ["release", "--assignment", work + "/r0.json", "--out", work + "/out",
                      "--solutions", work + "/s"], "--solutions", "holds neither shaders_core/ nor shaders_legacy/")
 print("course_assignment_errors: ok")

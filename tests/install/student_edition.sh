@@ -57,6 +57,26 @@ out=$(run check --assignment "$tmp/two.json" --shaders "$tmp/handin" --time-limi
   fail "a correct hand-in is not graded full marks in the student edition: $out"
 python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); assert r["score"] == r["max_score"] == 20, r["score"]' \
   "$tmp/two-report.json" || fail "no full marks: $out"
+# One grading truth (issue 39): a corpus of hand-ins checked at home with the student edition,
+# then checked and graded with the instructor's install, at one seed: the same verdict on every
+# row and the same points (the untouched starter 0 in each; a shader that knows the fixed cameras
+# loses its displaced row in each). The displaced rows' bounds are data measured on the solution
+# (src/stages/displaced_bounds.json), not measured on the installed (here stubbed) shaders.
+seed=4242
+for who in starter correct known_eyes; do mkdir -p "$tmp/corpus/$who/margin"; done
+cp "$data/shaders_core/margin/lit.frag" "$tmp/corpus/starter/margin/"
+cp "$src/shaders_core/margin/lit.frag" "$tmp/corpus/correct/margin/"
+cp "$src/tests/students/margin_game_known_eyes/margin/lit.frag" "$tmp/corpus/known_eyes/margin/"
+corpus_check() {  # corpus_check LABEL: each hand-in checked into $tmp/LABEL-NAME.json
+  for who in starter correct known_eyes; do
+    set +e
+    run check --assignment "$tmp/margin.json" --shaders "$tmp/corpus/$who" --seed $seed \
+      --time-limit 300 --report "$tmp/$1-$who.json" >/dev/null 2>&1
+    set -e
+    [ -f "$tmp/$1-$who.json" ] || fail "check of $who ($1) wrote no report"
+  done
+}
+corpus_check home
 # Nothing to release from: the edition has no solution regions.
 set +e
 run release --assignment "$tmp/margin.json" --out "$tmp/rel" >/dev/null 2>"$tmp/err"
@@ -67,7 +87,30 @@ set -e
 # The instructor's install: the solutions component beside it is what the program draws with.
 cmake --install "$build" --prefix "$tmp/p" --component solutions >/dev/null
 [ -f "$data/solutions/shaders_legacy/margin/lit.frag" ] || fail "the solutions component is not installed"
+# Where docs/assignment.md ("Gradescope") says the source kit lands is where it is.
+kit=$(tr '\n' ' ' <"$src/docs/assignment.md" | grep -o 'installs the kit into `[^`]*`' | head -1 | cut -d'`' -f2)
+[ -n "$kit" ] && [ -f "$tmp/p/$kit/CMakeLists.txt" ] ||
+  fail "docs/assignment.md says the source kit is installed into '$kit': not there"
 out=$(run check --stage margin --time-limit 300) || fail "check --stage margin with the solutions: $out"
+corpus_check instructor
+run grade "$tmp/corpus" --assignment "$tmp/margin.json" --out "$tmp/graded" --seed $seed \
+  --time-limit 300 >/dev/null || fail "grade of the corpus with the solutions"
+python3 - "$tmp" <<'PY' || fail "the student edition does not judge as the grader"
+import json, sys
+tmp = sys.argv[1]
+def rows(path):
+    r = json.load(open(path))
+    return r["score"], {(x["stage"], x["tree"], x["view"], x["lesson"]): (x["verdict"], x["points"])
+                        for st in r["stages"] for x in st["rows"]}
+want = {"starter": lambda s: s == 0, "correct": lambda s: s == 10, "known_eyes": lambda s: 0 < s < 10}
+for who, ok in want.items():
+    home, mine = rows(f"{tmp}/home-{who}.json"), rows(f"{tmp}/instructor-{who}.json")
+    graded = rows(f"{tmp}/graded/students/{who}.json")
+    assert home == mine == graded, (who, home, mine, graded)
+    assert ok(home[0]), (who, home[0])
+    assert any(v == "displaced" for (_, _, v, _) in home[1]), who
+    print(f"{who}: {home[0]} of 10 at home, with the solutions and graded ({len(home[1])} rows)")
+PY
 run release --assignment "$tmp/margin.json" --out "$tmp/rel" --time-limit 300 >/dev/null ||
   fail "release with the solutions component"
 grep -q "TODO" "$tmp/rel/shaders/margin/lit.frag" || fail "the release is not stubbed"

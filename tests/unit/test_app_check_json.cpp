@@ -179,6 +179,7 @@ StudentRecord twoStages() {
 TEST(CheckFormats, GradescopeShowsVisibleRowsOnlyInItsAlwaysVisibleOutput) {
     nlohmann::json g = gradescopeResults(twoStages());
     EXPECT_EQ(g["score"], 4.0);
+    EXPECT_EQ(g["max_score"], 12.0);  // docs/assignment.md, "Gradescope": at the top level
     ASSERT_EQ(g["tests"].size(), 6u);
     EXPECT_EQ(g["tests"][0]["status"], "passed");
     EXPECT_EQ(g["tests"][1]["status"], "failed");
@@ -226,6 +227,20 @@ TEST(Record, RoundTripsThroughItsJson) {
     EXPECT_EQ(j["summary"]["failed"], 2);
     EXPECT_EQ(j["summary"]["errors"], 2);
     EXPECT_THROW(recordFromJson(nlohmann::json{{"report_version", 1}}), std::invalid_argument);
+}
+
+// A hand-in name that is not UTF-8 comes back byte for byte (the record is found again under it:
+// never "no record (its job failed)"), shown escaped in the record's text (issue 39).
+TEST(Record, ANameThatIsNotUtf8RoundTrips) {
+    StudentRecord rec = twoStages();
+    rec.student = "caf\xe9 \xff";
+    nlohmann::json j = recordJson(rec);
+    EXPECT_EQ(j["student"], "caf\\xE9 \\xFF");
+    EXPECT_EQ(j["student_bytes"], "636166e920ff");
+    const std::string text = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::strict);
+    EXPECT_EQ(recordFromJson(nlohmann::json::parse(text)).student, rec.student);
+    rec.student = "ann";
+    EXPECT_TRUE(recordJson(rec)["student_bytes"].is_null());
 }
 
 }  // namespace

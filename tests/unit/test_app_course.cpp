@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 #include "course/assignment.h"
 #include "course/class_progress.h"
@@ -10,6 +12,7 @@
 #include "course/html_text.h"
 #include "course/json_lines.h"
 #include "course/release.h"
+#include "grade/record.h"
 
 namespace sl {
 namespace {
@@ -287,6 +290,73 @@ TEST(StudentPage, AHiddenStageIsNotShown) {
     EXPECT_EQ(page.find("margin/core"), std::string::npos) << page;
     EXPECT_EQ(page.find("0 of 5 checks"), std::string::npos) << page;
     EXPECT_NE(page.find("1 more stage is graded but hidden"), std::string::npos) << page;
+}
+
+// Hidden rows are counted nowhere a student sees (issue 39): "1 of 3 checks" beside two rows
+// shown, one of them passing, would say the hidden row failed; so would its points in the
+// stage's header or a count of hidden rows beside the total.
+TEST(StudentPage, HiddenRowsAreCountedNowhere) {
+    StagePlan plan;
+    plan.stage = "rgb";
+    plan.tree = "core";
+    std::vector<CheckResult> results;
+    for (const char* visibility : {"visible", "after_due_date", "hidden"}) {
+        RowPlan row;
+        row.check.view = std::string("view-") + visibility;
+        row.points = 5;
+        row.visibility = visibility;
+        plan.rows.push_back(row);
+        CheckResult r;
+        r.stage = "rgb";
+        r.tree = "core";
+        r.status = results.empty() ? Status::Pass : Status::Fail;
+        results.push_back(r);
+    }
+    StudentRecord rec;
+    rec.student = "ann";
+    rec.stages = {stageRecord(plan, &results, "")};
+    EXPECT_EQ(rec.stages[0].message, "1 of 2 visible checks show the lesson");
+    const SeenStage seen = seenStage(rec.stages[0]);
+    EXPECT_EQ(seen.seen, 2);
+    EXPECT_EQ(seen.hidden, 1);
+    EXPECT_DOUBLE_EQ(seen.maxPoints, 10);
+    const std::string page = studentPage(rec);
+    EXPECT_NE(page.find("1 of 2 visible checks"), std::string::npos) << page;
+    EXPECT_NE(page.find("rgb/core: 5.00 of 10.00 points"), std::string::npos) << page;
+    EXPECT_EQ(page.find("of 15.00 points"), std::string::npos) << page;  // with the hidden row
+    EXPECT_EQ(page.find("view-hidden"), std::string::npos) << page;
+    EXPECT_EQ(page.find(" more checks"), std::string::npos) << page;  // no count of them
+    EXPECT_NE(page.find("graded but hidden"), std::string::npos) << page;
+}
+
+// The release's README tells a student how to install shadowlab and, when the assignment has
+// one, its late policy (issue 39: a class charged late without having been told how).
+TEST(ReleaseReadme, SaysHowToInstallAndTheLatePolicy) {
+    const char* text =
+        R"({"name": "lab", "stages": [{"stage": "margin", "files": ["margin/lit.frag"],
+      "points": 10}], "late": {"deadline": "2026-12-04T23:59:00+01:00", "grace_minutes": 15,
+      "penalty_per_day": 10, "cap": 30}})";
+    const std::string dir = ::testing::TempDir() + "/release-readme";
+    std::filesystem::remove_all(dir);
+    writeRelease(parseAssignment(text, "lab.json"), {}, dir);
+    std::ifstream in(dir + "/README.md");
+    std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(readme.find("## Install shadowlab"), std::string::npos) << readme;
+    EXPECT_NE(readme.find("cmake --install build --prefix"), std::string::npos) << readme;
+    EXPECT_NE(readme.find("Deadline: 2026-12-04T23:59:00+01:00, with 15 minutes of grace. After "
+                          "it, each day or part of a day costs 10 % of the assignment's points, "
+                          "at most 30 % in all"),
+              std::string::npos)
+        << readme;
+    std::filesystem::remove_all(dir);
+    const char* onTime = R"({"name": "lab", "stages": [{"stage": "margin",
+      "files": ["margin/lit.frag"], "points": 10}]})";
+    writeRelease(parseAssignment(onTime, "lab.json"), {}, dir);
+    std::ifstream again(dir + "/README.md");
+    readme.assign((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(readme.find("Late policy"), std::string::npos) << readme;
+    EXPECT_NE(readme.find("## Install shadowlab"), std::string::npos) << readme;
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // picks the exact entry or falls back to the defaults, and judging reads the limits right.
 #include <gtest/gtest.h>
 
+#include "stages/displaced_bounds.h"
 #include "stages/expectations.h"
 #include "stages/registry.h"
 #include "stages/stage.h"
@@ -87,6 +88,33 @@ TEST(Expectations, MistakesNameTheEntry) {
                 "stage fixed (legacy) needs one entry");
     expectError("{\"expectations\": 3}", "needs an \"expectations\" list");
     expectError("{", "not valid JSON");
+}
+
+// The displaced views' bounds are data measured on the solution (stages/displaced_bounds.h):
+// every lesson graded in a displaced view (a stage without a mirror, in its own scene) has the
+// solution's range of each figure it bounds, or a student edition would judge it by the lesson's
+// bounds alone while a grader with the solutions could not tell (rerun
+// scripts/measure_displaced_bounds.py when a lesson or a stage's shaders change).
+TEST(DisplacedBounds, EveryDisplacedLessonHasTheSolutionsFigures) {
+    int lessons = 0;
+    for (const StageInfo& info : stageRegistry()) {
+        if (info.needsMirror) continue;
+        for (const char* tree : {"core", "legacy"}) {
+            if (info.legacyOnly && std::string(tree) == "core") continue;
+            for (const Expectation* e : lessonsOf(expectations(), info.id, tree)) {
+                if (!e->scene.empty() && e->scene != defaultSceneOf(info.id)) continue;
+                const DisplacedFigures* ours = displacedFiguresOf(info.id, tree, e->label());
+                ++lessons;
+                ASSERT_NE(ours, nullptr) << info.id << "/" << tree << "/" << e->label();
+                for (const Limit& l : e->limits) {
+                    auto found = ours->find(l.figure);
+                    ASSERT_NE(found, ours->end()) << e->label() << ": " << l.figure;
+                    EXPECT_LE(found->second.lowest, found->second.highest) << e->label();
+                }
+            }
+        }
+    }
+    EXPECT_GE(lessons, 10);
 }
 
 }  // namespace

@@ -121,6 +121,14 @@ TEST(Text, PrintableNameHasNoControlCharactersAtAll) {
     EXPECT_EQ(printableName("st\nu\tde\x1b[2Jnt\xff"), "st?u?de?[2Jnt?");
 }
 
+// A name as the file system gave it (Latin-1 from an old zip tool) shown escaped, byte by byte:
+// two names one byte apart stay two names on a page (issue 39).
+TEST(Text, EscapedNameShowsEveryByteThatIsNotUtf8) {
+    EXPECT_EQ(escapedName("caf\xe9"), "caf\\xE9");
+    EXPECT_NE(escapedName("caf\xe9"), escapedName("caf\xe8"));
+    EXPECT_EQ(escapedName("\xc3\xa9t\xc3\xa9"), "\xc3\xa9t\xc3\xa9");  // UTF-8 "été" kept
+}
+
 // The file is written unnamed (O_TMPFILE) and linked only when whole: no temporary name ever
 // appears in the folder, and a planted file at a likely temporary name is not touched.
 TEST(WriteFileAtomically, LeavesPlantedTemporaryNamesAlone) {

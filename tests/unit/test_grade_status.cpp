@@ -60,12 +60,31 @@ TEST(Judge, ReadsBothSidesAndNaN) {
 TEST(Judge, ADisplacedViewIsHeldToOursWhenTheBoundIsOutOfReach) {
     Expectation e;
     e.outcome = "correct";
-    e.limits = {{"edge_p95_px", NAN, 2}};
-    // Ours measure 6 px here: theirs may be a quarter more, and no more.
-    EXPECT_EQ(judgeDisplaced(e, {{"edge_p95_px", 7.4}}, {{"edge_p95_px", 6}}).status, Status::Pass);
-    EXPECT_EQ(judgeDisplaced(e, {{"edge_p95_px", 7.6}}, {{"edge_p95_px", 6}}).status, Status::Fail);
-    // Where ours meet the bound, the bound stands.
-    EXPECT_EQ(judgeDisplaced(e, {{"edge_p95_px", 2.4}}, {{"edge_p95_px", 1}}).status, Status::Fail);
+    e.limits = {{"edge_p95_px", NAN, 2}, {"false_shadow_speckle_pct", 40, NAN}};
+    // The solution measured 6 px at most over displaced views: theirs may be a quarter more.
+    DisplacedFigures ours = {{"edge_p95_px", {3, 6}}};
+    EXPECT_EQ(
+        judgeDisplaced(e, {{"edge_p95_px", 7.4}, {"false_shadow_speckle_pct", 50}}, &ours).status,
+        Status::Pass);
+    EXPECT_EQ(
+        judgeDisplaced(e, {{"edge_p95_px", 7.6}, {"false_shadow_speckle_pct", 50}}, &ours).status,
+        Status::Fail);
+    // Where ours meet the bound, the bound stands; without data, the lesson's bounds alone.
+    DisplacedFigures within = {{"edge_p95_px", {0.5, 1}}};
+    EXPECT_EQ(
+        judgeDisplaced(e, {{"edge_p95_px", 2.4}, {"false_shadow_speckle_pct", 50}}, &within).status,
+        Status::Fail);
+    EXPECT_EQ(
+        judgeDisplaced(e, {{"edge_p95_px", 2.4}, {"false_shadow_speckle_pct", 50}}, nullptr).status,
+        Status::Fail);
+    // A lower bound widens to the lowest the solution measured, less a quarter.
+    DisplacedFigures speckle = {{"false_shadow_speckle_pct", {20, 60}}};
+    EXPECT_EQ(judgeDisplaced(e, {{"edge_p95_px", 1}, {"false_shadow_speckle_pct", 15.5}}, &speckle)
+                  .status,
+              Status::Pass);
+    EXPECT_EQ(judgeDisplaced(e, {{"edge_p95_px", 1}, {"false_shadow_speckle_pct", 14.5}}, &speckle)
+                  .status,
+              Status::Fail);
 }
 
 }  // namespace
