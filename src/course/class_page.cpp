@@ -36,9 +36,9 @@ std::string copiesTables(const ClassCopies& copies, const std::vector<StudentRec
         pageOf[records[k].student] = pages[k];
     auto who = [&](const std::string& name) {
         auto it = pageOf.find(name);
-        return it == pageOf.end() ? esc(escapedName(name))
-                                  : "<a href=\"" + esc(it->second) + "\">" +
-                                        esc(escapedName(name)) + "</a>";
+        return it == pageOf.end()
+                   ? esc(escapedName(name))
+                   : "<a href=\"" + esc(it->second) + "\">" + esc(escapedName(name)) + "</a>";
     };
     std::ostringstream pairs, solution;
     std::size_t below = 0;

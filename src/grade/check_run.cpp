@@ -312,12 +312,12 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
                                 : nullptr;
     const Expectation& lesson = *r.expectation.entry;
     const std::map<std::string, double> theirs = r.figureMap();
-    Judgement j = drawn ? judgeDrawn(*drawn, drawnValues(*drawn, r.parameters), theirs,
-                                     shipped ? *shipped : theirs)
-                  : request.displaceSeed
-                      ? judgeDisplaced(lesson, theirs,
-                                       displacedFiguresOf(r.stage, r.tree, lesson.label()))
-                      : judge(lesson, theirs);
+    Judgement j =
+        drawn ? judgeDrawn(*drawn, drawnValues(*drawn, r.parameters), theirs,
+                           shipped ? *shipped : theirs)
+        : request.displaceSeed
+            ? judgeDisplaced(lesson, theirs, displacedFiguresOf(r.stage, r.tree, lesson.label()))
+            : judge(lesson, theirs);
     r.status = j.status;
     r.message = j.message;
     if (!r.expectation.exact && !drawn)

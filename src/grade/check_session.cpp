@@ -15,6 +15,7 @@
 #include "io/usage_error.h"
 #include "sandbox/private_dir.h"
 #include "scene/scene_json.h"
+#include "stages/drawn.h"
 #include "stages/registry.h"
 #include "stages/stage.h"
 
@@ -311,6 +312,18 @@ int runStageCheck(const StageCheckArgs& a) {
         work.files = submission.files;
         work.notes = submission.notes;
         work.hash = submission.hash;
+    }
+    // A student edition cannot judge drawn rows (they compare with the solution's render at the
+    // drawn values): say so, rather than let a home check look like the grade.
+    if (!base.overlay.empty()) {
+        std::size_t drawn = 0;
+        for (const auto& r : requests)
+            if (isStudentEdition(r.tree)) drawn += drawnRowsOf(r.stage, treeName(r.tree)).size();
+        if (drawn > 0)
+            notes.push_back(std::to_string(drawn) + (drawn == 1 ? " row" : " rows") +
+                            " whose values the seed draws (the method's parameters) are judged "
+                            "by the grader only: they compare with the solution's render, which "
+                            "this student edition does not carry");
     }
     for (const auto& n : notes) std::cerr << "shadowlab: note: " << printable(n) << "\n";
     GradeSettings settings = a.settings;
