@@ -9,17 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "course/assignment_error.h"
 #include "grade/plan.h"
 #include "io/usage_error.h"
 #include "stages/request.h"
 
 namespace sl {
-
-// A malformed assignment file: exit 2, one line "FILE: /json/path (line N): what".
-class AssignmentError : public UsageError {
-  public:
-    using UsageError::UsageError;
-};
 
 // Gradescope's names: visible, hidden, after_due_date, after_published.
 const std::vector<std::string>& visibilityNames();

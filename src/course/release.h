@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "course/assignment.h"
+#include "course/solution_markers.h"
 
 namespace sl {
 
@@ -22,16 +23,6 @@ struct SolutionTrees {
 // `--solutions DIR` checked: a folder holding shaders_core/ or shaders_legacy/ (UsageError
 // otherwise). "" gives the shipped trees.
 SolutionTrees solutionTrees(const std::string& dir);
-
-// `text` with every region between "// BEGIN SOLUTION" and "// END SOLUTION" lines removed and
-// the "// STUB: " lines that follow the region turned into code (the prefix cut). A region
-// without STUB lines gets "// TODO: write this part". Throws AssignmentError naming `origin`
-// and the line on a marker out of place (unclosed, nested, END without BEGIN) and on any line
-// that looks like a marker without being the exact form ("//BEGIN SOLUTION", "/* BEGIN
-// SOLUTION */", "// begin solution", "// END-SOLUTION", "//STUB:", a marker after code...):
-// such a line would otherwise ship its region's solution. `solution` receives the removed lines.
-std::string stripSolutions(const std::string& text, const std::string& origin,
-                           std::vector<std::string>* solution = nullptr);
 
 // The files under `root`/`folder` (folder "" = the whole tree) that hold a solution region,
 // relative to `root`, sorted. Throws like stripSolutions on a malformed marker.
