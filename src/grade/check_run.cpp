@@ -132,23 +132,34 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
 std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCase>& cases,
                                        const std::function<std::string(const CheckCase&)>& diffPath,
                                        const std::function<void(const CheckResult&)>& progress) {
-    // Our shaders' figures for the drawn rows, measured in one go before the submission's (one
+    // Our shaders' figures in the seeded views (displaced and drawn rows, and an instructor's
+    // extra views of drawn rows), where our shaders are the solution: measured in one go (one
     // context for ours, one for theirs: switching per row rebuilt both and traced the reference
-    // again each time).
+    // again each time), once the submission's first rows have run (a shader that does not build
+    // ends the stage before: no render of ours in its worker). A student edition's shaders are
+    // stubs: its displaced rows are judged by the data alone, and it has no drawn rows.
+    auto needsOurs = [&](const CheckCase& c) {
+        return c.request.displaceSeed && !c.request.overlay.empty() &&
+               !isStudentEdition(c.request.tree);
+    };
     std::map<std::size_t, std::map<std::string, double>> ours;
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-        const RenderRequest& q = cases[k].request;
-        if (cases[k].view != "drawn" || q.overlay.empty()) continue;
-        RenderRequest shipped = q;
-        shipped.overlay.clear();
-        rig.prepare(shipped);
-        CheckResult mine;
-        mine.figures = rig.accuracy();
-        ours[k] = mine.figureMap();
-    }
+    bool measured = false;
+    auto measureOurs = [&] {
+        measured = true;
+        for (std::size_t k = 0; k < cases.size(); ++k) {
+            if (!needsOurs(cases[k])) continue;
+            RenderRequest shipped = cases[k].request;
+            shipped.overlay.clear();
+            rig.prepare(shipped);
+            CheckResult mine;
+            mine.figures = rig.accuracy();
+            ours[k] = mine.figureMap();
+        }
+    };
     std::vector<CheckResult> results;
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const CheckCase& c = cases[k];
+        if (!measured && needsOurs(c)) measureOurs();
         auto found = ours.find(k);
         CheckResult r = runCheck(rig, c.request, diffPath(c),
                                  found == ours.end() ? nullptr : &found->second, c.pictures);
@@ -316,7 +327,8 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         drawn ? judgeDrawn(*drawn, drawnValues(*drawn, r.parameters), theirs,
                            shipped ? *shipped : theirs)
         : request.displaceSeed
-            ? judgeDisplaced(lesson, theirs, displacedFiguresOf(r.stage, r.tree, lesson.label()))
+            ? judgeDisplaced(lesson, theirs, displacedFiguresOf(r.stage, r.tree, lesson.label()),
+                             request.overlay.empty() ? &theirs : shipped)
             : judge(lesson, theirs);
     r.status = j.status;
     r.message = j.message;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace sl {
 
@@ -36,13 +37,27 @@ Judgement judge(const Expectation& e, const std::map<std::string, double>& figur
 }
 
 Judgement judgeDisplaced(const Expectation& e, const std::map<std::string, double>& theirs,
-                         const DisplacedFigures* ours) {
+                         const DisplacedFigures* ours,
+                         const std::map<std::string, double>* oursHere) {
     Expectation widened = e;
     bool wider = false;
     for (Limit& l : widened.limits) {
-        auto found = ours ? ours->find(l.figure) : DisplacedFigures::const_iterator();
-        if (!ours || found == ours->end()) continue;
-        const FigureRange& range = found->second;
+        std::optional<FigureRange> known;
+        if (ours) {
+            auto found = ours->find(l.figure);
+            if (found != ours->end()) known = found->second;
+        }
+        if (oursHere) {
+            auto here = oursHere->find(l.figure);
+            if (here != oursHere->end() && !std::isnan(here->second)) {
+                const double v = here->second;
+                if (!known) known = FigureRange{v, v};
+                known->lowest = std::min(known->lowest, v);
+                known->highest = std::max(known->highest, v);
+            }
+        }
+        if (!known) continue;
+        const FigureRange& range = *known;
         auto slack = [](double v) { return std::max(0.5, 0.25 * std::abs(v)); };
         const double high = range.highest + slack(range.highest);
         const double low = range.lowest - slack(range.lowest);

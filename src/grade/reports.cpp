@@ -222,7 +222,6 @@ nlohmann::json gradescopeResults(const StudentRecord& r) {
                               {"stdout_visibility", "hidden"},
                               {"tests", tests}};
     if (r.graded()) results["score"] = r.total();  // after the late policy
-    results["max_score"] = r.maxScore;  // Gradescope's top level; the rows' sum when none
     return results;
 }
 

@@ -36,6 +36,9 @@ def data_folder(work):
     with open(os.path.join(HERE, "throwaway_expectation.json"), encoding="utf-8") as f:
         book["expectations"].append(json.load(f))
     os.makedirs(os.path.join(data, "src", "stages"))
+    for name in os.listdir(os.path.join(REPO, "src", "stages")):  # the other data files as shipped
+        if name.endswith(".json") and name != "expectations.json":
+            shutil.copy(os.path.join(REPO, "src", "stages", name), os.path.join(data, "src", "stages"))
     with open(os.path.join(data, "src", "stages", "expectations.json"), "w", encoding="utf-8") as f:
         json.dump(book, f, indent=1)
     return data
