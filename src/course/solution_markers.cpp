@@ -155,6 +155,10 @@ std::string stripSolutions(const std::string& text, const std::string& origin,
             if (!afterRegion) throw at("a STUB line not right after an END SOLUTION");
             std::string code = trimmed(line).substr(std::strlen(kStub));
             if (!code.empty() && code[0] == ' ') code.erase(0, 1);
+            // The code a STUB hands out is never a marker (or a look-alike, which markerOf
+            // refuses): the release would carry a line a later release reads as one (the fuzzer's
+            // find: "// STUB: // BEGIN SOLUTION").
+            if (markerOf(code, at) != Marker::None) throw at("a STUB line whose code is a marker");
             out << line.substr(0, line.find('/')) << code << "\n";
             sawStub = true;
             continue;

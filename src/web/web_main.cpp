@@ -11,7 +11,8 @@
 
 #include "math/orbit.h"
 #include "platform/webgl_context.h"
-#include "render/request.h"
+#include "stages/registry.h"
+#include "stages/request.h"
 #include "window/window_args.h"
 
 namespace {

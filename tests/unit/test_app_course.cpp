@@ -76,6 +76,21 @@ TEST(SolutionMarkers, LookAlikesRefuseNamingTheLine) {
     EXPECT_EQ(stripSolutions(prose, "f"), prose);
 }
 
+TEST(SolutionMarkers, AStubWhoseCodeIsAMarkerRefuses) {
+    // Found by fuzz_course_text: the release held a "// BEGIN SOLUTION" line of a STUB's code.
+    for (const char* code :
+         {"// BEGIN SOLUTION", "// END SOLUTION", "// STUB: x", "//BEGIN SOLUTION"})
+        EXPECT_THROW(
+            stripSolutions(
+                std::string("// BEGIN SOLUTION\nx = 1;\n// END SOLUTION\n// STUB: ") + code + "\n",
+                "m.frag"),
+            AssignmentError)
+            << code;
+    EXPECT_EQ(
+        stripSolutions("// BEGIN SOLUTION\nx = 1;\n// END SOLUTION\n// STUB: x = 0;\n", "m.frag"),
+        "x = 0;\n");
+}
+
 TEST(SolutionMarkers, StubInsideARegionRefuses) {
     EXPECT_THROW(stripSolutions("// BEGIN SOLUTION\n// STUB: x\n// END SOLUTION\n", "f"),
                  AssignmentError);
