@@ -74,6 +74,18 @@ std::string entryOf(const Assignment& a, const StageRecord& stage, const RowReco
     return "";
 }
 
+// A marked file that stage k of `a` draws with (lesson `lesson`) but does not list: the one
+// message of the static check and of the check after the solution's grading.
+AssignmentError unlistedMarked(const Assignment& a, std::size_t k, const std::string& file,
+                               const SolutionTrees& trees, const std::string& lesson) {
+    const AssignmentStage& s = a.stages[k];
+    return AssignmentError(a.at("/stages/" + std::to_string(k) + "/files") + ": " + file + " (" +
+                           trees.describe() + ") holds a solution region and " + s.stage + "/" +
+                           s.tree + " draws with it (lesson '" + lesson +
+                           "'), but it is not in the stage's files: students have only a stub "
+                           "of it; list it, or weigh that lesson 0");
+}
+
 // A marked file of a due stage's folder that the stage does not list but a graded row draws
 // with: students' copies of it are stubs (their release has none, the student edition stubs
 // it), so the row would grade our solution for them in the class and a stub at home.
@@ -87,12 +99,7 @@ void refuseUnlistedMarked(const Assignment& a, const SolutionTrees& trees,
             for (const RowRecord& row : st.rows)
                 for (const std::string& f : row.result.studentFiles) {
                     if (std::find(s.files.begin(), s.files.end(), f) != s.files.end()) continue;
-                    throw AssignmentError(
-                        a.at("/stages/" + std::to_string(k) + "/files") + ": " + f + " (" +
-                        trees.describe() + ") holds a solution region and " + s.stage + "/" +
-                        s.tree + " draws with it (lesson '" + row.result.lesson +
-                        "'), but it is not in the stage's files: students have only a stub of "
-                        "it; list it, or weigh that lesson 0");
+                    throw unlistedMarked(a, k, f, trees, row.result.lesson);
                 }
         }
     }
@@ -122,12 +129,7 @@ void refuseUnlistedMarkedByPlan(const Assignment& a, const SolutionTrees& trees,
                     for (const char* ext : {".vert", ".frag"}) {
                         const std::string f = s.stage + "/" + pass + ext;
                         if (!has(marked, f) || has(s.files, f)) continue;
-                        throw AssignmentError(
-                            a.at("/stages/" + std::to_string(k) + "/files") + ": " + f + " (" +
-                            trees.describe() + ") holds a solution region and " + s.stage + "/" +
-                            s.tree + " draws with it (lesson '" + row.check.lesson +
-                            "'), but it is not in the stage's files: students have only a stub "
-                            "of it; list it, or weigh that lesson 0");
+                        throw unlistedMarked(a, k, f, trees, row.check.lesson);
                     }
             }
         }
