@@ -30,10 +30,14 @@ void closeOnce(const char* how) {
     glutLeaveMainLoop();
 }
 
-// The window was destroyed under us (freeglut would go on without it).
+// The window was destroyed under us (freeglut would go on without it, and its teardown would
+// crash the driver): said once, then the application ends the process.
 bool windowGone() {
     if (windowStillExists()) return false;
-    closeOnce("destroyed from outside");
+    if (!leaving && events) {
+        closeOnce("destroyed from outside");
+        events->finishWithoutWindow();
+    }
     return true;
 }
 

@@ -23,6 +23,10 @@ class WindowEvents {
     // The window was closed from outside: `how` says by what ("the window manager's close",
     // "destroyed"). The loop ends after this.
     virtual void closed(const char* how) = 0;
+    // The window was destroyed under freeglut: returning from its loop would tear down the
+    // display (XCloseDisplay), which crashes Mesa 26's GLX on the vanished drawable (exit 139 or
+    // a heap abort). What the application does after its loop happens here, and the process ends.
+    [[noreturn]] virtual void finishWithoutWindow() = 0;
 };
 
 // Opens the window (width x height, full screen if asked) with its context current and GL's

@@ -25,6 +25,16 @@ constexpr int kPollMs = 100;  // shader files, trials and on-screen messages, 10
 // and xdotool failed with BadWindow.
 constexpr int kQuitAfterEscMs = 300;
 
+// Everything of ours is done (shots written, the state file renamed into place); what is left
+// is tearing down renderers, the driver and freeglut, and reaping a trial worker that may be
+// freeing gigabytes: the process ends now instead.
+[[noreturn]] void endProcess(int code) {
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    std::_Exit(code);
+}
+
 double secondsOf(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(t.time_since_epoch()).count();
 }
@@ -33,6 +43,7 @@ class WindowLoop : public WindowEvents {
   public:
     explicit WindowLoop(const WindowArgs& args) : args_(args) {}
     int run();
+    int finish();
 
     void display() override;
     void reshape(int w, int h) override {
@@ -63,6 +74,7 @@ class WindowLoop : public WindowEvents {
     void closed(const char* how) override {
         std::cerr << "shadowlab: the window was " << how << "; quitting" << std::endl;
     }
+    [[noreturn]] void finishWithoutWindow() override { endProcess(finish()); }
 
   private:
     static void quitNow(int);
@@ -245,9 +257,14 @@ int WindowLoop::run() {
         if (w > 0 && h > 0) session_->resized(w, h);
     }
     runWindowLoop(*this, kPollMs, args_.frames > 0);
+    return finish();
+}
+
+// What is left once the loop ends. The session is not taken down: the process ends
+// (endProcess), and with it a trial worker (it dies with the window's thread that forked it,
+// PR_SET_PDEATHSIG) and the context.
+int WindowLoop::finish() {
     session_->finishShots();
-    // The session is not taken down: the process ends (runWindow), and with it a trial worker
-    // (it dies with the window's thread that forked it, PR_SET_PDEATHSIG) and the context.
     return exitCode_;
 }
 
@@ -264,14 +281,7 @@ int runWindow(const WindowArgs& args) {
     // An unknown stage is a usage error before any display is opened (the session checks the
     // rest once it has a context: fixed runs legacy, mirror brings its scene).
     if (!findStage(args.request.stage)) validateRequest(args.request);
-    const int code = WindowLoop(args).run();
-    // Everything of ours is done (shots written, the state file renamed into place); what is
-    // left is tearing down renderers, the driver and freeglut, and reaping a trial worker that
-    // may be freeing gigabytes: Esc ends the process now instead.
-    std::cout.flush();
-    std::cerr.flush();
-    std::fflush(nullptr);
-    std::_Exit(code);
+    endProcess(WindowLoop(args).run());
 }
 
 }  // namespace sl

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Docs as tests: run the commands a markdown page shows and compare what it says they print.
+r"""Docs as tests: run the commands a markdown page shows and compare what it says they print.
 
 usage: run_docs.py --exe BUILD/shadowlab --repo ROOT [--long | --all] [--list] PAGE.md
 
