@@ -88,7 +88,7 @@ assert abs(full["score"] - full["max_score"]) < 0.01 and full["max_score"] > 0, 
 # 3. The window runs on the release: every due stage draws two frames and saves a picture.
 for s in due:
     shot = work + "/window-%s.png" % s["stage"]
-    cmd = ["timeout", "120", "xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", exe, "window",
+    cmd = ["timeout", "120", "sh", os.path.join(repo, "tests", "with_xvfb.sh"), "1280x1024x24", exe, "window",
            "--shaders", rel + "/shaders", "--stage", s["stage"], "--frames", "2", "--screenshot", shot]
     if tree == "legacy":
         cmd[cmd.index("--frames"):cmd.index("--frames")] = ["--glsl", "legacy"]

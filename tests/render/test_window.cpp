@@ -39,7 +39,7 @@ void compareWindowWithHeadless(const std::string& stage, GlslTree tree,
                                 " --size 320x240 --frames " + std::to_string(frames) + " " + extra +
                                 " --screenshot " + png,
                             &output);
-    // The runner puts the command behind xvfb-run; see tests/CMakeLists.txt.
+    // The runner puts the command on an X server of its own; see tests/CMakeLists.txt.
     ASSERT_EQ(code, 0) << output;
     Image window;
     ASSERT_EQ(readPng(png, window), "");
