@@ -1,12 +1,7 @@
 #include "course/class_grade.h"
 
-#include <dirent.h>
 #include <fcntl.h>
-#include <signal.h>
-#include <sys/file.h>
-#include <sys/prctl.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -18,10 +13,11 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <thread>
+#include <stdexcept>
 
 #include "course/class_annotations.h"
 #include "course/class_entries.h"
+#include "course/class_out.h"
 #include "course/class_page.h"
 #include "course/class_progress.h"
 #include "course/feedback_html.h"
@@ -35,8 +31,8 @@
 #include "io/content_hash.h"
 #include "io/files.h"
 #include "io/usage_error.h"
+#include "sandbox/job_fanout.h"
 #include "sandbox/private_dir.h"
-#include "sandbox/worker.h"
 #include "stages/displaced_bounds.h"
 #include "stages/expectations.h"
 
@@ -49,20 +45,6 @@ namespace {
 
 // A job that could not write for want of space exits with this (its log may be lost with it).
 constexpr int kJobDiskFull = 4;
-
-// A write the disk had no room for is the machine's failure (exit 3), in one line: records and
-// outputs are written atomically, so whatever an earlier run wrote is still whole.
-[[noreturn]] void throwWriteError(const std::string& err) {
-    if (diskFull(errno))
-        throw DiskFullError("grade: the disk is full: " + err +
-                            " (what earlier runs wrote is kept): free space and rerun grade");
-    throw UsageError("grade: " + err);
-}
-
-void writeOrThrow(const std::string& path, const std::string& text) {
-    std::string err = writeFileAtomically(path, text.data(), text.size());
-    if (!err.empty()) throwWriteError(err);
-}
 
 // A record as kept in OUT/students/: its JSON with "record_hash", the FNV-1a of the rest of it
 // (compact, keys sorted), so a record changed since it was written (a score raised by hand) is
@@ -130,76 +112,6 @@ std::string skippedList(const ClassListing& listing) {
     for (const std::string& s : listing.skipped) list += (list.empty() ? "" : ", ") + s;
     return list;
 }
-
-// grade's own names directly under --out and inside its own folders: a symbolic link at any of
-// them would have every log, page and record written (or a job's log truncated) wherever it
-// points, so one refuses the run before anything is written (exit 2). Nothing is followed.
-void refuseLinksInOut(const std::string& out) {
-    auto refuse = [](const std::string& path) {
-        throw UsageError("--out: " + printableName(path) +
-                         " is a symbolic link: grade writes nothing through a link (remove it)");
-    };
-    struct stat st;
-    if (::stat(out.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
-        return;  // --out itself may be a link
-    for (const char* name :
-         {".grade.lock", "solution_check.txt", "grades.csv", "gradebook-canvas.csv",
-          "gradebook-moodle.csv", "class.html", "adjustments.csv"})
-        if (::lstat((out + "/" + name).c_str(), &st) == 0 && S_ISLNK(st.st_mode))
-            refuse(out + "/" + name);
-    for (const char* name : {"students", "feedback", "work", "logs"}) {
-        const std::string folder = out + "/" + name;
-        if (::lstat(folder.c_str(), &st) != 0) continue;
-        if (S_ISLNK(st.st_mode)) refuse(folder);
-        if (!S_ISDIR(st.st_mode))
-            throw UsageError("--out: " + printableName(folder) + " is not a folder");
-        DIR* dir = ::opendir(folder.c_str());
-        if (!dir) throw UsageError("--out: cannot list " + printableName(folder));
-        std::string link;
-        while (const dirent* e = ::readdir(dir)) {
-            const std::string path = folder + "/" + e->d_name;
-            if (link.empty() && ::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) link = path;
-        }
-        ::closedir(dir);
-        if (!link.empty()) refuse(link);
-    }
-}
-
-// One grade run per --out at a time: an flock held by the run's own process until it ends (its
-// jobs let go of their copy, so a killed run frees --out at once), the holder's pid written in
-// the lock file for the refusal to name.
-class OutLock {
-  public:
-    explicit OutLock(const std::string& out) {
-        std::string path = out + "/.grade.lock";
-        fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
-        if (fd_ < 0) throw UsageError("--out: cannot write " + printableName(path));
-        if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-            char pid[32] = {};
-            ssize_t n = ::pread(fd_, pid, sizeof pid - 1, 0);
-            ::close(fd_);
-            std::string holder = n > 0 ? std::string(pid, std::size_t(n)) : "?";
-            holder.erase(holder.find_last_not_of(" \n") + 1);
-            throw UsageError("--out: " + printableName(out) +
-                             " is in use by another grade run (pid " + printable(holder) +
-                             "): wait for it to end or give another --out");
-        }
-        // The pid is only for another run's message; the lock itself is the flock.
-        std::string pid = std::to_string(::getpid()) + "\n";
-        if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0)
-            pid.clear();  // no pid to name: the lock holds all the same
-    }
-    ~OutLock() { ::close(fd_); }
-    void closeInJob() {  // in a forked job: the lock stays the parent's alone
-        ::close(fd_);
-        fd_ = -1;
-    }
-    OutLock(const OutLock&) = delete;
-    OutLock& operator=(const OutLock&) = delete;
-
-  private:
-    int fd_ = -1;
-};
 
 std::string duration(double s) {
     char t[32];
@@ -273,35 +185,60 @@ void addRosterStudents(const Roster& roster, const Assignment& a,
     std::cout << "\n";
 }
 
-}  // namespace
+// The class as found: its hand-ins in the listing's order, each with its gradebook name, its
+// file key (its record's and page's name), the intake's refusal and its content hash.
+struct ClassInput {
+    Assignment a;
+    std::string assignmentHash;  // a record stands only for the same text (and hand-in)
+    ClassListing listing;
+    std::vector<std::string> entries, names, files, refusals, hashes;
+};
 
-int runClassGrade(const ClassGradeArgs& args) {
-    if (args.jobs < 0 || args.jobs > 64) throw UsageError("--jobs: give 1 to 64, or auto");
-    Assignment a = loadAssignment(args.assignment);
-    std::string assignmentText;
-    readRegularFile(args.assignment, 1u << 20, assignmentText);
-    // A record stands on a rerun only for the same assignment text and the same hand-in.
-    const std::string assignmentHash = fnv1aHex(assignmentText);
-    struct stat st;
-    if (::stat(args.submissions.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
-        throw UsageError(
-            "grade: " + printableName(args.submissions) +
-            " is not a folder (give the folder holding one folder or .zip per student)");
-    refuseOverlap(args.submissions, args.out);
-    refuseLinksInOut(args.out);
-    const ClassListing listing = listClass(args.submissions);
-    if (listing.handIns.empty())
-        throw UsageError(
-            "grade: " + printableName(args.submissions) + " holds no submission" +
-            (listing.skipped.empty() ? "" : " (left out: " + skippedList(listing) + ")"));
-    GradeSettings settings = args.settings;
+// One `grade` run, step by step: run() reads as the page of what grade does.
+class ClassGrading {
+  public:
+    explicit ClassGrading(const ClassGradeArgs& args) : args_(args), settings_(args.settings) {}
+    int run();
+
+  private:
+    void readClass();
+    bool solutionPassedBefore();
+    void chooseStudents();
+    void takeIn();
+    int gradeInJobs(OutLock& lock);
+    int gradeShare(int job, int jobs, OutLock& lock);
+    void reportFinished(double seconds, const std::optional<double>& rowsLeft);
+    std::size_t writeOutputs();
+    std::string recordPath(std::size_t k) const {
+        return args_.out + "/students/" + in_.files[k] + ".json";
+    }
+    std::string progressPath(int job) const {
+        return args_.out + "/logs/job-" + std::to_string(job) + ".progress";
+    }
+    bool isFresh(std::size_t k, std::optional<StudentRecord>& r) const {
+        r = keptRecord(recordPath(k), in_.names[k]);
+        return r && r->handInHash == in_.hashes[k] && r->assignmentHash == in_.assignmentHash;
+    }
+
+    const ClassGradeArgs& args_;
+    GradeSettings settings_;
+    ClassInput in_;
+    SolutionTrees trees_;
+    ClassAnnotations annotations_;
+    std::vector<std::size_t> todo_;  // the students graded in this run
+    std::vector<StudentWork> subs_;  // their snapshots (by student index)
+    std::set<std::size_t> reported_;
+    Pace pace_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+int ClassGrading::run() {
+    if (args_.jobs < 0 || args_.jobs > 64) throw UsageError("--jobs: give 1 to 64, or auto");
+    readClass();
     {
-        std::vector<std::string> kept, students;
-        for (const ClassEntry& e : listing.handIns) {
-            kept.push_back(args.out + "/students/" + e.key + ".json");
-            students.push_back(e.student);
-        }
-        settings.seed = classSeed(args, kept, students);
+        std::vector<std::string> kept;
+        for (std::size_t k = 0; k < in_.entries.size(); ++k) kept.push_back(recordPath(k));
+        settings_.seed = classSeed(args_, kept, in_.names);
     }
     // Mesa's shader cache, one for the whole run (the solution check, every job, every worker):
     // our shipped programs are compiled once per class instead of once per student, lesson and
@@ -309,268 +246,272 @@ int runClassGrade(const ClassGradeArgs& args) {
     // no hand-in is served another's program; private, gone with the run.
     PrivateDir shaderCache("shadowlab-shader-cache");
     useShaderCacheFolder(shaderCache.path());
-    SolutionTrees trees = solutionTrees(args.solutions);
-    const std::string checkKey = solutionCheckKey(assignmentHash, trees, *settings.seed);
-    const bool checked = solutionCheckPassed(args.out, checkKey);
-    if (checked) {
-        std::cout << "the solution (" << trees.describe() << ") passed "
-                  << printableName(args.assignment) << " in an earlier run: not graded again\n";
-    } else {
-        std::cout << "grading the solution (" << trees.describe() << ") by "
-                  << printableName(args.assignment) << " first\n"
-                  << std::flush;
-        verifySolution(a, trees, settings);
-    }
-    std::error_code mkdirError;
-    fs::create_directories(args.out, mkdirError);
-    refuseLinksInOut(args.out);  // again: the solution check took a while
-    OutLock lock(args.out);
-    for (const char* sub : {"/students", "/feedback", "/work", "/logs"}) {
-        // mkdir, never through a link: one planted since the check above is refused here.
-        struct stat made;
-        if (::mkdir((args.out + sub).c_str(), 0755) != 0 && errno != EEXIST)
-            throw UsageError("--out: cannot create " + printableName(args.out + sub));
-        if (::lstat((args.out + sub).c_str(), &made) != 0 || !S_ISDIR(made.st_mode))
-            throw UsageError("--out: " + printableName(args.out + sub) +
-                             " is not a folder (a symbolic link is refused: remove it)");
-    }
+    trees_ = solutionTrees(args_.solutions);
+    const std::string checkKey = solutionCheckKey(in_.assignmentHash, trees_, *settings_.seed);
+    const bool checked = solutionPassedBefore();
+    if (!checked) verifySolution(in_.a, trees_, settings_);
+    createOut(args_.out);
+    OutLock lock(args_.out);
+    makeOutFolders(args_.out);
     if (!checked) {
-        std::string line = checkKey + "\n";
+        const std::string line = checkKey + "\n";
         std::string err =
-            writeFileAtomically(args.out + "/solution_check.txt", line.data(), line.size());
+            writeFileAtomically(args_.out + "/solution_check.txt", line.data(), line.size());
         if (!err.empty() && diskFull(errno)) throwWriteError(err);
         if (!err.empty()) throw std::runtime_error("grade: " + err);
     }
-    std::vector<std::string> entries, names, files, refusals;
-    for (const ClassEntry& e : listing.handIns) {
-        entries.push_back(e.path);
-        names.push_back(e.student);
-        files.push_back(e.key);
-        refusals.push_back(e.refusal);
-    }
     // The roster, --times and the adjustments: read (and refused, exit 2) before any work.
-    ClassAnnotations annotations = readAnnotations(args, a, names);
-    warnOnDownloadTimes(annotations, a, names, entries);
-    for (const std::string& wanted : args.regrade)
-        if (std::find(names.begin(), names.end(), wanted) == names.end())
+    annotations_ = readAnnotations(args_, in_.a, in_.names);
+    warnOnDownloadTimes(annotations_, in_.a, in_.names, in_.entries);
+    chooseStudents();
+    takeIn();
+    start_ = std::chrono::steady_clock::now();
+    int exitCode = gradeInJobs(lock);
+    if (writeOutputs() > 0) exitCode = 3;
+    return exitCode;
+}
+
+void ClassGrading::readClass() {
+    in_.a = loadAssignment(args_.assignment);
+    std::string assignmentText;
+    readRegularFile(args_.assignment, 1u << 20, assignmentText);
+    in_.assignmentHash = fnv1aHex(assignmentText);
+    struct stat st;
+    if (::stat(args_.submissions.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+        throw UsageError(
+            "grade: " + printableName(args_.submissions) +
+            " is not a folder (give the folder holding one folder or .zip per student)");
+    refuseOverlap(args_.submissions, args_.out);
+    refuseLinksInOut(args_.out);
+    in_.listing = listClass(args_.submissions);
+    if (in_.listing.handIns.empty())
+        throw UsageError(
+            "grade: " + printableName(args_.submissions) + " holds no submission" +
+            (in_.listing.skipped.empty() ? "" : " (left out: " + skippedList(in_.listing) + ")"));
+    for (const ClassEntry& e : in_.listing.handIns) {
+        in_.entries.push_back(e.path);
+        in_.names.push_back(e.student);
+        in_.files.push_back(e.key);
+        in_.refusals.push_back(e.refusal);
+    }
+    in_.hashes.resize(in_.entries.size());
+}
+
+// True when an earlier run passed the same solution check (its key in --out); else says that the
+// solution is graded first.
+bool ClassGrading::solutionPassedBefore() {
+    const std::string key = solutionCheckKey(in_.assignmentHash, trees_, *settings_.seed);
+    if (solutionCheckPassed(args_.out, key)) {
+        std::cout << "the solution (" << trees_.describe() << ") passed "
+                  << printableName(args_.assignment) << " in an earlier run: not graded again\n";
+        return true;
+    }
+    std::cout << "grading the solution (" << trees_.describe() << ") by "
+              << printableName(args_.assignment) << " first\n"
+              << std::flush;
+    return false;
+}
+
+// Who is graded in this run: the new, the changed and those asked for, each one graded again
+// with a line saying why; then the run's header line.
+void ClassGrading::chooseStudents() {
+    for (const std::string& wanted : args_.regrade)
+        if (std::find(in_.names.begin(), in_.names.end(), wanted) == in_.names.end())
             throw UsageError("--regrade: no hand-in named '" + printableName(wanted) + "' in " +
-                             printableName(args.submissions));
-    auto recordPath = [&](std::size_t k) { return args.out + "/students/" + files[k] + ".json"; };
-    const std::size_t n = entries.size();
-    std::vector<std::string> hashes(n);
-    std::vector<std::size_t> todo;
+                             printableName(args_.submissions));
+    const std::size_t n = in_.entries.size();
     std::map<std::string, int> reasons;  // why students are graded in this run
     for (std::size_t k = 0; k < n; ++k) {
-        hashes[k] = handInHash(entries[k]);
-        bool asked = args.regradeAll || std::find(args.regrade.begin(), args.regrade.end(),
-                                                  names[k]) != args.regrade.end();
+        in_.hashes[k] = handInHash(in_.entries[k]);
+        bool asked = args_.regradeAll || std::find(args_.regrade.begin(), args_.regrade.end(),
+                                                   in_.names[k]) != args_.regrade.end();
         bool edited = false;
-        std::optional<StudentRecord> kept = keptRecord(recordPath(k), names[k], &edited);
-        std::string why = whyGrade(kept, hashes[k], assignmentHash, *settings.seed, asked);
+        std::optional<StudentRecord> kept = keptRecord(recordPath(k), in_.names[k], &edited);
+        std::string why = whyGrade(kept, in_.hashes[k], in_.assignmentHash, *settings_.seed, asked);
         if (edited && !asked) why = "its record does not match its content hash (edited?)";
         if (why.empty()) continue;
-        todo.push_back(k);
+        todo_.push_back(k);
         ++reasons[why];
         if (why != "new")
-            std::cout << "grading " << printableName(escapedName(names[k])) << " again: " << why
+            std::cout << "grading " << printableName(escapedName(in_.names[k])) << " again: " << why
                       << "\n";
     }
-    std::cout << "grade " << n << " submissions by " << printableName(args.assignment) << " ("
-              << a.name << ")";
-    if (todo.size() < n || reasons.count("new") < reasons.size()) {
-        std::cout << ": " << n - todo.size() << " already graded, " << todo.size() << " to grade";
+    std::cout << "grade " << n << " submissions by " << printableName(args_.assignment) << " ("
+              << in_.a.name << ")";
+    if (todo_.size() < n || reasons.count("new") < reasons.size()) {
+        std::cout << ": " << n - todo_.size() << " already graded, " << todo_.size() << " to grade";
         std::string why;
         for (const auto& [reason, count] : reasons)
             why += (why.empty() ? " (" : ", ") + std::to_string(count) + " " + reason;
         if (!why.empty()) std::cout << why << ")";
     }
     std::cout << "\n";
-    if (!listing.skipped.empty())
-        std::cout << "left out, not hand-ins: " << skippedList(listing) << "\n";
+    if (!in_.listing.skipped.empty())
+        std::cout << "left out, not hand-ins: " << skippedList(in_.listing) << "\n";
     std::cout << std::flush;
+}
 
-    // Intake in the parent (no GL here): every pending submission's snapshot.
-    std::vector<StudentWork> subs(n);
-    for (std::size_t k : todo) {
-        if (refusals[k].empty()) {
-            subs[k] = intakeForAssignment(a, entries[k], args.out + "/work/" + files[k]);
-        } else {
-            subs[k] = StudentWork();
-            subs[k].error = refusals[k];  // nothing of it is read, followed or copied
-        }
-        subs[k].name = names[k];
-        subs[k].hash = hashes[k];
-        std::error_code ec;
-        fs::create_directories(args.out + "/work/" + files[k] + "/images", ec);
-    }
-    settings.pictures = true;
-    settings.pagePicturesOnly = true;
+// Intake in the parent (no GL here): every pending submission's snapshot, and the folder its
+// pictures go to.
+void ClassGrading::takeIn() {
+    subs_.assign(in_.entries.size(), StudentWork());
     std::map<std::string, std::string> imageDirs;
-    for (std::size_t k : todo) imageDirs[subs[k].name] = args.out + "/work/" + files[k] + "/images";
-    settings.imageDir = [imageDirs](const StudentWork& s) {
+    for (std::size_t k : todo_) {
+        const std::string work = args_.out + "/work/" + in_.files[k];
+        if (in_.refusals[k].empty())
+            subs_[k] = intakeForAssignment(in_.a, in_.entries[k], work);
+        else
+            subs_[k].error = in_.refusals[k];  // nothing of it is read, followed or copied
+        subs_[k].name = in_.names[k];
+        subs_[k].hash = in_.hashes[k];
+        std::error_code ec;
+        fs::create_directories(work + "/images", ec);
+        imageDirs[subs_[k].name] = work + "/images";
+    }
+    settings_.pictures = true;
+    settings_.pagePicturesOnly = true;
+    settings_.imageDir = [imageDirs](const StudentWork& s) {
         auto it = imageDirs.find(s.name);
         return it == imageDirs.end() ? std::string() : it->second;
     };
+}
 
-    // Jobs: child processes, each grading every jobs-th pending student in one worker series
-    // with one calibration of our shaders, on its share of the cores (a worker with llvmpipe's
-    // and the figures' threads on every core, twice over, was slower than one job: issue 28).
+// Jobs: child processes, each grading every jobs-th pending student in one worker series with
+// one calibration of our shaders, on its share of the cores (a worker with llvmpipe's and the
+// figures' threads on every core, twice over, was slower than one job: issue 28). A line each
+// time a student is done; 3 when a job failed.
+int ClassGrading::gradeInJobs(OutLock& lock) {
+    if (todo_.empty()) return 0;
     const int cores = boxCores();
-    const int wanted = args.jobs > 0 ? args.jobs : boxJobs(kMbPerGradingJob);
-    int jobs =
-        int(std::min<std::size_t>(std::size_t(wanted), std::max<std::size_t>(todo.size(), 1)));
-    const int coresPerJob = std::max(1, cores / std::max(1, jobs));
-    auto progressPath = [&](int j) {
-        return args.out + "/logs/job-" + std::to_string(j) + ".progress";
-    };
-    if (!todo.empty())
-        std::cout << jobs << (jobs == 1 ? " job" : " jobs") << " on " << cores
-                  << (cores == 1 ? " core" : " cores")
-                  << (args.jobs > 0 ? " (--jobs)" : " (--jobs auto)") << "\n";
-    std::vector<pid_t> pids;
-    std::cout.flush();
-    std::cerr.flush();
-    for (int j = 0; j < jobs && !todo.empty(); ++j) {
-        pid_t pid = ::fork();
-        if (pid < 0) throw std::runtime_error("grade: cannot start a job process");
-        if (pid == 0) {
-            ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed grade leaves no job behind
-            lock.closeInJob();
-            shareCores(coresPerJob);
-            std::string log = args.out + "/logs/job-" + std::to_string(j) + ".log";
-            // O_NOFOLLOW: a link planted at the log's name is never truncated through.
-            int fd =
-                ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
-            // Its students get no record: named, not graded, exit 3.
-            if (fd < 0) ::_exit(diskFull(errno) ? kJobDiskFull : 3);
-            if (fd >= 0) {
-                ::dup2(fd, 1);
-                ::dup2(fd, 2);
-                ::close(fd);
-            }
-            int code = 0;
-            try {
-                std::vector<StudentWork> share;
-                std::vector<GradingPlan> plans;
-                std::vector<std::size_t> index;
-                for (std::size_t i = std::size_t(j); i < todo.size(); i += std::size_t(jobs)) {
-                    share.push_back(subs[todo[i]]);
-                    plans.push_back(planStudent(a, share.back(), settings.seed));
-                    index.push_back(todo[i]);
-                }
-                Calibration calibration(settings.budget, settings.backend);
-                JobProgress progress(progressPath(j), plans);
-                gradeStudents(
-                    plans, share, settings, calibration,
-                    [&](std::size_t i, const StageRecord& st) { progress.stageDone(plans[i], st); },
-                    [&](std::size_t i, StudentRecord r) {
-                        r.assignmentHash = assignmentHash;
-                        writeOrThrow(recordPath(index[i]), sealedRecordText(r));
-                    });
-            } catch (const DiskFullError& e) {
-                std::cerr << "shadowlab: grade job " << j << ": " << e.what() << "\n";
-                code = kJobDiskFull;
-            } catch (const std::exception& e) {
-                std::cerr << "shadowlab: grade job " << j << ": " << e.what() << "\n";
-                code = 3;
-            }
-            std::cout.flush();
-            std::cerr.flush();
-            ::_exit(code);
-        }
-        pids.push_back(pid);
-    }
-    // Progress: a line each time a student is done, with the time left at the pace of the
-    // rows the jobs rendered (course/class_progress.h).
-    auto start = std::chrono::steady_clock::now();
-    std::set<std::size_t> reported;
+    const int wanted = args_.jobs > 0 ? args_.jobs : boxJobs(kMbPerGradingJob);
+    const int jobs = int(std::min<std::size_t>(std::size_t(wanted), todo_.size()));
+    std::cout << jobs << (jobs == 1 ? " job" : " jobs") << " on " << cores
+              << (cores == 1 ? " core" : " cores")
+              << (args_.jobs > 0 ? " (--jobs)" : " (--jobs auto)") << "\n";
+    JobFanOut fan(jobs, std::max(1, cores / jobs), "grade job",
+                  [&](int j) { return gradeShare(j, jobs, lock); });
     std::vector<std::string> progressFiles;
     for (int j = 0; j < jobs; ++j) progressFiles.push_back(progressPath(j));
-    Pace pace;
     int exitCode = 0, diskFullJobs = 0;
-    std::size_t running = pids.size();
-    auto isFresh = [&](std::size_t k, std::optional<StudentRecord>& r) {
-        r = keptRecord(recordPath(k), names[k]);
-        return r && r->handInHash == hashes[k] && r->assignmentHash == assignmentHash;
-    };
-    auto poll = [&]() {
-        // Read every time, so the pace starts from the first rows that came back.
+    auto poll = [&] {  // read every time, so the pace starts from the first rows that came back
         const double now =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const std::optional<double> rowsLeft = pace.timeLeft(now, readProgress(progressFiles));
-        for (std::size_t k : todo) {
-            if (reported.count(k)) continue;
-            std::optional<StudentRecord> r;
-            if (!isFresh(k, r)) continue;
-            reported.insert(k);
-            annotateRecord(annotations, a, names[k], entries[k], *r);  // the total, as pages show
-            double left =
-                rowsLeft ? *rowsLeft
-                         : now / double(reported.size()) * double(todo.size() - reported.size());
-            char line[512];
-            std::snprintf(line, sizeof line,
-                          "[student %zu of %zu] %-24s %7.2f / %.2f  %-10s time left about %s\n",
-                          n - todo.size() + reported.size(), n,
-                          printableName(escapedName(names[k])).c_str(),
-                          r->graded() ? r->total() : r->score, r->maxScore, statusName(r->status()),
-                          reported.size() == todo.size() ? "0 s" : duration(left).c_str());
-            std::cout << line << std::flush;
-        }
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        reportFinished(now, pace_.timeLeft(now, readProgress(progressFiles)));
     };
-    while (running > 0) {
-        int status = 0;
-        pid_t done = ::waitpid(-1, &status, WNOHANG);
-        if (done > 0 && std::find(pids.begin(), pids.end(), done) != pids.end()) {
-            --running;
-            if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) exitCode = 3;
-            if (WIFEXITED(status) && WEXITSTATUS(status) == kJobDiskFull) ++diskFullJobs;
-        } else if (done <= 0) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    while (fan.running()) {
+        for (const JobFanOut::Ended& e : fan.reap(std::chrono::milliseconds(300))) {
+            if (e.code != 0) exitCode = 3;
+            if (e.code == kJobDiskFull) ++diskFullJobs;
         }
         poll();
     }
     poll();
     if (diskFullJobs > 0) {  // one line, not one a student: the outputs would not fit either
-        std::size_t lost = todo.size() - reported.size();
-        throw DiskFullError("grade: the disk under " + printableName(args.out) + " is full: " +
-                            std::to_string(lost) + " of " + std::to_string(todo.size()) +
+        std::size_t lost = todo_.size() - reported_.size();
+        throw DiskFullError("grade: the disk under " + printableName(args_.out) + " is full: " +
+                            std::to_string(lost) + " of " + std::to_string(todo_.size()) +
                             " students' records could not be written (not graded; what earlier "
                             "runs wrote is kept): free space and rerun grade");
     }
+    return exitCode;
+}
 
-    // The class's outputs from every record (those of earlier runs too).
-    addCopyFlags(annotations, a, names, files, args.out, trees);
+// In job `job`'s process: its share of the students, graded, each record written as it is done.
+int ClassGrading::gradeShare(int job, int jobs, OutLock& lock) {
+    lock.closeInJob();
+    std::string log = args_.out + "/logs/job-" + std::to_string(job) + ".log";
+    // O_NOFOLLOW: a link planted at the log's name is never truncated through.
+    int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
+    // Its students get no record: named, not graded, exit 3.
+    if (fd < 0) return diskFull(errno) ? kJobDiskFull : 3;
+    ::dup2(fd, 1);
+    ::dup2(fd, 2);
+    ::close(fd);
+    try {
+        std::vector<StudentWork> share;
+        std::vector<GradingPlan> plans;
+        std::vector<std::size_t> index;
+        for (std::size_t i = std::size_t(job); i < todo_.size(); i += std::size_t(jobs)) {
+            share.push_back(subs_[todo_[i]]);
+            plans.push_back(planStudent(in_.a, share.back(), settings_.seed));
+            index.push_back(todo_[i]);
+        }
+        Calibration calibration(settings_.budget, settings_.backend);
+        JobProgress progress(progressPath(job), plans);
+        gradeStudents(
+            plans, share, settings_, calibration,
+            [&](std::size_t i, const StageRecord& st) { progress.stageDone(plans[i], st); },
+            [&](std::size_t i, StudentRecord r) {
+                r.assignmentHash = in_.assignmentHash;
+                writeOrThrow(recordPath(index[i]), sealedRecordText(r));
+            });
+    } catch (const DiskFullError& e) {
+        std::cerr << "shadowlab: grade job " << job << ": " << e.what() << "\n";
+        return kJobDiskFull;
+    }
+    return 0;
+}
+
+// A line for each student whose record came back since the last call, with the total the pages
+// show and the time left at the pace of the rows the jobs rendered (course/class_progress.h).
+void ClassGrading::reportFinished(double seconds, const std::optional<double>& rowsLeft) {
+    const std::size_t n = in_.entries.size();
+    for (std::size_t k : todo_) {
+        if (reported_.count(k)) continue;
+        std::optional<StudentRecord> r;
+        if (!isFresh(k, r)) continue;
+        reported_.insert(k);
+        annotateRecord(annotations_, in_.a, in_.names[k], in_.entries[k], *r);
+        double left =
+            rowsLeft ? *rowsLeft
+                     : seconds / double(reported_.size()) * double(todo_.size() - reported_.size());
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "[student %zu of %zu] %-24s %7.2f / %.2f  %-10s time left about %s\n",
+                      n - todo_.size() + reported_.size(), n,
+                      printableName(escapedName(in_.names[k])).c_str(),
+                      r->graded() ? r->total() : r->score, r->maxScore, statusName(r->status()),
+                      reported_.size() == todo_.size() ? "0 s" : duration(left).c_str());
+        std::cout << line << std::flush;
+    }
+}
+
+// The class's outputs from every record (those of earlier runs too): a page per student,
+// grades.csv, the LMS gradebooks and the class page. Returns how many are not graded.
+std::size_t ClassGrading::writeOutputs() {
+    const std::size_t n = in_.entries.size();
+    addCopyFlags(annotations_, in_.a, in_.names, in_.files, args_.out, trees_);
     std::vector<StudentRecord> records;
     std::vector<std::string> pages;
     std::size_t notGraded = 0;
     for (std::size_t k = 0; k < n; ++k) {
         std::optional<StudentRecord> r;
         if (!isFresh(k, r)) {
-            std::cerr << "shadowlab: " << printableName(escapedName(names[k]))
-                      << ": no record (its job failed; see " << args.out
+            std::cerr << "shadowlab: " << printableName(escapedName(in_.names[k]))
+                      << ": no record (its job failed; see " << args_.out
                       << "/logs/): not graded, rerun grade\n";
             ++notGraded;
             continue;
         }
         if (!r->graded()) ++notGraded;
-        if (annotateRecord(annotations, a, names[k], entries[k], *r))
+        if (annotateRecord(annotations_, in_.a, in_.names[k], in_.entries[k], *r))
             writeOrThrow(recordPath(k), sealedRecordText(*r));
         records.push_back(*r);
-        pages.push_back("feedback/" + files[k] + ".html");
-        writeOrThrow(args.out + "/" + pages.back(), studentPage(*r));
+        pages.push_back("feedback/" + in_.files[k] + ".html");
+        writeOrThrow(args_.out + "/" + pages.back(), studentPage(*r));
     }
-    if (annotations.roster)
-        addRosterStudents(*annotations.roster, a, names, args.out, records, pages);
-    writeOrThrow(args.out + "/grades.csv", gradesCsv(records));
-    writeOrThrow(args.out + "/gradebook-canvas.csv", canvasCsv(a.name, records));
-    writeOrThrow(args.out + "/gradebook-moodle.csv", moodleCsv(a.name, records));
-    writeOrThrow(args.out + "/class.html",
-                 classPage(a.name, records, pages, listing.skipped,
-                           {annotations.pairs, annotations.solutionCopies}));
+    if (annotations_.roster)
+        addRosterStudents(*annotations_.roster, in_.a, in_.names, args_.out, records, pages);
+    writeOrThrow(args_.out + "/grades.csv", gradesCsv(records));
+    writeOrThrow(args_.out + "/gradebook-canvas.csv", canvasCsv(in_.a.name, records));
+    writeOrThrow(args_.out + "/gradebook-moodle.csv", moodleCsv(in_.a.name, records));
+    writeOrThrow(args_.out + "/class.html",
+                 classPage(in_.a.name, records, pages, in_.listing.skipped,
+                           {annotations_.pairs, annotations_.solutionCopies}));
     double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     std::size_t copyFull = 0;  // hand-ins whose private copy found the disk full (NOT GRADED)
-    for (std::size_t k : todo) copyFull += subs[k].platformFailure;
+    for (std::size_t k : todo_) copyFull += subs_[k].platformFailure;
     if (copyFull > 0)
         std::cerr << "shadowlab: grade: the disk was full: " << copyFull
                   << (copyFull == 1 ? " hand-in" : " hand-ins")
@@ -578,10 +519,15 @@ int runClassGrade(const ClassGradeArgs& args) {
                      "free space and rerun grade\n";
     std::cout << "graded " << n - notGraded << " of " << n;
     if (notGraded > 0) std::cout << "; " << notGraded << " not graded: rerun";
-    std::cout << " in " << duration(seconds) << ": " << args.out << "/grades.csv, " << args.out
-              << "/class.html, " << args.out << "/feedback/, " << args.out << "/students/\n";
-    if (notGraded > 0) exitCode = 3;
-    return exitCode;
+    std::cout << " in " << duration(seconds) << ": " << args_.out << "/grades.csv, " << args_.out
+              << "/class.html, " << args_.out << "/feedback/, " << args_.out << "/students/\n";
+    return notGraded;
+}
+
+}  // namespace
+
+int runClassGrade(const ClassGradeArgs& args) {
+    return ClassGrading(args).run();
 }
 
 }  // namespace sl

@@ -1,12 +1,6 @@
 #include "course/solution_check.h"
 
-#include <signal.h>
-#include <sys/prctl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -19,6 +13,7 @@
 #include "io/box.h"
 #include "io/files.h"
 #include "io/usage_error.h"
+#include "sandbox/job_fanout.h"
 #include "sandbox/private_dir.h"
 #include "stages/stage.h"
 
@@ -156,42 +151,18 @@ StudentRecord gradeSolution(const GradingPlan& plan, const StudentWork& solution
     };
     if (parts <= 1) return gradePart(plan);
     auto partPath = [&](int p) { return dir + "/part-" + std::to_string(p) + ".json"; };
-    std::cout.flush();
-    std::cerr.flush();
-    std::vector<pid_t> pids;
-    for (int p = 0; p < parts; ++p) {
-        pid_t pid = ::fork();
-        if (pid < 0) throw std::runtime_error("cannot start the solution check's processes");
-        if (pid == 0) {
-            ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-            shareCores(std::max(1, cores / parts));
-            int code = 0;
-            try {
-                GradingPlan part = plan;
-                part.stages.clear();
-                for (std::size_t j = 0; j < plan.stages.size(); ++j)
-                    if (j % std::size_t(parts) == std::size_t(p))
-                        part.stages.push_back(plan.stages[j]);
-                std::string text = recordJson(gradePart(part)).dump();
-                std::string err = writeFileAtomically(partPath(p), text.data(), text.size());
-                if (!err.empty()) throw std::runtime_error(err);
-            } catch (const std::exception& e) {
-                std::cerr << "shadowlab: the solution check: " << e.what() << "\n";
-                code = 3;
-            }
-            std::cout.flush();
-            std::cerr.flush();
-            ::_exit(code);
-        }
-        pids.push_back(pid);
-    }
+    JobFanOut fan(parts, std::max(1, cores / parts), "the solution check's part", [&](int p) {
+        GradingPlan part = plan;
+        part.stages.clear();
+        for (std::size_t j = 0; j < plan.stages.size(); ++j)
+            if (j % std::size_t(parts) == std::size_t(p)) part.stages.push_back(plan.stages[j]);
+        std::string text = recordJson(gradePart(part)).dump();
+        std::string err = writeFileAtomically(partPath(p), text.data(), text.size());
+        if (!err.empty()) throw std::runtime_error(err);
+        return 0;
+    });
     bool failed = false;
-    for (pid_t pid : pids) {
-        int status = 0;
-        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-        }
-        failed = failed || !WIFEXITED(status) || WEXITSTATUS(status) != 0;
-    }
+    for (const JobFanOut::Ended& e : fan.waitAll()) failed = failed || e.code != 0;
     std::vector<StageRecord> stages(plan.stages.size());
     for (int p = 0; p < parts && !failed; ++p) {
         std::string text;
