@@ -163,4 +163,12 @@ def rows_of(rec):
 
 assert rows_of(mine) == rows_of(graded), (rows_of(mine), rows_of(graded))
 assert r.returncode == graded["exit_code"] == mine["exit_code"] == 0, r.returncode
+
+# 7. A new seed over kept records with --regrade-all: everyone graded again in the new views, the
+# solution checked again there, every record with the one new seed.
+text = grade("--regrade-all", seed="7")
+assert "the class's seed is now 7 (was " + SEED + ")" in text, text
+assert "0 already graded, 3 to grade (3 asked for (--regrade))" in text, text
+assert "grading the solution" in text and text.count("[student ") == 3, text
+assert {record(n)["seed"] for n in ("ann", "bo", "cy")} == {7}, [record(n)["seed"] for n in ("ann", "bo", "cy")]
 print("course_not_graded: ok")
