@@ -1,11 +1,11 @@
 // `shadowlab grade SUBMISSIONS --assignment A.json --out DIR [--jobs N|auto]`: a whole class graded
-// by an assignment (src/course/class_grade.h): grades.csv, a feedback page per student, the
+// by an assignment (src/class/class_grade.h): grades.csv, a feedback page per student, the
 // class page and the JSON record per student; resumable, and a rerun regrades what changed.
 // The solution is graded by the assignment first (course/solution_check.h).
 #include <memory>
 
 #include "app/commands.h"
-#include "course/class_grade.h"
+#include "class/class_grade.h"
 #include "io/usage_error.h"
 
 namespace sl {

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "course/json_lines.h"
-#include "course/late_policy.h"
+#include "gradebook/late_policy.h"
 #include "io/files.h"
 #include "io/json_fields.h"
 #include "scene/scene_json.h"

@@ -11,6 +11,7 @@
 
 #include "course/assignment_error.h"
 #include "grade/plan.h"
+#include "gradebook/late_policy.h"
 #include "io/usage_error.h"
 #include "stages/request.h"
 
@@ -42,17 +43,6 @@ struct ExtraView {
     std::optional<glm::vec3> eye, at, light;
     std::optional<float> fovy;
     double weight = 1;
-};
-
-// The assignment's late policy ("late", docs/assignment.md "Late policy"): a hand-in after the
-// deadline plus the grace loses penalty_per_day percent of the assignment's points for each day
-// or part of a day after the deadline, at most cap percent, never below 0 points.
-struct LatePolicy {
-    std::string deadlineText;  // as written: ISO 8601 with its zone
-    long long deadline = 0;    // seconds since 1970-01-01 UTC
-    double graceMinutes = 0;
-    double penaltyPerDayPct = 0;  // percent of the assignment's points per day late
-    double capPct = 100;          // the most it loses, in percent of its points
 };
 
 struct Assignment {

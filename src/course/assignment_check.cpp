@@ -6,8 +6,8 @@
 #include <optional>
 
 #include "course/intake_adapter.h"
-#include "course/late_policy.h"
 #include "course/student_grade.h"
+#include "gradebook/late_policy.h"
 #include "io/files.h"
 #include "io/usage_error.h"
 #include "sandbox/private_dir.h"

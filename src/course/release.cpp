@@ -7,7 +7,6 @@
 #include <functional>
 #include <sstream>
 
-#include "course/class_entries.h"
 #include "io/data_paths.h"
 #include "io/files.h"
 #include "io/usage_error.h"

@@ -33,7 +33,7 @@ struct StageRecord {
     std::vector<RowRecord> rows;
 };
 
-// Who a hand-in is, from the class roster (course/roster.h): drawn into grades.csv and pages.
+// Who a hand-in is, from the class roster (gradebook/roster.h): drawn into grades.csv and pages.
 struct RosterInfo {
     std::string id, name, email;
     bool operator==(const RosterInfo& o) const {
@@ -41,7 +41,7 @@ struct RosterInfo {
     }
 };
 
-// A late hand-in under the assignment's late policy (course/late_policy.h): applied when the
+// A late hand-in under the assignment's late policy (gradebook/late_policy.h): applied when the
 // outputs are drawn (grades.csv's total, the page), the graded score is kept as it is.
 struct LateRecord {
     std::string handedIn;  // ISO 8601, UTC
@@ -52,7 +52,7 @@ struct LateRecord {
     bool capped = false;   // the policy's cap limited the penalty (days x per day was more)
 };
 
-// A TA's adjustment of one stage (course/adjustments.h): points added (or taken off, < 0) and
+// A TA's adjustment of one stage (gradebook/adjustments.h): points added (or taken off, < 0) and
 // the reason the student reads. Applied when the outputs are drawn.
 struct Adjustment {
     std::string stage;  // as the TA wrote it: "margin" or "margin/core"
@@ -71,10 +71,10 @@ struct StudentRecord {
     std::optional<std::uint64_t> seed;
     std::string backend, machine;
     // Content hashes: the hand-in's files and the assignment's text. A rerun regrades a student
-    // whose hand-in or assignment changed (course/class_grade.h).
+    // whose hand-in or assignment changed (class/class_grade.h).
     std::string handInHash, assignmentHash;
     std::optional<RosterInfo> roster;  // --roster's entry for this hand-in, when there is one
-    // Copy flags (course/copy_flags.h): due files equal to the published solution or a
+    // Copy flags (class/copy_flags.h): due files equal to the published solution or a
     // classmate's once whitespace, comments and names are set aside. Never a score.
     std::vector<std::string> flags;
     std::optional<LateRecord> late;  // when the assignment has a late policy

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <filesystem>
 #include <vector>
 
 namespace sl {
@@ -300,6 +301,28 @@ std::string capped(const std::string& text, std::size_t maxBytes) {
     // Back up over continuation bytes (10xxxxxx) so the cut falls between characters.
     while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80) --keep;
     return text.substr(0, keep) + " [... " + std::to_string(text.size() - keep) + " bytes cut]";
+}
+
+namespace {
+
+bool inside(const std::filesystem::path& child, const std::filesystem::path& parent) {
+    auto c = child.begin(), p = parent.begin();
+    for (; p != parent.end(); ++p, ++c)
+        if (c == child.end() || *c != *p) return false;
+    return true;
+}
+
+std::filesystem::path resolved(const std::string& path) {
+    std::error_code ec;
+    std::filesystem::path p =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+    return ec ? std::filesystem::absolute(path).lexically_normal() : p;
+}
+
+}  // namespace
+
+bool liesWithin(const std::string& path, const std::string& folder) {
+    return inside(resolved(path), resolved(folder));
 }
 
 }  // namespace sl

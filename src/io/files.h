@@ -73,4 +73,8 @@ std::string printableName(const std::string& name);
 void showFolderAs(const std::string& copy, const std::string& original);
 std::string withShownFolders(const std::string& text);
 
+// Whether `path` is `folder` or lies inside it, both resolved (links, `..`; a part not yet made
+// is taken as spelled).
+bool liesWithin(const std::string& path, const std::string& folder);
+
 }  // namespace sl

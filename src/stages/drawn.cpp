@@ -97,11 +97,25 @@ DrawnRow parseRow(const json& j, const std::string& where) {
     return row;
 }
 
-// Two significant digits: "margin 0.0047", easy to type back with --set.
-std::string twoDigits(double v) {
+// `digits` significant digits: "margin 0.0047", easy to type back with --set.
+std::string withDigits(double v, int digits) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.2g", v);
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
     return text;
+}
+
+// The fewest significant digits (two or more) at which [min, max] holds 20 values or more, so
+// that no one constant is drawn for many seeds: two for 0.0005-0.003 (25 values), three for
+// 0.001-0.0017 (two would give 8: 0.0010, 0.0011, ... 0.0017).
+int digitsFor(double min, double max) {
+    int digits = 2;
+    while (digits < 6) {
+        const double step =
+            std::pow(10.0, std::floor(std::log10(std::max(max, 1e-300))) - digits + 1);
+        if ((max - min) / step >= 20) break;
+        ++digits;
+    }
+    return digits;
 }
 
 std::uint64_t labelHash(const std::string& text) {  // FNV-1a: the same on every platform
@@ -120,9 +134,10 @@ std::string drawOne(const DrawnParam& d, const ParamSpec& spec, std::mt19937_64&
         v = std::clamp(std::round(v / step) * step, d.min, d.max);
         return std::to_string(static_cast<long long>(v));
     }
-    std::string text = twoDigits(v);
+    const int digits = digitsFor(d.min, d.max);
+    std::string text = withDigits(v, digits);
     double back = std::stod(text);
-    return back < d.min || back > d.max ? twoDigits(std::clamp(back, d.min, d.max)) : text;
+    return back < d.min || back > d.max ? withDigits(std::clamp(back, d.min, d.max), digits) : text;
 }
 
 }  // namespace

@@ -48,7 +48,8 @@ const std::vector<DrawnRow>& drawnRows();  // from expectationsPath(), loaded on
 std::vector<const DrawnRow*> drawnRowsOf(const std::string& stage, const std::string& tree);
 
 // The settings of `row` for `seed`: its fixed ones, then each drawn one (numbers to two
-// significant digits, integers to a multiple of 64 where the range allows). The same on every
+// significant digits, three where the range would hold fewer than 20 values; integers to a
+// multiple of 64 where the range allows). The same on every
 // platform (mt19937_64's output is fixed; the mapping is ours).
 std::vector<std::pair<std::string, std::string>> drawnSettings(const DrawnRow& row,
                                                                std::uint64_t seed);

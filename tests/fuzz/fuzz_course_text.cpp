@@ -1,15 +1,16 @@
 // libFuzzer target: the text an instructor hands `grade` and `release` (issue 38's parsers): the
 // CSV reader behind the roster, `--times` and `--adjust`, the ISO time parser behind the
-// deadline, `--times` and Gradescope's created_at, and the solution markers `release` strips. A UsageError is the expected answer to bad input; a
-// crash, a sanitizer report or a broken promise of the headers is a bug.
+// deadline, `--times` and Gradescope's created_at, and the solution markers `release` strips. A
+// UsageError is the expected answer to bad input; a crash, a sanitizer report or a broken promise
+// of the headers is a bug.
 #include <cstddef>
 #include <cstdint>
 #include <sstream>
 #include <string>
 
-#include "course/csv.h"
-#include "course/iso_time.h"
 #include "course/solution_markers.h"
+#include "gradebook/csv.h"
+#include "gradebook/iso_time.h"
 #include "io/usage_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,4 +1,4 @@
-// Copy flags (course/copy_flags.h) on the shipped margin/lit.frag: a renamed, recommented copy
+// Copy flags (class/copy_flags.h) on the shipped margin/lit.frag: a renamed, recommented copy
 // of the solution and two reformatted identical hand-ins are flagged; an independent solution
 // (another structure) and the starter everyone was given are not.
 #include <gtest/gtest.h>
@@ -10,8 +10,8 @@
 #include <regex>
 #include <sstream>
 
-#include "course/copy_flags.h"
-#include "course/copy_pairs.h"
+#include "class/copy_flags.h"
+#include "class/copy_pairs.h"
 #include "course/release.h"
 #include "stages/request.h"
 

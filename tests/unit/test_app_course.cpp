@@ -5,14 +5,14 @@
 #include <filesystem>
 #include <fstream>
 
+#include "class/class_progress.h"
 #include "course/assignment.h"
-#include "course/class_progress.h"
-#include "course/feedback_html.h"
-#include "course/gradebook_exports.h"
-#include "course/html_text.h"
 #include "course/json_lines.h"
 #include "course/release.h"
+#include "feedback/feedback_html.h"
+#include "feedback/html_text.h"
 #include "grade/record.h"
+#include "gradebook/gradebook_exports.h"
 
 namespace sl {
 namespace {

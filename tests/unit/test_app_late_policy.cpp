@@ -1,8 +1,8 @@
-// The late policy's arithmetic (course/late_policy.h): ISO 8601 times with zones, the grace, days
-// or parts of a day charged, the cap, never below 0 points.
+// The late policy's arithmetic (gradebook/late_policy.h): ISO 8601 times with zones, the grace,
+// days or parts of a day charged, the cap, never below 0 points.
 #include <gtest/gtest.h>
 
-#include "course/late_policy.h"
+#include "gradebook/late_policy.h"
 
 namespace sl {
 namespace {

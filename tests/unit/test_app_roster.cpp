@@ -1,7 +1,8 @@
-// The roster's CSV (course/roster.h): RFC 4180 fields, a byte order mark, errors with their line.
+// The roster's CSV (gradebook/roster.h): RFC 4180 fields, a byte order mark, errors with their
+// line.
 #include <gtest/gtest.h>
 
-#include "course/roster.h"
+#include "gradebook/roster.h"
 #include "io/usage_error.h"
 
 namespace sl {

@@ -1,9 +1,9 @@
-#include "course/student_summary.h"
+#include "feedback/student_summary.h"
 
 #include <cmath>
 #include <sstream>
 
-#include "course/html_text.h"
+#include "feedback/html_text.h"
 #include "stages/expectations.h"
 
 namespace sl {

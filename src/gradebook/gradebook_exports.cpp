@@ -1,9 +1,9 @@
-#include "course/gradebook_exports.h"
+#include "gradebook/gradebook_exports.h"
 
 #include <cstdio>
 #include <sstream>
 
-#include "course/html_text.h"
+#include "feedback/html_text.h"
 #include "io/files.h"
 
 namespace sl {

@@ -1,11 +1,10 @@
-#include "course/roster.h"
+#include "gradebook/roster.h"
 
 #include <algorithm>
 #include <cctype>
 #include <map>
 
-#include "course/csv.h"
-#include "course/student_grade.h"
+#include "gradebook/csv.h"
 #include "io/files.h"
 #include "io/usage_error.h"
 
@@ -92,18 +91,6 @@ bool attachRoster(const Roster& roster, const std::string& handIn, StudentRecord
     if (who == r.roster) return false;
     r.roster = who;
     return true;
-}
-
-StudentRecord noHandInRecord(const Assignment& a, const RosterEntry& e) {
-    StudentWork none;
-    none.name = e.handIn;
-    GradingPlan plan = planStudent(a, none, std::nullopt);
-    std::vector<StageRecord> stages;
-    for (const StagePlan& p : plan.stages) stages.push_back(stageRecord(p, nullptr, ""));
-    none.notes.push_back("no hand-in");
-    StudentRecord r = buildRecord(plan, none, stages, 0);
-    r.roster = e.who;
-    return r;
 }
 
 std::vector<std::string> handInsNotOnRoster(const Roster& roster,

@@ -1,4 +1,4 @@
-#include "course/feedback_html.h"
+#include "feedback/feedback_html.h"
 
 #include <cmath>
 #include <cstdio>
@@ -7,8 +7,8 @@
 #include <set>
 #include <sstream>
 
-#include "course/html_text.h"
-#include "course/student_summary.h"
+#include "feedback/html_text.h"
+#include "feedback/student_summary.h"
 #include "io/files.h"
 #include "stages/registry.h"
 

@@ -1,6 +1,6 @@
 // The late policy (docs/assignment.md "Late policy"): when a hand-in came, from a manifest
 // (`grade --times times.csv`) or else its files' times, and what the assignment's policy
-// (course/assignment.h LatePolicy) takes off for it. Never a grade of its own: a record's
+// (LatePolicy, below) takes off for it. Never a grade of its own: a record's
 // `late` is applied when outputs are drawn (grades.csv's total and penalty, the page).
 #pragma once
 
@@ -9,11 +9,21 @@
 #include <string>
 #include <vector>
 
-#include "course/assignment.h"
-#include "course/iso_time.h"
 #include "grade/record.h"
+#include "gradebook/iso_time.h"
 
 namespace sl {
+
+// The assignment's late policy ("late", docs/assignment.md "Late policy"): a hand-in after the
+// deadline plus the grace loses penalty_per_day percent of the assignment's points for each day
+// or part of a day after the deadline, at most cap percent, never below 0 points.
+struct LatePolicy {
+    std::string deadlineText;  // as written: ISO 8601 with its zone
+    long long deadline = 0;    // seconds since 1970-01-01 UTC
+    double graceMinutes = 0;
+    double penaltyPerDayPct = 0;  // percent of the assignment's points per day late
+    double capPct = 100;          // the most it loses, in percent of its points
+};
 
 // What `p` takes off a hand-in made at `handedIn` (from `source`): nothing within the grace;
 // after it, penalty_per_day percent of `maxPoints` for each day or part of a day after the

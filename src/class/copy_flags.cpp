@@ -1,10 +1,10 @@
-#include "course/copy_flags.h"
+#include "class/copy_flags.h"
 
 #include <algorithm>
 #include <cctype>
 #include <set>
 
-#include "course/copy_pairs.h"
+#include "class/copy_pairs.h"
 
 namespace sl {
 
@@ -99,12 +99,6 @@ std::vector<std::string> normalizedTokens(const std::string& s) {
         }
     }
     return out;
-}
-
-std::string CopyFlag::text() const {
-    return file + ": the same as " +
-           (other.empty() ? "the published solution" : "the hand-in of " + other) +
-           " once whitespace, comments and names are set aside (a flag to look at, not a score)";
 }
 
 std::vector<CopyFlag> findCopies(const std::vector<HandInFiles>& handIns,

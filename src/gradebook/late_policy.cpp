@@ -1,4 +1,4 @@
-#include "course/late_policy.h"
+#include "gradebook/late_policy.h"
 
 #include <sys/stat.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "course/csv.h"
+#include "gradebook/csv.h"
 #include "io/files.h"
 
 namespace sl {

@@ -24,9 +24,9 @@ struct ClassGradeArgs {
     int jobs = 0;                      // 0: auto (jobsFor the box)
     std::vector<std::string> regrade;  // --regrade NAME...: these students again
     bool regradeAll = false;           // --regrade-all
-    std::string roster;                // --roster roster.csv (course/roster.h), or ""
-    std::string times;                 // --times times.csv (course/late_policy.h), or ""
-    std::string adjust;                // --adjust adjust.csv (course/adjustments.h), or ""
+    std::string roster;                // --roster roster.csv (gradebook/roster.h), or ""
+    std::string times;                 // --times times.csv (gradebook/late_policy.h), or ""
+    std::string adjust;                // --adjust adjust.csv (gradebook/adjustments.h), or ""
     // --seed: the displaced views' seed. Without it a class keeps the seed its records share
     // (a rerun, --regrade NAME), or draws one; a different seed over kept records is refused
     // unless --regrade-all grades everyone in the new views (one seed a class).

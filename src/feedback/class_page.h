@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "course/copy_pairs.h"
+#include "feedback/copies.h"
 #include "grade/record.h"
 
 namespace sl {
 
-// The class's possible copies (course/copy_pairs.h), for the instructor: the pairs ranked by
+// The class's possible copies (class/copy_pairs.h), for the instructor: the pairs ranked by
 // the share of their written due code in common, and the files equal to the published solution.
 struct ClassCopies {
     std::vector<CopyPair> pairs;

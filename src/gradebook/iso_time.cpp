@@ -1,4 +1,4 @@
-#include "course/iso_time.h"
+#include "gradebook/iso_time.h"
 
 #include <algorithm>
 #include <ctime>

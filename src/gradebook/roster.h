@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "course/assignment.h"
 #include "grade/record.h"
 
 namespace sl {
@@ -35,10 +34,6 @@ Roster loadRoster(const std::string& path);
 // Gives `r` (hand-in `handIn`) its roster entry (none when it is not on the roster); true when
 // that changed the record (it is then written again, so the kept record carries it).
 bool attachRoster(const Roster& roster, const std::string& handIn, StudentRecord& r);
-
-// The record of a student on the roster who handed nothing in: every due stage MISSING, 0
-// points, the note "no hand-in".
-StudentRecord noHandInRecord(const Assignment& a, const RosterEntry& e);
 
 // The hand-ins in `names` that the roster does not list, and the roster's entries whose
 // hand-in is not in `names`.

@@ -1,4 +1,4 @@
-#include "course/class_progress.h"
+#include "class/class_progress.h"
 
 #include <fcntl.h>
 #include <unistd.h>

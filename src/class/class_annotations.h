@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "course/class_grade.h"
-#include "course/copy_pairs.h"
+#include "class/class_grade.h"
+#include "class/copy_pairs.h"
 #include "course/release.h"
-#include "course/roster.h"
+#include "gradebook/roster.h"
 
 namespace sl {
 
@@ -31,14 +31,14 @@ ClassAnnotations readAnnotations(const ClassGradeArgs& args, const Assignment& a
 
 // The class's copy flags (`c.flags` by hand-in name, `c.pairs`, `c.solutionCopies`), from the
 // due files of each hand-in's snapshot under `out`/work/`files[k]`/snapshot
-// (course/copy_flags.h, copy_pairs.h): against the shipped solution (whole file) and between
+// (class/copy_flags.h, copy_pairs.h): against the shipped solution (whole file) and between
 // classmates by pair, never for the starter.
 void addCopyFlags(ClassAnnotations& c, const Assignment& a, const std::vector<std::string>& names,
                   const std::vector<std::string>& files, const std::string& out,
                   const SolutionTrees& trees);
 
 // Without --times for them, when the file times of the hand-ins at `entries` (named `names`)
-// look like a download (course/late_policy.h looksLikeDownload), one warning line on stdout
+// look like a download (gradebook/late_policy.h looksLikeDownload), one warning line on stdout
 // saying so and how to give the times (--times). Nothing is changed: the policy still applies.
 void warnOnDownloadTimes(const ClassAnnotations& c, const Assignment& a,
                          const std::vector<std::string>& names,

@@ -1,4 +1,4 @@
-#include "course/copy_pairs.h"
+#include "class/copy_pairs.h"
 
 #include <algorithm>
 

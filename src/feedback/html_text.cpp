@@ -1,4 +1,4 @@
-#include "course/html_text.h"
+#include "feedback/html_text.h"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "course/csv.h"
+#include "gradebook/csv.h"
 
 #include <algorithm>
 

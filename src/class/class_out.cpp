@@ -1,4 +1,4 @@
-#include "course/class_out.h"
+#include "class/class_out.h"
 
 #include <dirent.h>
 #include <fcntl.h>

@@ -1,15 +1,15 @@
-#include "course/class_annotations.h"
+#include "class/class_annotations.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <set>
 
-#include "course/adjustments.h"
-#include "course/copy_flags.h"
-#include "course/copy_pairs.h"
-#include "course/late_policy.h"
+#include "class/copy_flags.h"
+#include "class/copy_pairs.h"
 #include "course/release.h"
+#include "gradebook/adjustments.h"
+#include "gradebook/late_policy.h"
 #include "io/files.h"
 #include "io/usage_error.h"
 

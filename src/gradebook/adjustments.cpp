@@ -1,10 +1,10 @@
-#include "course/adjustments.h"
+#include "gradebook/adjustments.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
-#include "course/csv.h"
+#include "gradebook/csv.h"
 #include "io/files.h"
 #include "io/usage_error.h"
 

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "feedback/copies.h"
+
 namespace sl {
 
 // GLSL source as tokens: comments and whitespace dropped; every identifier that is not a GLSL
@@ -22,16 +24,9 @@ struct HandInFiles {
     std::map<std::string, std::string> files;
 };
 
-// A flag on one file of hand-in `student`: the same as the published solution (`other` "") or
-// as the classmates named in `other` ("bob, carol": five named, then "and N more").
-struct CopyFlag {
-    std::string student, file, other;
-    std::string text() const;  // what the record says: "margin/lit.frag: the same as ..."
-};
-
 // The flags of a class: for each due file, every hand-in equal to its published solution
 // (`solutions`: file -> the solution's whole text), and the files of every pair of hand-ins
-// that shares at least kCopyShareFlagged of its written due code (course/copy_pairs.h). A file
+// that shares at least kCopyShareFlagged of its written due code (class/copy_pairs.h). A file
 // equal to its starter (`starters`: what everyone was given) is never flagged.
 std::vector<CopyFlag> findCopies(const std::vector<HandInFiles>& handIns,
                                  const std::map<std::string, std::string>& solutions,

@@ -10,7 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "course/copy_flags.h"
+#include "class/copy_flags.h"
+#include "feedback/copies.h"
 
 namespace sl {
 
@@ -18,19 +19,6 @@ namespace sl {
 // each of the starter's tokens has been matched once (a multiset difference).
 std::size_t writtenTokens(const std::vector<std::string>& tokens,
                           const std::vector<std::string>& starter);
-
-// Two hand-ins with due files the same token for token (never the starter, never empty).
-struct CopyPair {
-    std::string a, b;                // a < b
-    std::vector<std::string> files;  // the due files they have the same
-    std::size_t commonTokens = 0;    // the written tokens of those files
-    // commonTokens over the written tokens of the due files of the one who wrote more: 1 for a
-    // whole copy, small for one short file in common.
-    double share = 0;
-};
-
-// A pair whose share is at least this is flagged; below it, it is counted, not named.
-constexpr double kCopyShareFlagged = 0.6;
 
 // Every pair of `handIns` with a due file in common, the largest share first (then by names).
 // `starters`: file -> what everyone was given (written tokens are counted beyond it).

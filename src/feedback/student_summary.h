@@ -1,4 +1,4 @@
-// What a student's page says first and beside its pictures (course/feedback_html.h), drawn from
+// What a student's page says first and beside its pictures (feedback/feedback_html.h), drawn from
 // the record's fields alone (statuses, points, missing files, expectations), never by reading
 // its messages: a per-stage overview, so that an ERROR or TIMEOUT far down is seen at once, and
 // the caption of a picture that shows a lesson working.

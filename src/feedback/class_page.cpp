@@ -1,10 +1,10 @@
-#include "course/class_page.h"
+#include "feedback/class_page.h"
 
 #include <map>
 #include <set>
 #include <sstream>
 
-#include "course/html_text.h"
+#include "feedback/html_text.h"
 #include "io/files.h"
 
 namespace sl {
@@ -25,7 +25,7 @@ std::string failureOf(const StageRecord& st) {
     return "";
 }
 
-// The possible copies (course/copy_pairs.h), for the instructor to look at, never a score, never
+// The possible copies (class/copy_pairs.h), for the instructor to look at, never a score, never
 // on a student's page: one row per pair at or above the threshold, ranked by the share of their
 // written due code in common; the pairs below it counted (short natural code is shared by
 // honest students); the files equal to the published solution, one row per student and file.

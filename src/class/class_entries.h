@@ -32,10 +32,6 @@ ClassListing listClass(const std::string& submissions);
 // The file name kept for the gradebook name `student` ("" never).
 std::string recordKey(const std::string& student);
 
-// Whether `path` is `folder` or lies inside it, both resolved (links, `..`; a part not yet made
-// is taken as spelled).
-bool liesWithin(const std::string& path, const std::string& folder);
-
 // Refuses (UsageError, one line) an --out that is the submissions folder, lies inside it or
 // holds it, however either is spelled (links and `..` resolved).
 void refuseOverlap(const std::string& submissions, const std::string& out);

@@ -1,4 +1,4 @@
-#include "course/class_entries.h"
+#include "class/class_entries.h"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -59,19 +59,6 @@ void nameStudents(std::vector<ClassEntry>& entries) {
     }
 }
 
-bool inside(const fs::path& child, const fs::path& parent) {
-    auto c = child.begin(), p = parent.begin();
-    for (; p != parent.end(); ++p, ++c)
-        if (c == child.end() || *c != *p) return false;
-    return true;
-}
-
-fs::path resolved(const std::string& path) {
-    std::error_code ec;
-    fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
-    return ec ? fs::absolute(path).lexically_normal() : p;
-}
-
 }  // namespace
 
 std::string recordKey(const std::string& student) {
@@ -120,19 +107,15 @@ ClassListing listClass(const std::string& submissions) {
     return out;
 }
 
-bool liesWithin(const std::string& path, const std::string& folder) {
-    return inside(resolved(path), resolved(folder));
-}
-
 void refuseOverlap(const std::string& submissions, const std::string& out) {
-    const fs::path subs = resolved(submissions), dest = resolved(out);
+    const bool outInSubs = liesWithin(out, submissions), subsInOut = liesWithin(submissions, out);
     std::string why;
-    if (dest == subs)
+    if (outInSubs && subsInOut)
         why = " is the submissions folder";
-    else if (inside(dest, subs))
+    else if (outInSubs)
         why = " lies inside the submissions folder " + printableName(submissions) +
               " (its outputs would be graded as students)";
-    else if (inside(subs, dest))
+    else if (subsInOut)
         why = " holds the submissions folder " + printableName(submissions);
     if (!why.empty())
         throw UsageError("--out: " + printableName(out) + why + ": give a folder outside it");

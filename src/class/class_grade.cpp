@@ -1,4 +1,4 @@
-#include "course/class_grade.h"
+#include "class/class_grade.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -15,18 +15,18 @@
 #include <set>
 #include <stdexcept>
 
-#include "course/class_annotations.h"
-#include "course/class_entries.h"
-#include "course/class_out.h"
-#include "course/class_page.h"
-#include "course/class_progress.h"
-#include "course/feedback_html.h"
-#include "course/gradebook_exports.h"
+#include "class/class_annotations.h"
+#include "class/class_entries.h"
+#include "class/class_out.h"
+#include "class/class_progress.h"
 #include "course/intake_adapter.h"
-#include "course/roster.h"
 #include "course/solution_check.h"
 #include "course/student_grade.h"
+#include "feedback/class_page.h"
+#include "feedback/feedback_html.h"
 #include "grade/check_run.h"  // drawSeed
+#include "gradebook/gradebook_exports.h"
+#include "gradebook/roster.h"
 #include "io/box.h"
 #include "io/content_hash.h"
 #include "io/files.h"
@@ -165,6 +165,20 @@ bool solutionCheckPassed(const std::string& out, const std::string& key) {
     std::string text;
     return readRegularFile(out + "/solution_check.txt", 4096, text, true).empty() &&
            text == key + "\n";
+}
+
+// The record of a student on the roster who handed nothing in: every due stage MISSING, 0
+// points, the note "no hand-in".
+StudentRecord noHandInRecord(const Assignment& a, const RosterEntry& e) {
+    StudentWork none;
+    none.name = e.handIn;
+    GradingPlan plan = planStudent(a, none, std::nullopt);
+    std::vector<StageRecord> stages;
+    for (const StagePlan& p : plan.stages) stages.push_back(stageRecord(p, nullptr, ""));
+    none.notes.push_back("no hand-in");
+    StudentRecord r = buildRecord(plan, none, stages, 0);
+    r.roster = e.who;
+    return r;
 }
 
 // The roster's students with no hand-in get a record and a page ("no hand-in", every stage
@@ -453,7 +467,7 @@ int ClassGrading::gradeShare(int job, int jobs, OutLock& lock) {
 }
 
 // A line for each student whose record came back since the last call, with the total the pages
-// show and the time left at the pace of the rows the jobs rendered (course/class_progress.h).
+// show and the time left at the pace of the rows the jobs rendered (class/class_progress.h).
 void ClassGrading::reportFinished(double seconds, const std::optional<double>& rowsLeft) {
     const std::size_t n = in_.entries.size();
     for (std::size_t k : todo_) {
