@@ -14,6 +14,7 @@
 
 #include "io/content_hash.h"
 #include "io/files.h"
+#include "stages/registry.h"
 #include "stages/request.h"
 
 namespace sl {
@@ -384,7 +385,10 @@ Submission takeSubmission(const std::string& folder, const std::string& privateD
         s.notes.push_back("and " + std::to_string(more) + " more files not used");
     }
     if (!replacesAny) {
-        std::string example = "margin/lit.frag";  // the graded stage's own file when it has one
+        // The graded stage's own file when it has one, else the first lit.frag in lecture order.
+        std::string example;
+        for (const std::string& id : stageIds())
+            if (example.empty() && shipped.count(id + "/lit.frag")) example = id + "/lit.frag";
         for (const std::string& f : shipped)
             if (!stages.empty() && stageOf(f) == stages.front() &&
                 (example.rfind(stages.front() + "/", 0) != 0 || baseName(f) == "lit.frag"))
