@@ -7,6 +7,8 @@ solution to draw, so `check` and `grade` both widen a displaced row's bounds fro
 
     python3 scripts/measure_displaced_bounds.py build/shadowlab --seeds 1-12 [--out FILE]
     [--merge FILE: add the seeds not yet in FILE, keeping its ranges]
+    [--stage ID: with --merge, measure that stage alone at every seed of FILE (and --seeds),
+     replacing its entries and keeping every other stage's]
 
 Run from a build of the source tree (its shaders are the solutions); each seed is one
 `check --all --seed S` (a few minutes here). Rerun it when a stage's shaders or a lesson's
@@ -36,24 +38,40 @@ def main():
     here = os.path.dirname(os.path.abspath(__file__))
     ap.add_argument("--out", default=os.path.join(here, "..", "src", "stages", "displaced_bounds.json"))
     ap.add_argument("--merge", help="a file this script wrote: its seeds and ranges are kept")
+    ap.add_argument("--stage", help="with --merge: this stage alone, at every seed of the file")
     args = ap.parse_args()
+    if args.stage and not args.merge:
+        sys.exit("--stage needs --merge FILE (the other stages' entries come from it)")
     seeds = seeds_of(args.seeds)
     lessons = {}
     if args.merge:
         old = json.load(open(args.merge))
         seeds = sorted(set(old["seeds"]) | set(seeds))
-        lessons = {k: {f: list(r) for f, r in v.items()} for k, v in old["lessons"].items()}
-        todo = sorted(set(seeds_of(args.seeds)) - set(old["seeds"]))
+        lessons = {k: {f: list(r) for f, r in v.items()} for k, v in old["lessons"].items()
+                   if not (args.stage and k.startswith(args.stage + "/"))}
+        # One seed list for the whole file: a stage measured alone is measured at all of them.
+        todo = seeds if args.stage else sorted(set(seeds_of(args.seeds)) - set(old["seeds"]))
     else:
         todo = seeds
+    runs = [["--all"]]
+    if args.stage:
+        listed = json.loads(subprocess.run([args.exe, "stages", "--json"], capture_output=True,
+                                           text=True, check=True).stdout)
+        trees = [s["trees"] for s in listed if s["id"] == args.stage]
+        if not trees:
+            sys.exit("--stage %s: no such stage" % args.stage)
+        runs = [["--stage", args.stage, "--glsl", t] for t in trees[0]]
     with tempfile.TemporaryDirectory() as tmp:
         for seed in todo:
-            report = os.path.join(tmp, "r%d.json" % seed)
-            r = subprocess.run([args.exe, "check", "--all", "--seed", str(seed), "--time-limit", "900",
-                                "--report", report], capture_output=True, text=True)
-            if r.returncode not in (0, 1) or not os.path.exists(report):
-                sys.exit("check --all --seed %d: exit %d\n%s" % (seed, r.returncode, r.stderr[-2000:]))
-            rows = [row for st in json.load(open(report))["stages"] for row in st["rows"]]
+            rows = []
+            for what in runs:
+                report = os.path.join(tmp, "r%d.json" % seed)
+                r = subprocess.run([args.exe, "check"] + what + ["--seed", str(seed), "--time-limit",
+                                    "900", "--report", report], capture_output=True, text=True)
+                if r.returncode not in (0, 1) or not os.path.exists(report):
+                    sys.exit("check %s --seed %d: exit %d\n%s" % (" ".join(what), seed, r.returncode,
+                                                                  r.stderr[-2000:]))
+                rows += [row for st in json.load(open(report))["stages"] for row in st["rows"]]
             for row in rows:
                 entry = row.get("expectation") or {}
                 if row["view"] != "displaced" or not entry or row["verdict"] not in ("PASS", "FAIL"):

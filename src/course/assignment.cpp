@@ -126,8 +126,7 @@ std::set<std::string> viewNamesOf(const std::string& stage, const std::string& t
         for (const GradingView& v : gradingViews(scene)) names.insert(v.name);
     }
     // The view displaced by the run's seed (check_run.h, checkCases): in the stage's own scene.
-    const StageInfo* info = findStage(stage);
-    if (info && !info->needsMirror) names.insert("displaced");
+    if (findStage(stage)) names.insert("displaced");
     // The rows whose method parameters the seed draws (stages/drawn.h): the same displaced view.
     if (!drawnRowsOf(stage, tree).empty()) names.insert("drawn");
     return names;

@@ -72,7 +72,8 @@ void checkAssignmentMeaning(const Assignment& a);
 // Every row of a due stage for the submission at `overlay` (may be ""), in check order; the
 // stage's points split over them by lesson weight times view weight. With a `seed`, the
 // stage's lessons are also graded in the view displaced by it (a view named "displaced": its
-// casters and light moved by an amount drawn at grading time, so no shader can know it).
+// casters, light and camera, or the mirror stage's camera and mirror, moved by an amount drawn
+// at grading time, so no shader can know it).
 std::vector<RowPlan> planStage(const Assignment& a, const AssignmentStage& s,
                                const std::string& overlay,
                                std::optional<std::uint64_t> seed = std::nullopt, int width = 640,

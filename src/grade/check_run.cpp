@@ -94,9 +94,9 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
                 cases.push_back({r, view.name, label});
             }
         // Only in the stage's own scene: a lesson scene such as the lab's (its light on the
-        // receiver's normal, so it cannot turn) gains little from it and doubles its cost.
-        const StageInfo* info = findStage(base.stage);
-        if (!seed || customView || !info || info->needsMirror || scene != effectiveScene(base))
+        // receiver's normal, so it cannot turn) gains little from it and doubles its cost. A
+        // scene with a mirror is displaced its own way (camera and mirror: displacedViewOf).
+        if (!seed || customView || !findStage(base.stage) || scene != effectiveScene(base))
             continue;
         for (const auto& [request, label] : lessons) {
             if (effectiveScene(request) != scene) continue;

@@ -90,11 +90,12 @@ struct CheckCase {
 // that applies, each under its own scene and settings, unless the user narrowed it (`--set`,
 // `--scene`: the base request alone); and each from every view of its scene, unless the user
 // gave a camera or light (`--eye`, `--at`, `--fovy`, `--light`: one view named "custom").
-// With a `seed`, each scene of a stage that casts shadows gets one more view, "displaced": the
-// scene's casters, light and camera moved by displacementFor(seed) (GUIDE section 4: a shader
-// that knows the fixed views' geometry or cameras cannot know this one's). With a seed and a
-// submission's overlay (not narrowed, no custom view), each "drawn" row of the stage
-// (stages/drawn.h) adds one more, view "drawn": the displaced view at settings the seed draws.
+// With a `seed`, the stage's own scene gets one more view, "displaced": the scene's casters,
+// light and camera moved by the seed, or in a scene with a mirror its camera and mirror
+// (displacedViewOf, scene/mirror_displace.h; GUIDE section 4: a shader that knows the fixed
+// views' geometry or cameras cannot know this one's). With a seed and a submission's overlay
+// (not narrowed, no custom view), each "drawn" row of the stage (stages/drawn.h) adds one more,
+// view "drawn": the displaced view at settings the seed draws.
 std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool customView,
                                   std::optional<std::uint64_t> seed = std::nullopt);
 

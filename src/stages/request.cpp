@@ -6,7 +6,7 @@
 
 #include "io/data_paths.h"
 #include "io/usage_error.h"
-#include "scene/displace.h"
+#include "scene/mirror_displace.h"
 #include "scene/scene_json.h"
 #include "stages/registry.h"
 
@@ -108,7 +108,7 @@ std::unique_ptr<Renderer> makeRenderer(const RenderRequest& r) {
     validateRequest(r);
     std::string sceneName = effectiveScene(r);
     Scene scene = loadScene(sceneName);
-    if (r.displaceSeed) scene = displacedScene(scene, displacementFor(*r.displaceSeed));
+    if (r.displaceSeed) scene = displacedViewOf(scene, *r.displaceSeed);
     const StageInfo* info = findStage(r.stage);
     if (info->needsMirror && !scene.mirror)
         throw UsageError("--scene " + sceneName + ": stage '" + r.stage +

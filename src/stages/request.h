@@ -24,8 +24,9 @@ struct RenderRequest {
     std::optional<float> fovy;
     std::vector<std::pair<std::string, std::string>> sets;  // --set NAME=VALUE
     ViewMode view = ViewMode::Final;
-    // Grading's displaced view: the scene's casters, light and camera moved by
-    // displacementFor(seed) (an --eye, --at or --fovy given still wins).
+    // Grading's displaced view: displacedViewOf(scene, seed), the scene's casters, light and
+    // camera moved, or in a scene with a mirror its camera and mirror (scene/mirror_displace.h);
+    // an --eye, --at or --fovy given still wins.
     std::optional<std::uint64_t> displaceSeed;
 };
 

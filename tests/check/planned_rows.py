@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """How many rows `check` plans, counted from the data: src/stages/expectations.json (each stage's
 lessons and the grading views of each scene) and `shadowlab stages --json` (each stage's trees,
-its own scene and whether it needs a mirror), so adding a stage or a lesson edits no test.
+its own scene), so adding a stage or a lesson edits no test.
 
 usage: planned_rows.py STAGES_JSON [--expectations PATH] [--tree core|legacy] [--stage ID]
                        [--no-displaced] [--submission]
@@ -10,8 +10,8 @@ The count follows GUIDE section 4 and docs/check.md, written here a second time 
 check of grade/check_run.cpp's checkCases, not a copy of its answer): each lesson of a stage and
 tree (the entries of its id whose "trees" cover it) is seen from every view of its scene ("views"
 in the data; a scene without views has one, its own camera); with a seed (`check --all` draws
-one), each lesson in the stage's own scene gains a "displaced" view, unless the stage needs a
-mirror. A submission (`--shaders`) gains one row for each of the stage's "drawn" entries in the
+one), each lesson in the stage's own scene gains a "displaced" view (the mirror stage's too:
+its camera and mirror moved). A submission (`--shaders`) gains one row for each of the stage's "drawn" entries in the
 tree (parameters the seed draws, judged against our shaders at the same values: our own shaders
 get none). Prints one number.
 """
@@ -37,7 +37,7 @@ def planned_rows(stages, book, tree=None, only=None, displaced=True, submission=
             for e in lessons:
                 scene = e.get("scene", stage["scene"])
                 rows += len(views.get(scene, [])) or 1
-                if displaced and not stage["needs_mirror"] and scene == stage["scene"]:
+                if displaced and scene == stage["scene"]:
                     rows += 1
             if submission:
                 rows += sum(1 for d in book.get("drawn", [])

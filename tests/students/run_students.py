@@ -10,7 +10,8 @@ stage's verdict as the worst of the report's rows for that stage (every lesson a
 grades): ERROR/TIMEOUT/CRASH > FAIL > PASS > SKIP. Prints one line per case and a closing line
 `N passed, M failed`; exits 1 on any disagreement, 2 on a bad corpus.
 
-    run_students.py [--exe build/shadowlab] [--only NAME]... [--jobs 2] [--work DIR]
+    run_students.py [--exe build/shadowlab] [--only NAME]... [--prefix P] [--seed S] [--jobs 2]
+                    [--work DIR]
     run_students.py --table      (the README's table of cases, from the case.json files)
 """
 import argparse
@@ -97,12 +98,14 @@ def describe(row):
     return " ".join(parts)
 
 
-def grade(case, exe, work):
+def grade(case, exe, work, seed=None):
     report = os.path.join(work, case["name"] + ".json")
     if os.path.exists(report):
         os.remove(report)
     cmd = [exe, "check", "--stage", case["stage"], "--glsl", case["tree"], "--shaders",
            case["folder"], "--report", report]
+    if seed is not None:  # else check draws one: the verdict must not depend on it
+        cmd += ["--seed", str(seed)]
     try:
         proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                               timeout=CASE_TIMEOUT_S)
@@ -142,6 +145,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--exe", default=os.path.join(REPO, "build", "shadowlab"))
     parser.add_argument("--only", action="append", default=[], metavar="NAME")
+    parser.add_argument("--prefix", help="only the cases whose name starts so (e.g. mirror_)")
+    parser.add_argument("--seed", type=int,
+                        help="the displaced views' seed (check --seed); default: check draws one")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--work", default=None, help="folder for the reports (default: a temp one)")
     parser.add_argument("--table", action="store_true", help="print the cases as a markdown table")
@@ -154,6 +160,8 @@ def main():
             return 2
     if args.only:
         names = [n for n in names if n in args.only]
+    if args.prefix:
+        names = [n for n in names if n.startswith(args.prefix)]
     try:
         cases = [load_case(n) for n in names]
     except (ValueError, json.JSONDecodeError) as e:
@@ -175,7 +183,7 @@ def main():
     passed, failed = 0, []
     width = max(len(c["name"]) for c in cases) if cases else 10
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-        futures = {pool.submit(grade, c, args.exe, work): c for c in cases}
+        futures = {pool.submit(grade, c, args.exe, work, args.seed): c for c in cases}
         for future in concurrent.futures.as_completed(futures):
             case = futures[future]
             got, figures = future.result()

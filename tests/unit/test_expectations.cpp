@@ -91,14 +91,13 @@ TEST(Expectations, MistakesNameTheEntry) {
 }
 
 // The displaced views' bounds are data measured on the solution (stages/displaced_bounds.h):
-// every lesson graded in a displaced view (a stage without a mirror, in its own scene) has the
+// every lesson graded in a displaced view (in the stage's own scene, the mirror's too) has the
 // solution's range of each figure it bounds, or a student edition would judge it by the lesson's
 // bounds alone while a grader with the solutions could not tell (rerun
 // scripts/measure_displaced_bounds.py when a lesson or a stage's shaders change).
 TEST(DisplacedBounds, EveryDisplacedLessonHasTheSolutionsFigures) {
     int lessons = 0;
     for (const StageInfo& info : stageRegistry()) {
-        if (info.needsMirror) continue;
         for (const char* tree : {"core", "legacy"}) {
             if (info.legacyOnly && std::string(tree) == "core") continue;
             for (const Expectation* e : lessonsOf(expectations(), info.id, tree)) {
