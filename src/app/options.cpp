@@ -46,7 +46,8 @@ void addCommonOptions(CLI::App* app, CommonOptions& o, bool withStage) {
     app->add_option("--fovy", o.fovy, "vertical field of view in degrees");
     app->add_option("--light", o.light, "light position X,Y,Z");
     app->add_option("--displace", o.displace,
-                    "move the casters, light and camera as check's displaced view of this seed");
+                    "move the casters, light and camera (in a scene with a mirror: the camera "
+                    "and the mirror) as check's displaced view of this seed");
     app->add_option("--set", o.sets, "stage parameter NAME=VALUE (repeatable)");
     app->add_option("--view", o.view, "final|shadow-map|light|visibility|light-depth");
     app->add_option("--backend", o.backend, "headless backend: auto|osmesa|egl");
