@@ -53,26 +53,44 @@ std::vector<RowsDone> readProgress(const std::vector<std::string>& paths) {
     return jobs;
 }
 
+double Pace::Seen::secondsPerRow() const {
+    return lastDone > firstDone && lastAt > firstAt
+               ? (lastAt - firstAt) / double(lastDone - firstDone)
+               : firstAt / double(firstDone);
+}
+
 std::optional<double> Pace::timeLeft(double seconds, const std::vector<RowsDone>& jobs) {
-    first_.resize(std::max(first_.size(), jobs.size()));
-    std::vector<std::optional<double>> perRow(jobs.size());  // seconds a row, by job
+    seen_.resize(std::max(seen_.size(), jobs.size()));
     double rates = 0;
     int known = 0;
     for (std::size_t j = 0; j < jobs.size(); ++j) {
         const RowsDone& r = jobs[j];
         if (r.done == 0) continue;
-        if (!first_[j]) first_[j] = std::make_pair(seconds, r.done);
-        const auto [at, done] = *first_[j];
-        perRow[j] = r.done > done && seconds > at ? (seconds - at) / double(r.done - done)
-                                                  : seconds / double(r.done);
-        rates += *perRow[j];
+        std::optional<Seen>& s = seen_[j];
+        if (!s) s = Seen{seconds, seconds, r.done, r.done, r.done};
+        if (r.done > s->lastDone) {
+            s->lastAt = seconds;
+            s->lastStep = r.done - s->lastDone;
+            s->lastDone = r.done;
+        }
+        rates += s->secondsPerRow();
         ++known;
     }
     if (known == 0) return std::nullopt;
     double left = 0;
     for (std::size_t j = 0; j < jobs.size(); ++j) {
-        const double rate = perRow[j] ? *perRow[j] : rates / known;
-        left = std::max(left, rate * double(jobs[j].total - jobs[j].done));
+        const RowsDone& r = jobs[j];
+        const std::size_t rowsLeft = r.total - r.done;
+        const Seen* s = r.done > 0 && seen_[j] ? &*seen_[j] : nullptr;
+        if (!s) {
+            left = std::max(left, rates / known * double(rowsLeft));
+            continue;
+        }
+        const double perRow = s->secondsPerRow();
+        // The step under way has had the time since the last reading with more rows; the rows
+        // after it have had none.
+        const double after = perRow * double(rowsLeft - std::min(rowsLeft, s->lastStep));
+        left = std::max(left, std::max(after, perRow * double(rowsLeft) - (seconds - s->lastAt)));
     }
     return left;
 }

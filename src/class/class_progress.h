@@ -42,13 +42,23 @@ std::vector<RowsDone> readProgress(const std::vector<std::string>& paths);
 // is known; a job with no rows back yet at the others' mean pace. The class is done when its
 // slowest job is: jobs' shares differ (a starter writes pictures for every failing row), and
 // counting all jobs' rows together missed the end, when the last job runs alone (0.21 off).
+// A job's pace runs from its first reading to the reading its rows last grew at, and the time
+// since then is taken off what its rows left need, down to what the rows after the next step
+// (as many as its last) need: rows come back a stage at a time, and a pace to the reading's time
+// made the estimate rise between stages and fall at each (issue 39); a stage that takes longer
+// than the pace says holds the estimate, it never drops to 0 with rows after it.
 class Pace {
   public:
     // A reading `seconds` after the start; the time left, or none before any row came back.
     std::optional<double> timeLeft(double seconds, const std::vector<RowsDone>& jobs);
 
   private:
-    std::vector<std::optional<std::pair<double, std::size_t>>> first_;  // (seconds, rows done)
+    struct Seen {
+        double firstAt = 0, lastAt = 0;  // the first reading with rows, the last that had more
+        std::size_t firstDone = 0, lastDone = 0, lastStep = 0;  // lastStep: the rows it added
+        double secondsPerRow() const;
+    };
+    std::vector<std::optional<Seen>> seen_;
 };
 
 }  // namespace sl

@@ -10,8 +10,10 @@ Runs alternate, loop then grade, REPS times per class; both sides write their pi
 --diff-dir) and run with --time-limit 300 so a loaded machine cannot turn work into TIMEOUTs.
 Each grade run starts from an empty --out (the solution check and the shader cache included).
 --busy pins a busy loop to every core for the whole run (`taskset -c N sh -c 'while :; do :;
-done'`). The progress estimate is read from grade's own lines: the first line at or past the
-class's midpoint says "time left about T"; the error is |T - what was left| / what was left.
+done'`). The progress estimate is read from grade's own lines ("time left about T"): the first
+line at or past the class's midpoint (progress_error), and every line after the first quarter of
+the class (progress_error_{max,median}_after_quarter); the error is |T - L| / L, L being what
+was left: the run's end minus the line's time.
 
 usage: bench_grade.py SHADOWLAB REPO WORKDIR [--reps N] [--one N] [--all N] [--busy]
        [--classes one,all] [--grade-only]
@@ -89,13 +91,39 @@ def grade(cls, assignment):
     assert p.wait() == 0, p.returncode
     end = time.time()
     info = {}
+    # Every line after the first quarter of the class: |said - left| / left, where left is the
+    # run's end (its last line, the class's pages written) minus the line's time.
+    errors, abs_errors = [], []
+    last_student = None
     for t, line in lines:
         m = re.match(r"\[student (\d+) of (\d+)\].*time left about (.+)$", line)
-        if m and 2 * int(m.group(1)) >= int(m.group(2)):
-            said, left = seconds_of(m.group(3)), end - t
-            info = {"midpoint_said_s": said, "midpoint_left_s": round(left, 1),
-                    "progress_error": round(abs(said - left) / max(left, 1.0), 3)}
-            break
+        if not m:
+            continue
+        i, n = int(m.group(1)), int(m.group(2))
+        said, left = seconds_of(m.group(3)), end - t
+        last_student = t
+        if 2 * i >= n and "midpoint_said_s" not in info:
+            info.update({"midpoint_said_s": said, "midpoint_left_s": round(left, 1),
+                         "progress_error": round(abs(said - left) / max(left, 1.0), 3)})
+        if 4 * i > n:
+            errors.append(abs(said - left) / max(left, 0.1))
+            abs_errors.append(abs(said - left))
+    # The same against the last student's line (the rows the estimate follows all done): what is
+    # left after it (the jobs' exit, the class's pages) is not in any row.
+    to_last = [abs(seconds_of(m.group(3)) - (last_student - t)) / (last_student - t)
+               for t, m in ((t, re.match(r"\[student (\d+) of (\d+)\].*time left about (.+)$", line))
+                            for t, line in lines)
+               if m and 4 * int(m.group(1)) > int(m.group(2)) and last_student - t >= 1.0]
+    if to_last:
+        info["progress_error_max_to_last_line"] = round(max(to_last), 3)
+        info["progress_error_median_to_last_line"] = round(statistics.median(to_last), 3)
+    if errors:
+        info.update({"progress_lines_after_quarter": len(errors),
+                     "progress_error_max_after_quarter": round(max(errors), 3),
+                     "progress_error_median_after_quarter": round(statistics.median(errors), 3),
+                     "progress_lines_over_25pct": sum(e > 0.25 for e in errors),
+                     "progress_abs_error_max_s": round(max(abs_errors), 1),
+                     "after_last_student_line_s": round(end - last_student, 1)})
     jobs = [line for _, line in lines if " on " in line and "(--jobs" in line]
     info["jobs"] = jobs[0].strip() if jobs else ""
     return info
@@ -116,7 +144,7 @@ try:
     for key in a.classes.split(","):
         name, loop_args, assignment, cls = classes[key]
         walls = {"loop": [], "grade": []}
-        errors = []
+        errors, quarter = [], []
         for rep in range(a.reps):
             for kind in ("grade",) if a.grade_only else ("loop", "grade"):
                 before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -128,6 +156,8 @@ try:
                 walls[kind].append(wall)
                 if "progress_error" in info:
                     errors.append(info["progress_error"])
+                if "progress_error_max_after_quarter" in info:
+                    quarter.append(info)
                 print(json.dumps(dict({"class": name, "run": kind, "rep": rep, "seconds": round(wall, 1),
                                        "cpu_seconds": round(cpu, 1), "load": round(os.getloadavg()[0], 2)},
                                       **info)), flush=True)
@@ -135,6 +165,11 @@ try:
         line = {"class": name, "busy": bool(busy), "reps": a.reps,
                 "grade_s_median": round(statistics.median(walls["grade"]), 1),
                 "progress_error_max": max(errors) if errors else None}
+        if quarter:  # over the reps: the worst line's error, the median of the runs' medians
+            line.update({"progress_error_max_after_quarter":
+                         max(q["progress_error_max_after_quarter"] for q in quarter),
+                         "progress_error_median_after_quarter":
+                         statistics.median(q["progress_error_median_after_quarter"] for q in quarter)})
         if ratios:
             line.update({"loop_s_median": round(statistics.median(walls["loop"]), 1),
                          "ratio_median": round(statistics.median(ratios), 3),

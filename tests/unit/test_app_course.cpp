@@ -187,6 +187,40 @@ TEST(ClassProgress, TheSlowestJobSaysWhenTheClassIsDone) {
     EXPECT_NEAR(*pace.timeLeft(20, {{50, 100}, {20, 100}, {0, 50}}), 80.0, 1e-9);
 }
 
+// Rows come back a stage at a time (issue 39): at a steady 10 rows every 5 s, readings between
+// two stages say the true time left (it falls with the clock), where a pace taken to the
+// reading's time rose between stages (0.7 s a row at 12 s: 56 s for what takes 38).
+TEST(ClassProgress, BetweenStagesTheEstimateFallsWithTheClock) {
+    Pace pace;
+    ASSERT_TRUE(pace.timeLeft(5, {{10, 100}}));
+    for (int t = 10; t <= 30; ++t) {
+        const std::size_t done = std::size_t(10 + 10 * ((t - 5) / 5));  // a stage each 5 s
+        const std::optional<double> left = pace.timeLeft(t, {{done, 100}});
+        ASSERT_TRUE(left);
+        EXPECT_NEAR(*left, 50.0 - t, 1e-9) << "at " << t << " s, " << done << " rows done";
+    }
+}
+
+// A stage slower than the pace (a loop running to its budget) holds the estimate at what the
+// rows after it need: never 0 with a stage after it, never rising while nothing came back.
+TEST(ClassProgress, ASlowStageHoldsTheEstimateAtTheRowsAfterIt) {
+    Pace pace;
+    pace.timeLeft(5, {{10, 100}});
+    pace.timeLeft(10, {{20, 100}});  // 0.5 s a row, a step of 10 rows
+    double before = *pace.timeLeft(10, {{20, 100}});
+    for (int t = 11; t <= 60; ++t) {
+        const double left = *pace.timeLeft(t, {{20, 100}});
+        EXPECT_LE(left, before) << "at " << t << " s";
+        EXPECT_GE(left, 0.5 * 70 - 1e-9) << "at " << t << " s";  // the 70 rows after the step
+        before = left;
+    }
+    EXPECT_NEAR(before, 35.0, 1e-9);
+    // 70 rows came at last (0.7 s a row since the first reading): the 10 left are the next step
+    // and nothing comes after it, so it may run out.
+    EXPECT_NEAR(*pace.timeLeft(61, {{90, 100}}), 7.0, 1e-9);
+    EXPECT_NEAR(*pace.timeLeft(70, {{90, 100}}), 0.0, 1e-9);
+}
+
 TEST(ClassProgress, JobFilesReadOneByOneBadOnesCountNothing) {
     const std::string dir = ::testing::TempDir();
     const std::string a = dir + "/job-a.progress", b = dir + "/job-b.progress",
