@@ -87,5 +87,20 @@ TEST(Judge, ADisplacedViewIsHeldToOursWhenTheBoundIsOutOfReach) {
               Status::Fail);
 }
 
+// A floor under a figure near its best stands where the solution clears it: 36-41 dB of PSNR
+// over displaced views against a floor of 32 dB must not become 27 dB (a quarter of 36).
+TEST(Judge, AFloorTheSolutionClearsIsNotLowered) {
+    Expectation e;
+    e.outcome = "reflection right";
+    e.limits = {{"mirror_psnr_db", 32, NAN}, {"mirror_id_pct", 95, NAN}};
+    DisplacedFigures ours = {{"mirror_psnr_db", {36.28, 40.68}}, {"mirror_id_pct", {99.33, 99.65}}};
+    auto sixtyFour = judgeDisplaced(e, {{"mirror_psnr_db", 30.1}, {"mirror_id_pct", 99.5}}, &ours);
+    EXPECT_EQ(sixtyFour.status, Status::Fail) << sixtyFour.message;
+    auto idsLost = judgeDisplaced(e, {{"mirror_psnr_db", 37}, {"mirror_id_pct", 80}}, &ours);
+    EXPECT_EQ(idsLost.status, Status::Fail) << idsLost.message;
+    EXPECT_EQ(judgeDisplaced(e, {{"mirror_psnr_db", 33}, {"mirror_id_pct", 99}}, &ours).status,
+              Status::Pass);
+}
+
 }  // namespace
 }  // namespace sl
