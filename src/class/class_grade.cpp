@@ -216,7 +216,7 @@ class ClassGrading {
 
   private:
     void readClass();
-    bool solutionPassedBefore();
+    bool solutionPassedBefore(const std::string& checkKey);
     void chooseStudents();
     void takeIn();
     int gradeInJobs(OutLock& lock);
@@ -262,7 +262,7 @@ int ClassGrading::run() {
     useShaderCacheFolder(shaderCache.path());
     trees_ = solutionTrees(args_.solutions);
     const std::string checkKey = solutionCheckKey(in_.assignmentHash, trees_, *settings_.seed);
-    const bool checked = solutionPassedBefore();
+    const bool checked = solutionPassedBefore(checkKey);
     if (!checked) verifySolution(in_.a, trees_, settings_);
     createOut(args_.out);
     OutLock lock(args_.out);
@@ -313,9 +313,8 @@ void ClassGrading::readClass() {
 
 // True when an earlier run passed the same solution check (its key in --out); else says that the
 // solution is graded first.
-bool ClassGrading::solutionPassedBefore() {
-    const std::string key = solutionCheckKey(in_.assignmentHash, trees_, *settings_.seed);
-    if (solutionCheckPassed(args_.out, key)) {
+bool ClassGrading::solutionPassedBefore(const std::string& checkKey) {
+    if (solutionCheckPassed(args_.out, checkKey)) {
         std::cout << "the solution (" << trees_.describe() << ") passed "
                   << printableName(args_.assignment) << " in an earlier run: not graded again\n";
         return true;
