@@ -17,35 +17,57 @@ file(CREATE_LINK /usr/include/stb/stb_easy_font.h ${SL_WEB_INCLUDE}/stb_easy_fon
 file(CONFIGURE OUTPUT ${SL_WEB_INCLUDE}/shadowlab_glad.h
      CONTENT "#pragma once\n#include \"gl/gl_es3.h\"\n")
 
-find_program(SL_GLSLANG_VALIDATOR glslangValidator REQUIRED)
-find_program(SL_SPIRV_CROSS spirv-cross REQUIRED)
 find_program(SYSTEM_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH REQUIRED)
 
-# What runs in the browser: no PNG writer, sandbox, reference tracer, glslang or platform
-# contexts of the desktop (the page reads its pictures from the canvas).
+# glslang and SPIRV-Cross from Debian's source packages of the versions installed here
+# (scripts/web_sources.py), compiled to WebAssembly: the page accepts GLSL by the same glslang as
+# `check` (gl/glsl_standard.cpp) and translates it to ESSL 3.00 as Debian's spirv-cross tool does.
+execute_process(
+  COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/scripts/web_sources.py ${CMAKE_BINARY_DIR}/debian-src
+  OUTPUT_VARIABLE SL_WEB_SOURCE_DIRS RESULT_VARIABLE SL_WEB_SOURCES_RESULT)
+if(NOT SL_WEB_SOURCES_RESULT EQUAL 0)
+  message(FATAL_ERROR "glslang and SPIRV-Cross sources could not be fetched (above)")
+endif()
+string(STRIP "${SL_WEB_SOURCE_DIRS}" SL_WEB_SOURCE_DIRS)
+string(REPLACE "\n" ";" SL_WEB_SOURCE_DIRS "${SL_WEB_SOURCE_DIRS}")
+list(GET SL_WEB_SOURCE_DIRS 0 SL_WEB_GLSLANG_SOURCE)
+list(GET SL_WEB_SOURCE_DIRS 1 SL_WEB_SPIRV_CROSS_SOURCE)
+add_compile_options(-fexceptions)  # SPIRV-Cross reports a failed translation by throwing
+foreach(option ENABLE_HLSL ENABLE_OPT ENABLE_GLSLANG_BINARIES ENABLE_CTEST BUILD_EXTERNAL
+               ENABLE_SPVREMAPPER ENABLE_PCH SPIRV_CROSS_CLI SPIRV_CROSS_ENABLE_TESTS
+               SPIRV_CROSS_ENABLE_HLSL SPIRV_CROSS_ENABLE_MSL SPIRV_CROSS_ENABLE_CPP
+               SPIRV_CROSS_ENABLE_REFLECT SPIRV_CROSS_ENABLE_C_API SPIRV_CROSS_ENABLE_UTIL)
+  set(${option} OFF CACHE BOOL "the browser edition needs only the GLSL front end" FORCE)
+endforeach()
+set(SKIP_GLSLANG_INSTALL ON CACHE BOOL "" FORCE)
+set(SPIRV_CROSS_SKIP_INSTALL ON CACHE BOOL "" FORCE)
+add_subdirectory(${SL_WEB_GLSLANG_SOURCE} glslang EXCLUDE_FROM_ALL)
+add_subdirectory(${SL_WEB_SPIRV_CROSS_SOURCE} spirv-cross EXCLUDE_FROM_ALL)
+
+# What runs in the browser: no PNG writer, sandbox, reference tracer or platform contexts of the
+# desktop (the page reads its pictures from the canvas).
 file(GLOB SL_WEB_SOURCES CONFIGURE_DEPENDS
      src/io/*.cpp src/math/*.cpp src/scene/*.cpp src/gl/*.cpp src/render/*.cpp src/stages/*.cpp
      src/platform/webgl_context.cpp src/window/lessons.cpp src/web/*.cpp)
 list(FILTER SL_WEB_SOURCES EXCLUDE REGEX
-     "/(io/png|io/box|gl/glsl_standard|gl/loader|gl/machine)\\.cpp$")
-list(APPEND SL_WEB_SOURCES src/gl/glsl_standard_translated.cpp)
+     "/(io/png|io/box|gl/glsl_for_desktop|gl/loader|gl/machine)\\.cpp$")
+list(APPEND SL_WEB_SOURCES ${SL_WEB_GLSLANG_SOURCE}/StandAlone/ResourceLimits.cpp)
 
 set(SL_WEB_DATA ${CMAKE_BINARY_DIR}/data)
 file(GLOB_RECURSE SL_WEB_SHADERS CONFIGURE_DEPENDS shaders_core/* scenes/* slides_examples/*)
 add_custom_command(
   OUTPUT ${SL_WEB_DATA}/shaders_core.stamp
   COMMAND ${CMAKE_COMMAND} -E rm -rf ${SL_WEB_DATA}
-  COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/scripts/web_shaders.py
-          ${CMAKE_SOURCE_DIR}/shaders_core ${SL_WEB_DATA}/shaders_core
+  COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/shaders_core
+          ${SL_WEB_DATA}/shaders_core
   COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/scenes ${SL_WEB_DATA}/scenes
   COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/slides_examples
           ${SL_WEB_DATA}/slides_examples
   COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/src/stages/expectations.json
           ${SL_WEB_DATA}/src/stages/expectations.json
   COMMAND ${CMAKE_COMMAND} -E touch ${SL_WEB_DATA}/shaders_core.stamp
-  DEPENDS ${SL_WEB_SHADERS} ${CMAKE_SOURCE_DIR}/scripts/web_shaders.py
-          ${CMAKE_SOURCE_DIR}/src/stages/expectations.json
-  COMMENT "The page's data: shaders_core in ESSL 3.00 (glslang -> SPIR-V -> spirv-cross), scenes, lessons"
+  DEPENDS ${SL_WEB_SHADERS} ${CMAKE_SOURCE_DIR}/src/stages/expectations.json
+  COMMENT "The page's data: shaders_core (translated in the page), scenes, lessons"
   VERBATIM)
 add_custom_target(web_data DEPENDS ${SL_WEB_DATA}/shaders_core.stamp)
 
@@ -53,7 +75,11 @@ add_executable(shadowlab_web ${SL_WEB_SOURCES})
 add_dependencies(shadowlab_web web_data)
 target_include_directories(shadowlab_web PRIVATE src)
 target_include_directories(shadowlab_web SYSTEM PRIVATE ${SL_WEB_INCLUDE})  # Debian's headers
-target_compile_definitions(shadowlab_web PRIVATE GLM_FORCE_CTOR_INIT)
+target_compile_definitions(shadowlab_web PRIVATE GLM_FORCE_CTOR_INIT
+                           SHADOWLAB_GLSLANG_RESOURCES_HEADER=1)
+target_link_libraries(shadowlab_web PRIVATE glslang SPIRV spirv-cross-glsl)
+target_include_directories(shadowlab_web SYSTEM PRIVATE ${SL_WEB_GLSLANG_SOURCE}
+                           ${SL_WEB_SPIRV_CROSS_SOURCE})
 set_property(SOURCE src/io/data_paths.cpp APPEND PROPERTY  # the embedded data (web_main.cpp)
              COMPILE_DEFINITIONS SHADOWLAB_SOURCE_DIR="/data")
 target_compile_options(shadowlab_web PRIVATE -Wall -Wextra -Wno-unused-parameter -fexceptions)

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "gl/glsl_for_driver.h"
 #include "gl/glsl_standard.h"
 #include "gl/source_rules.h"
 #include "io/files.h"
@@ -239,9 +240,11 @@ std::string mapLog(const std::string& log, const std::vector<std::string>& files
 }
 
 template <class ShaderHandle>
-ShaderHandle compile(const Expanded& src, const char* kind) {
+ShaderHandle compile(const Expanded& src, ShaderKind which) {
+    const char* kind = which == ShaderKind::Vertex ? "vertex" : "fragment";
     ShaderHandle shader = ShaderHandle::create();
-    const char* text = src.text.c_str();
+    const std::string driverText = glslForDriver(src, which);
+    const char* text = driverText.c_str();
     glShaderSource(shader.id(), 1, &text, nullptr);
     glCompileShader(shader.id());
     GLint ok = GL_FALSE;
@@ -397,8 +400,8 @@ ProgramSource ShaderLibrary::standardProgram(const std::string& stage,
 ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::string& pass) const {
     Expanded vert, frag;
     auto source = std::make_shared<const ProgramSource>(checkedSource(stage, pass, vert, frag));
-    VertexShader vs = compile<VertexShader>(vert, "vertex");
-    FragmentShader fs = compile<FragmentShader>(frag, "fragment");
+    VertexShader vs = compile<VertexShader>(vert, ShaderKind::Vertex);
+    FragmentShader fs = compile<FragmentShader>(frag, ShaderKind::Fragment);
 
     ProgramHandle program = ProgramHandle::create();
     glAttachShader(program.id(), vs.id());
