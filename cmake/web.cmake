@@ -48,7 +48,7 @@ add_subdirectory(${SL_WEB_SPIRV_CROSS_SOURCE} spirv-cross EXCLUDE_FROM_ALL)
 # desktop (the page reads its pictures from the canvas).
 file(GLOB SL_WEB_SOURCES CONFIGURE_DEPENDS
      src/io/*.cpp src/math/*.cpp src/scene/*.cpp src/gl/*.cpp src/render/*.cpp src/stages/*.cpp
-     src/platform/webgl_context.cpp src/window/lessons.cpp src/web/*.cpp)
+     src/platform/webgl_context.cpp src/window/lessons.cpp src/grade/intake.cpp src/web/*.cpp)
 list(FILTER SL_WEB_SOURCES EXCLUDE REGEX
      "/(io/png|io/box|gl/glsl_for_desktop|gl/loader|gl/machine)\\.cpp$")
 list(APPEND SL_WEB_SOURCES ${SL_WEB_GLSLANG_SOURCE}/StandAlone/ResourceLimits.cpp)
@@ -87,9 +87,13 @@ set_target_properties(shadowlab_web PROPERTIES OUTPUT_NAME shadowlab SUFFIX .js
                       RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/site)
 target_link_options(shadowlab_web PRIVATE
   -fexceptions -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sSINGLE_FILE=1
-  -sALLOW_MEMORY_GROWTH=1 -sEXPORTED_RUNTIME_METHODS=ccall,cwrap
+  -sALLOW_MEMORY_GROWTH=1 -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,FS
   "SHELL:--embed-file ${SL_WEB_DATA}@/data")
-add_custom_command(TARGET shadowlab_web POST_BUILD
+# The page: copied whenever it changes (not only when the program relinks).
+add_custom_command(
+  OUTPUT ${CMAKE_BINARY_DIR}/site/index.html
   COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/src/web/index.html
           ${CMAKE_BINARY_DIR}/site/index.html
+  DEPENDS ${CMAKE_SOURCE_DIR}/src/web/index.html
   VERBATIM)
+add_custom_target(web_page ALL DEPENDS ${CMAKE_BINARY_DIR}/site/index.html)

@@ -67,10 +67,11 @@ esac
 packages=("${common[@]}" "${run[@]}" "${course[@]}")
 [ "$mode" = test ] && packages+=("${test[@]}")
 # The browser edition (docs/web.md): Debian 12's emscripten 3.1.6 with its prebuilt system
-# libraries, the shader translation (glslang-tools above, spirv-cross) and the browser tests.
+# libraries; spirv-cross (its version names the source package scripts/web_sources.py fetches
+# with glslang's, unpacked by dpkg-dev's dpkg-source) and the browser tests.
 if [ -n "${web_wanted:-}" ]; then
   if [ "$system" = "Debian 12" ]; then
-    packages+=(emscripten spirv-cross chromium chromium-driver python3-selenium)
+    packages+=(emscripten spirv-cross dpkg-dev chromium chromium-driver python3-selenium)
   else
     echo "deps: --web: the browser edition is built and tested on Debian 12 only; skipped on $system" >&2
   fi

@@ -11,5 +11,5 @@ add_test(NAME web_browser
                  --site ${SL_WEB_SITE} --shadowlab $<TARGET_FILE:shadowlab>
                  --out ${CMAKE_BINARY_DIR}/web)
 # Chromium's SwiftShader takes both cores while it draws.
-set_tests_properties(web_browser PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 180
+set_tests_properties(web_browser PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 420
                      RUN_SERIAL TRUE)

@@ -1,6 +1,5 @@
 // Desktop OpenGL compiles the checked GLSL as it is (gl/glsl_for_driver.h).
 #include "gl/glsl_for_driver.h"
-
 #include "gl/glsl_standard.h"
 
 namespace sl {

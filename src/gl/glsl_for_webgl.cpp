@@ -3,16 +3,15 @@
 // Debian's, compiled to WebAssembly: scripts/web_sources.py). The translation keeps every name
 // and expression; only types gain precisions and vertex inputs lose the locations glslang gave
 // them (glBindAttribLocation decides them, as on the desktop).
-#include "gl/glsl_for_driver.h"
-
 #include <SPIRV/GlslangToSpv.h>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
-#include <spirv_glsl.hpp>
 
+#include <spirv_glsl.hpp>
 #include <string>
 #include <vector>
 
+#include "gl/glsl_for_driver.h"
 #include "gl/glsl_standard.h"
 #include "gl/shader_library.h"
 
@@ -53,7 +52,8 @@ std::vector<unsigned> toSpirv(const GlslSource& source, EShLanguage language) {
 std::string glslForDriver(const GlslSource& source, ShaderKind kind) {
     const bool vertex = kind == ShaderKind::Vertex;
     try {
-        spirv_cross::CompilerGLSL compiler(toSpirv(source, vertex ? EShLangVertex : EShLangFragment));
+        spirv_cross::CompilerGLSL compiler(
+            toSpirv(source, vertex ? EShLangVertex : EShLangFragment));
         auto options = compiler.get_common_options();
         options.es = true;
         options.version = 300;
@@ -64,8 +64,10 @@ std::string glslForDriver(const GlslSource& source, ShaderKind kind) {
                 compiler.unset_decoration(input.id, spv::DecorationLocation);
         return compiler.compile();
     } catch (const spirv_cross::CompilerError& e) {
-        throw ShaderError(fileName(source) + ": error: SPIRV-Cross could not translate it to ESSL "
-                          "3.00: " + e.what());
+        throw ShaderError(fileName(source) +
+                          ": error: SPIRV-Cross could not translate it to ESSL "
+                          "3.00: " +
+                          e.what());
     }
 }
 

@@ -239,11 +239,10 @@ std::string mapLog(const std::string& log, const std::vector<std::string>& files
     return out.str();
 }
 
+// Compiles `driverText` (gl/glsl_for_driver.h: `src` itself, or its translation).
 template <class ShaderHandle>
-ShaderHandle compile(const Expanded& src, ShaderKind which) {
-    const char* kind = which == ShaderKind::Vertex ? "vertex" : "fragment";
+ShaderHandle compile(const Expanded& src, const std::string& driverText, const char* kind) {
     ShaderHandle shader = ShaderHandle::create();
-    const std::string driverText = glslForDriver(src, which);
     const char* text = driverText.c_str();
     glShaderSource(shader.id(), 1, &text, nullptr);
     glCompileShader(shader.id());
@@ -400,8 +399,10 @@ ProgramSource ShaderLibrary::standardProgram(const std::string& stage,
 ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::string& pass) const {
     Expanded vert, frag;
     auto source = std::make_shared<const ProgramSource>(checkedSource(stage, pass, vert, frag));
-    VertexShader vs = compile<VertexShader>(vert, ShaderKind::Vertex);
-    FragmentShader fs = compile<FragmentShader>(frag, ShaderKind::Fragment);
+    std::string vertText = glslForDriver(vert, ShaderKind::Vertex);
+    std::string fragText = glslForDriver(frag, ShaderKind::Fragment);
+    VertexShader vs = compile<VertexShader>(vert, vertText, "vertex");
+    FragmentShader fs = compile<FragmentShader>(frag, fragText, "fragment");
 
     ProgramHandle program = ProgramHandle::create();
     glAttachShader(program.id(), vs.id());
@@ -443,6 +444,8 @@ ShaderLibrary::Entry ShaderLibrary::build(const std::string& stage, const std::s
     e.program.setOrigin(files);
     e.files = vert.files;
     e.files.insert(e.files.end(), frag.files.begin(), frag.files.end());
+    e.driverTexts = {{printableName(vert.files[0]), std::move(vertText)},
+                     {printableName(frag.files[0]), std::move(fragText)}};
     e.source = std::move(source);
     // Any file read from the overlay (a pass file or an include) makes it the student's program.
     e.program.setStudentFiles(studentNames(e.files));
@@ -518,6 +521,15 @@ Program& ShaderLibrary::program(const std::string& stage, const std::string& pas
     auto it = programs_.find(key);
     if (it == programs_.end()) it = programs_.emplace(key, build(stage, pass)).first;
     return it->second.program;
+}
+
+std::vector<std::pair<std::string, std::string>> ShaderLibrary::driverTexts(
+    const std::string& stage) const {
+    std::vector<std::pair<std::string, std::string>> texts;
+    for (const auto& [key, entry] : programs_)
+        if (key.rfind(stage + "/", 0) == 0)
+            texts.insert(texts.end(), entry.driverTexts.begin(), entry.driverTexts.end());
+    return texts;
 }
 
 std::set<std::string> ShaderLibrary::ignoredUniforms(const std::string& stage) const {

@@ -10,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gl/program.h"
@@ -44,6 +45,10 @@ class ShaderLibrary {
     // The program for stage/pass, built on first use. Throws ShaderError when it cannot be
     // built and no earlier good version exists.
     Program& program(const std::string& stage, const std::string& pass);
+
+    // What the driver compiled for each program of `stage` built so far, {file, text} per stage
+    // file (gl/glsl_for_driver.h): the expanded GLSL on desktop, its ESSL 3.00 in the browser.
+    std::vector<std::pair<std::string, std::string>> driverTexts(const std::string& stage) const;
 
     // The uniforms the built programs of `stage` (its folder) were given but do not read.
     std::set<std::string> ignoredUniforms(const std::string& stage) const;
@@ -89,7 +94,8 @@ class ShaderLibrary {
         Program program;
         std::vector<std::string> files;  // every file read, for change detection
         std::vector<long long> stamps;
-        std::shared_ptr<const ProgramSource> source;  // what the source rules read
+        std::shared_ptr<const ProgramSource> source;                   // what the source rules read
+        std::vector<std::pair<std::string, std::string>> driverTexts;  // {file, what was compiled}
         // sourceNotes' findings by the rules asked (a stage's rules live as long as the program):
         // every row of a stage asks again.
         mutable std::map<const void*, std::vector<std::string>> findings;

@@ -24,9 +24,9 @@ namespace {
 // The loader's own bounds (src/gl/shader_library.cpp): no shader file above 1 MiB is read. A
 // submission is a handful of shaders; these keep a hostile one (a million files, a deep tree, a
 // disc image) from costing more than a moment.
-constexpr std::size_t kMaxFileBytes = 1u << 20;
-constexpr std::size_t kMaxTotalBytes = 16u << 20;
-constexpr int kMaxEntries = 2048;  // directory entries looked at, junk included
+constexpr std::size_t kMaxFileBytes = kIntakeLimits.fileBytes;
+constexpr std::size_t kMaxTotalBytes = kIntakeLimits.totalBytes;
+constexpr int kMaxEntries = kIntakeLimits.entries;
 constexpr int kMaxDepth = 12;
 constexpr int kMaxWrappers = 3;  // lone folders descended (jdoe_lab4/lab4/...)
 constexpr std::size_t kMaxNotes = 12;

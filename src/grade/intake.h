@@ -8,6 +8,7 @@
 // a student who edits or swaps files meanwhile changes nothing.
 #pragma once
 
+#include <cstddef>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -38,6 +39,15 @@ class NothingHandedIn : public IntakeError {
   public:
     using IntakeError::IntakeError;
 };
+
+// The bounds of one submission (the loader reads no shader file above 1 MiB): a handful of
+// shaders fits easily; a hostile one (a million files, a disc image) costs a moment. The browser
+// edition copies no more than these into its memory before the intake sees them.
+struct IntakeLimits {
+    std::size_t fileBytes, totalBytes;
+    int entries;  // directory entries looked at, junk included
+};
+constexpr IntakeLimits kIntakeLimits{1u << 20, 16u << 20, 2048};
 
 struct Submission {
     std::string source;              // the folder as given

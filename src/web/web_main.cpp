@@ -6,9 +6,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <memory>
 #include <string>
 
+#include "grade/intake.h"
+#include "io/files.h"
 #include "math/orbit.h"
 #include "platform/webgl_context.h"
 #include "stages/registry.h"
@@ -20,8 +24,11 @@ namespace {
 struct Page {
     sl::RenderRequest request;
     std::unique_ptr<sl::Renderer> renderer;
-    int lesson = -1;   // the current stage's lesson on screen (-1: the defaults)
-    std::string text;  // the last string handed to the page
+    int lesson = -1;          // the current stage's lesson on screen (-1: the defaults)
+    std::string overlay;      // the student's snapshot (intake), laid over ours; "" for none
+    int snapshots = 0;        // snapshots taken: each in a fresh folder
+    std::string snapshotDir;  // the folder holding `overlay`
+    std::string text;         // the last string handed to the page
 };
 
 Page& page() {
@@ -58,16 +65,46 @@ std::vector<const sl::WindowLesson*> stageLessons(const std::string& stage) {
     return found;
 }
 
-// Rebuilds the renderer for `request` and draws; "" or the one-line reason.
+// A request for `stage` at the canvas's size over the student's shaders, the rest defaults.
+sl::RenderRequest baseRequest(const std::string& stage) {
+    sl::RenderRequest request;
+    request.width = page().request.width;
+    request.height = page().request.height;
+    request.stage = stage;
+    request.overlay = page().overlay;
+    return request;
+}
+
+// `text` with the page's copy of a student's folder named as the student picked it
+// ("mywork/margin/lit.frag"), not where the page keeps it.
+std::string asPicked(std::string text, const std::string& copy, const std::string& name) {
+    for (std::size_t at = 0; (at = text.find(copy, at)) != std::string::npos; at += name.size())
+        text.replace(at, copy.size(), name);
+    return text;
+}
+
+// Rebuilds the renderer for `request` and draws; "" or the one-line reason. What fails to build
+// or draw (a student's compile error) leaves the last good renderer and its picture.
 std::string show(const sl::RenderRequest& request) {
     Page& p = page();
+    std::unique_ptr<sl::Renderer> previous = std::move(p.renderer);
+    sl::RenderRequest previousRequest = p.request;
     try {
         sl::validateRequest(request);
         p.renderer = sl::makeRenderer(request);
         p.request = request;
         return drawFrame();
     } catch (const std::exception& e) {
-        return e.what();
+        std::string message = e.what();
+        p.renderer = std::move(previous);
+        p.request = previousRequest;
+        if (p.renderer) {
+            try {
+                drawFrame();
+            } catch (const std::exception&) {  // the message above is the one that matters
+            }
+        }
+        return message;
     }
 }
 
@@ -101,12 +138,8 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_select(const char* id) {
                         "' needs desktop OpenGL's fixed function or GLSL 1.20, which WebGL lacks: "
                         "run the native program (shadowlab window --stage " +
                         info->id + ")");
-    sl::RenderRequest request;  // the stage's defaults: scene, camera, parameters, view
-    request.width = p.request.width;
-    request.height = p.request.height;
-    request.stage = id;
-    p.lesson = -1;
-    return handOver(show(request));
+    p.lesson = -1;  // the stage's defaults: scene, camera, parameters, view
+    return handOver(show(baseRequest(id)));
 }
 
 // The window's 'n': the stage's next lesson with its settings (scene, values, view) applied,
@@ -116,10 +149,7 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_next_lesson() {
     auto lessons = stageLessons(p.request.stage);
     if (lessons.empty()) return handOver("");
     p.lesson = p.lesson + 1 < static_cast<int>(lessons.size()) ? p.lesson + 1 : -1;
-    sl::RenderRequest request;
-    request.width = p.request.width;
-    request.height = p.request.height;
-    request.stage = p.request.stage;
+    sl::RenderRequest request = baseRequest(p.request.stage);
     if (p.lesson >= 0) {
         const sl::WindowLesson& l = *lessons[static_cast<std::size_t>(p.lesson)];
         if (!l.scene.empty()) {
@@ -205,6 +235,93 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_notes() {
     std::string text;
     if (page().renderer)
         for (const auto& note : page().renderer->stats.notes) text += note + "\n";
+    return handOver(text);
+}
+
+// Takes the student's folder (the page wrote it under /student) as `--shaders` does: the same
+// intake (wrapper folders, junk, near misses named in notes), a private snapshot laid over our
+// tree, then the current stage redrawn with it. Messages name files under `name` (the folder as
+// the student picked it). "NOTES\tERROR\tREAD": the intake's notes one a line; ERROR "" or the
+// one line that refused the folder or failed to compile (the last good picture stays); READ the
+// folder the intake read inside the one picked ("" for itself). An empty `folder` goes back to
+// our shaders.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_student_folder(const char* folder, const char* name) {
+    Page& p = page();
+    std::string notes;
+    std::string overlay;
+    std::string read;
+    std::string snapshot;
+    if (*folder) {
+        snapshot = "/student/snapshot-" + std::to_string(++p.snapshots);
+        try {
+            std::filesystem::create_directories(snapshot);
+            sl::Submission taken =
+                sl::takeSubmission(folder, snapshot, sl::shippedTrees().both, {p.request.stage});
+            std::filesystem::remove_all(folder);  // the snapshot is what is drawn
+            // Messages name the student's own folder (its name as picked), never the copies.
+            read = taken.folder.substr(std::min(taken.folder.size(), std::strlen(folder) + 1));
+            sl::showFolderAs(taken.root, std::string(name) + (read.empty() ? "" : "/" + read));
+            for (const auto& note : taken.notes) notes += asPicked(note, folder, name) + "\n";
+            overlay = taken.root;
+        } catch (const std::exception& e) {
+            std::filesystem::remove_all(folder);
+            std::filesystem::remove_all(snapshot);
+            return handOver(notes + "\t" + asPicked(e.what(), folder, name) + "\t");
+        }
+    }
+    std::string before = p.overlay;
+    p.overlay = overlay;
+    sl::RenderRequest request = baseRequest(p.request.stage);
+    request.scene = p.request.scene;
+    request.sceneGiven = p.request.sceneGiven;
+    request.sets = p.request.sets;
+    request.view = p.request.view;
+    std::string error = show(request);
+    bool adopted = p.request.overlay == overlay;
+    if (!adopted) p.overlay = before;
+    // The page's memory holds one snapshot: the one drawn.
+    std::string dropped = adopted ? p.snapshotDir : snapshot;
+    if (adopted) p.snapshotDir = snapshot;
+    if (!dropped.empty()) std::filesystem::remove_all(dropped);
+    return handOver(notes + "\t" + error + "\t" + read);
+}
+
+// The intake's bounds (grade/intake.h), "entries\tfileBytes\ttotalBytes": the page copies no
+// more than one past each into memory, so the intake itself says what was too much.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_intake_limits() {
+    return handOver(std::to_string(sl::kIntakeLimits.entries) + "\t" +
+                    std::to_string(sl::kIntakeLimits.fileBytes) + "\t" +
+                    std::to_string(sl::kIntakeLimits.totalBytes));
+}
+
+// What `check` notes of the student's files of the stage on screen, one a line: the stage's
+// source rules (gl/source_rules.h) and uniforms a student's pass uses but the stage never sets.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_student_notes() {
+    Page& p = page();
+    std::string text;
+    if (!p.renderer || p.overlay.empty()) return handOver(text);
+    sl::ShaderLibrary& shaders = p.renderer->shaders();
+    std::vector<std::string> notes;
+    if (const sl::StageDefinition* stage = sl::findStage(p.request.stage))
+        notes = shaders.sourceNotes(p.request.stage, stage->sourceRules);
+    for (const auto& note : shaders.unsetUniformNotes(p.request.stage)) notes.push_back(note);
+    for (const auto& note : notes) text += sl::withShownFolders(note) + "\n";
+    return handOver(text);
+}
+
+// The stage whose picture is on screen: a stage whose shaders failed leaves the last good one.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_stage_on_screen() {
+    return handOver(page().renderer ? page().request.stage : "");
+}
+
+// What WebGL compiled for the stage on screen: each stage file's ESSL 3.00 translation
+// (gl/glsl_for_driver.h), "// FILE" before each.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_translation() {
+    std::string text;
+    if (page().renderer)
+        for (const auto& [file, essl] :
+             page().renderer->shaders().driverTexts(page().request.stage))
+            text += "// " + file + "\n" + essl + "\n";
     return handOver(text);
 }
 

@@ -10,9 +10,11 @@ Exit 77 (ctest: skipped) with the reason when emscripten's build, Chromium or Se
 unless SHADOWLAB_WEB_REQUIRED=1 (CI's web step, which built the site first)."""
 import argparse
 import base64
+import concurrent.futures
 import json
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -115,6 +117,134 @@ def parameters(driver, stage):
     return []
 
 
+# A student's folder through the page's folder picker (Selenium hands the input a folder): the
+# picked folder's name, the state line and the message over the picture.
+TAKE = """
+const [done] = arguments;
+const wait = () => shadowlab.student.taken > shadowlab.takenBefore
+  ? done([shadowlab.lastMessage, document.getElementById('studentState').textContent,
+          shadowlab.stages[shadowlab.current].id, shadowlab.student.read])
+  : setTimeout(wait, 50);
+wait();
+"""
+
+
+def pick_folder(driver, folder):
+    """Hands `folder` to the page's folder input; returns [message, state line, stage shown,
+    the folder the intake read inside it]."""
+    field = driver.find_element("id", "folder")
+    driver.execute_script("arguments[0].value = ''; shadowlab.takenBefore = shadowlab.student.taken",
+                          field)
+    field.send_keys(str(folder.resolve()))
+    return driver.execute_async_script(TAKE)
+
+
+def native_render(shadowlab, stage, folder, png, sets=()):
+    """Native `render --shaders`: None when it drew `png`, else its first `FILE:LINE: error:`
+    line with the folder cut (or its whole stderr when it printed none)."""
+    run = subprocess.run([shadowlab, "render", "--stage", stage, "--shaders", str(folder),
+                          "--out", str(png)] + [a for s in sets for a in ("--set", s)],
+                         capture_output=True, text=True)
+    if run.returncode == 0:
+        return None
+    for line in run.stderr.splitlines():
+        if ": error: " in line and line.split(":")[1].isdigit():
+            return line.replace(str(folder) + "/", "")
+    return run.stderr.strip().replace("shadowlab: shader error: ", "").replace(str(folder) + "/", "")
+
+
+def canvas_url(driver):
+    return driver.execute_script("return document.getElementById('canvas').toDataURL()")
+
+
+def differing_share(driver, native_png, args):
+    url = "data:image/png;base64," + base64.b64encode(native_png.read_bytes()).decode()
+    r = driver.execute_async_script(COMPARE, url, args.channel_tolerance)
+    return r.get("differ", 1) / r.get("total", 1), r
+
+
+def student_folder(driver, args, out, case_dir):
+    """One corpus hand-in (tests/students/CASE, its case.json) picked in the page over its stage:
+    the intake's notes the case expects are shown; where native `render --shaders` (on the
+    folder the intake read) draws, the page draws the same picture; where native refuses it
+    with a `FILE:LINE: error:` line, the page shows that line over the picture and the last good
+    picture stays. Returns the failures."""
+    case = json.loads((case_dir / "case.json").read_text())
+    folder = case_dir / case.get("submission", "")
+    stage = case["stage"]
+    driver.execute_script("shadowlab.takeFolder('', ''); shadowlab.selectId(arguments[0])", stage)
+    before = canvas_url(driver)
+    started = time.monotonic()
+    message, state, shown, read = pick_folder(driver, folder)
+    took = time.monotonic() - started
+    failures = [f"{case_dir.name}: the page's notes {state!r} lack {note!r}"
+                for note in case.get("notes", []) if note not in state]
+    native = out / f"native_student_{case_dir.name}.png"
+    rendered = args.prerendered.get(case_dir.name)
+    error = rendered.result() if rendered and not read else \
+        native_render(args.shadowlab, stage, folder / read, native)
+    if error is None:
+        share, r = differing_share(driver, native, args)
+        said = ""
+        if share > args.pixel_tolerance and stage in args.float_compare_stages:
+            # docs/web.md: the browser's 24-bit map compares as a float one (no clamp of the
+            # reference to [0, 1]); native's float map must then draw the page's picture.
+            native_render(args.shadowlab, stage, folder / read, native, ["depth-format=32f"])
+            share, r = differing_share(driver, native, args)
+            said = " (against native depth-format=32f: docs/web.md's float compare)"
+        print(f"web: student {case_dir.name:34} drawn in {took:.2f} s: {share:7.3%} of pixels "
+              f"differ from native --shaders{said}")
+        if message or share > args.pixel_tolerance:
+            pathlib.Path(out, f"web_student_{case_dir.name}.png").write_bytes(
+                base64.b64decode(r["png"].split(",", 1)[1]))
+            failures.append(f"{case_dir.name}: the page says {message!r}; {share:.3%} of pixels "
+                            f"differ")
+        return failures
+    if not (out / "page_student_error.png").exists():  # what a student sees (docs/web.md)
+        driver.save_screenshot(str(out / "page_student_error.png"))
+    kept = canvas_url(driver) == before and shown == stage
+    named = "/".join(filter(None, [folder.name, read, error]))  # as the student picked it
+    ok = named in message.splitlines() and kept
+    print(f"web: student {case_dir.name:34} refused in {took:.2f} s as native: {error!r}: "
+          f"{'ok' if ok else 'NO'}")
+    if not ok:
+        failures.append(f"{case_dir.name}: the page says {message!r} (stage {shown}), native "
+                        f"{named!r}; last good picture kept: {kept}")
+    return failures
+
+
+def student_cases(driver, args, corpus):
+    """The corpus's core-tree hand-ins of stages the page runs (their case.json says which)."""
+    runs = set(driver.execute_script("return shadowlab.stages.filter(s => !s.nativeOnly)"
+                                     ".map(s => s.id)"))
+    for folder in sorted(p for p in corpus.iterdir() if (p / "case.json").is_file()):
+        case = json.loads((folder / "case.json").read_text())
+        if case.get("tree") == "core" and case.get("verdict") != "MISSING" and \
+                case.get("stage") in runs and re.search(args.students, folder.name):
+            yield folder
+
+
+def prerender(driver, args, out, corpus, pool):
+    """Native renders of every case's folder, started while the browser works (two at a time:
+    the page waits on them, not the other way round)."""
+    args.prerendered = {}
+    for folder in student_cases(driver, args, corpus):
+        case = json.loads((folder / "case.json").read_text())
+        args.prerendered[folder.name] = pool.submit(
+            native_render, args.shadowlab, case["stage"], folder / case.get("submission", ""),
+            out / f"native_student_{folder.name}.png")
+
+
+def student_folders(driver, args, out, corpus):
+    """Every core-tree hand-in of the student corpus whose stage the page runs (its case.json
+    says which), through the page's folder picker. Returns the failures."""
+    failures = []
+    for folder in student_cases(driver, args, corpus):
+        failures += student_folder(driver, args, out, folder)
+    driver.execute_script("shadowlab.takeFolder('', '')")
+    return failures
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--site", required=True)
@@ -122,6 +252,8 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--channel-tolerance", type=int, default=8)
     ap.add_argument("--pixel-tolerance", type=float, default=0.01)
+    ap.add_argument("--students", default="", help="only the corpus cases this regex finds")
+    ap.add_argument("--students-only", action="store_true", help="skip the stages' own tour")
     args = ap.parse_args()
     page = pathlib.Path(args.site, "index.html").resolve()
     if not pathlib.Path(args.site, "shadowlab.js").exists():
@@ -131,8 +263,14 @@ def main():
     stages = json.loads(subprocess.run([args.shadowlab, "stages", "--json"], check=True,
                                        capture_output=True, text=True).stdout)
     stages = stages["stages"] if isinstance(stages, dict) else stages
+    # Stages whose map is 24-bit by default and may be float: there the browser's float compare
+    # (docs/web.md) is checked against native's float map.
+    args.float_compare_stages = {
+        s["id"] for s in stages for p in s["parameters"]
+        if p["name"] == "depth-format" and p.get("default") == "24" and "32f" in p.get("choices", [])}
     failures = []
     driver = browser()
+    pool = concurrent.futures.ThreadPoolExecutor(2)
     try:
         started = time.monotonic()
         driver.get(page.as_uri())
@@ -148,8 +286,10 @@ def main():
         ids = driver.execute_script("return shadowlab.stages.map(s => s.id)")
         if ids != [s["id"] for s in stages]:
             failures.append(f"the page lists {ids}, the native program {[s['id'] for s in stages]}")
+        corpus = pathlib.Path(__file__).resolve().parents[1] / "students"
+        prerender(driver, args, out, corpus, pool)
         body = driver.find_element("tag name", "body")
-        for index, stage in enumerate(stages):
+        for index, stage in enumerate([] if args.students_only else stages):
             body.send_keys(str(index))  # the window's key for the stage
             current, message = driver.execute_script(
                 "return [shadowlab.current, shadowlab.lastMessage]")
@@ -184,9 +324,11 @@ def main():
                   f"{args.channel_tolerance}/255 (worst {r['worst']}): {verdict}")
             if verdict != "ok":
                 failures.append(f"{stage['id']}: {share:.3%} of pixels differ")
+        failures += student_folders(driver, args, out, corpus)
         body.send_keys("2")  # the whole page as a student sees it at 1920x1080 (the README's)
         driver.save_screenshot(str(out / "page_1920x1080.png"))
     finally:
+        pool.shutdown(cancel_futures=True)
         driver.quit()
     for f in failures:
         print(f"web: FAILED: {f}")
