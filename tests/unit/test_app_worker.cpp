@@ -211,6 +211,21 @@ TEST(Worker, ASeriesSharesItsWorkerUntilAJobFails) {
     EXPECT_LT(seconds, 3.0);
 }
 
+// Should the parent stop watching, the kernel ends a worker at twice its CPU budget (plus 10 s):
+// SIGXCPU, then SIGKILL a second later.
+TEST(Worker, TheKernelsBackstopIsTwiceTheBudget) {
+    Limits l;
+    l.cpuSeconds = 1.5;
+    l.wallSeconds = 60;
+    WorkerOutcome o = runBounded(l, [] {
+        struct rlimit cpu;
+        ::getrlimit(RLIMIT_CPU, &cpu);
+        return nlohmann::json{cpu.rlim_cur, cpu.rlim_max};
+    });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Ok) << o.detail();
+    EXPECT_EQ(o.value, nlohmann::json({13, 14}));
+}
+
 // The window's trial at its floor: a job past its CPU time is held (stopped, not killed) and
 // goes on from where it stood when given more (no rerun of what it had done): it sees the time
 // it was held as one gap, uses no CPU meanwhile, and runs under a CPU backstop raised for its
