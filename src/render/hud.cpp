@@ -10,13 +10,9 @@
 
 namespace sl {
 
-namespace {
-
-float textWidth(const std::string& s) {
+float hudTextWidth(const std::string& s) {
     return static_cast<float>(stb_easy_font_width(const_cast<char*>(s.c_str())));
 }
-
-}  // namespace
 
 float hudScale(int width, int height) {
     // 200 rows of HUD pixels on the smaller side: 7-pixel glyphs are 3.5 % of a projected
@@ -29,10 +25,10 @@ std::vector<HudLine> wrapHudLines(const std::vector<HudLine>& lines, float maxPi
     for (const HudLine& line : lines) {
         std::string rest = line.text;
         // Every piece takes at least one character, so this ends even in a 1-pixel window.
-        while (textWidth(rest) > maxPixels && rest.size() > 1) {
+        while (hudTextWidth(rest) > maxPixels && rest.size() > 1) {
             // The longest prefix that fits, ended at a space when there is one.
             std::size_t fit = 1;
-            while (fit < rest.size() && textWidth(rest.substr(0, fit + 1)) <= maxPixels) ++fit;
+            while (fit < rest.size() && hudTextWidth(rest.substr(0, fit + 1)) <= maxPixels) ++fit;
             std::size_t cut = rest.rfind(' ', fit);
             if (cut == std::string::npos || cut == 0) cut = fit;
             out.push_back({rest.substr(0, cut), line.color});
@@ -169,7 +165,7 @@ std::vector<HudPanel> layoutHud(const std::vector<HudBlock>& blocks, int width, 
         p.x = c * w / 2 + kHudMargin;
         p.width = 0;
         for (const auto& l : p.lines)
-            p.width = std::max(p.width, textWidth(l.text) + 2 * Hud::kPad);
+            p.width = std::max(p.width, hudTextWidth(l.text) + 2 * Hud::kPad);
         p.height = p.lines.size() * Hud::kLineHeight + 2 * Hud::kPad - 3;
         p.y = block.bottom ? bottom[c] - p.height : top[c];
         p.bottom = block.bottom;
@@ -241,6 +237,16 @@ void Hud::drawLines(ShaderLibrary& shaders, const std::vector<glm::vec2>& ends,
     glBufferData(GL_ARRAY_BUFFER, v.size() * sizeof(float), v.data(), GL_STREAM_DRAW);
     program.set("textColor", color);
     glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(ends.size() / 2 * 2));
+    end();
+}
+
+void Hud::drawBoxes(ShaderLibrary& shaders, const std::vector<glm::vec4>& boxes,
+                    const glm::vec4& color, int width, int height) {
+    if (width <= 0 || height <= 0 || boxes.empty()) return;
+    ScopedEnable noDepth(GL_DEPTH_TEST, false);
+    ScopedEnable blend(GL_BLEND, true);
+    Program& program = begin(shaders, float(width), float(height));
+    for (const glm::vec4& b : boxes) drawRect(program, b.x, b.y, b.z, b.w, color);
     end();
 }
 

@@ -40,6 +40,9 @@ struct HudBlock {
 // get large text and a 320x240 window small text; at least 1.
 float hudScale(int width, int height);
 
+// The width of `text` in stb_easy_font's unscaled pixels.
+float hudTextWidth(const std::string& text);
+
 // Splits lines wider than `maxPixels` (stb_easy_font's unscaled pixels) at spaces (or anywhere
 // in a word longer than a line). Colours carry over to the pieces.
 std::vector<HudLine> wrapHudLines(const std::vector<HudLine>& lines, float maxPixels);
@@ -82,11 +85,15 @@ class Hud {
     // Lines from a[k] to b[k] (pixels of the width x height viewport, y down) in `color`.
     void drawLines(ShaderLibrary& shaders, const std::vector<glm::vec2>& ends,
                    const glm::vec4& color, int width, int height);
+    // Filled rectangles (x0, y0, x1, y1 in pixels of the width x height viewport, y down).
+    void drawBoxes(ShaderLibrary& shaders, const std::vector<glm::vec4>& boxes,
+                   const glm::vec4& color, int width, int height);
     // One line of text with its top-left corner at (x, y) (viewport pixels, y down).
     void drawLabel(ShaderLibrary& shaders, const HudLine& line, float x, float y, int width,
                    int height, float scale);
 
     static constexpr float kLineHeight = 11;  // stb_easy_font's glyphs are 7 high, plus spacing
+    static constexpr float kGlyphRows = 9;    // the rows a line's ink takes, descenders included
     static constexpr float kPad = 4;
 
   private:

@@ -74,12 +74,18 @@ std::string& shaderCacheFolder() {
 }
 
 // A backstop should the parent stop watching (it is the parent that ends a job at its budget):
-// the kernel ends the worker once it has used every job's CPU time twice over.
-void applyCpuBackstop(const Limits& limits, std::size_t jobs) {
+// the kernel ends the worker once it has used every job's CPU time twice over (SIGXCPU, and
+// SIGKILL a second later). `pid` 0: the calling process (the child, as it starts), else the
+// worker's, a held job given more time: its hard limit was left where it was (`resumable`),
+// since only a privileged parent may raise one.
+void applyCpuBackstop(const Limits& limits, std::size_t jobs, bool resumable, pid_t pid = 0) {
     if (limits.cpuSeconds <= 0) return;
-    rlim_t cpu = static_cast<rlim_t>(std::ceil(limits.cpuSeconds * 2 * double(jobs))) + 10;
-    struct rlimit r = {cpu, cpu + 1};
-    ::setrlimit(RLIMIT_CPU, &r);
+    const rlim_t cpu = static_cast<rlim_t>(std::ceil(limits.cpuSeconds * 2 * double(jobs))) + 10;
+    struct rlimit now;
+    if (::prlimit(pid, RLIMIT_CPU, nullptr, &now) != 0) return;
+    struct rlimit r = {cpu, resumable ? now.rlim_max : std::min(now.rlim_max, cpu + 1)};
+    r.rlim_cur = std::min(r.rlim_cur, r.rlim_max);
+    ::prlimit(pid, RLIMIT_CPU, &r, nullptr);
 }
 
 // The calling process's CPU time, user and system, all its threads.
@@ -127,11 +133,12 @@ void writeAll(int fd, const std::string& text) {
 // The child: jobs [first, count) in order, one line of JSON for each as it finishes; it stops
 // after a job that threw (the parent rethrows) or ran out of memory.
 [[noreturn]] void runChild(const Limits& limits, const SeriesJob& job, const JobErrorKinds& kinds,
-                           std::size_t first, std::size_t count, int fd, pid_t parent) {
+                           std::size_t first, std::size_t count, int fd, pid_t parent,
+                           bool resumable) {
     ::setpgid(0, 0);  // its own group: a timeout kills whatever it started too
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(125);  // the parent died before prctl
-    applyCpuBackstop(limits, count - first);
+    applyCpuBackstop(limits, count - first, resumable);
     // Mesa would keep every shader a submission compiles in ~/.cache/mesa_shader_cache: grading
     // leaves nothing behind (and no student's cache entry serves another's). In the run's own
     // folder when it has one (a check recompiles the same programs for every lesson and view:
@@ -415,8 +422,9 @@ namespace {
 // current job has used so far.
 class Worker {
   public:
+    // `resumable`: its CPU backstop may be raised later (resume).
     Worker(const Limits& limits, const SeriesJob& job, const JobErrorKinds& kinds,
-           std::size_t first, std::size_t count)
+           std::size_t first, std::size_t count, bool resumable = false)
         : limits_(limits) {
         std::cout.flush();  // else the child inherits unwritten output and writes it twice
         std::cerr.flush();
@@ -434,7 +442,7 @@ class Worker {
         }
         if (pid_ == 0) {
             ::close(fds[0]);
-            runChild(limits, job, kinds, first, count, fds[1], parent);
+            runChild(limits, job, kinds, first, count, fds[1], parent, resumable);
         }
         ::setpgid(pid_, pid_);  // as the child does: whichever runs first
         ::close(fds[1]);
@@ -486,6 +494,14 @@ class Worker {
         }
         pid_ = -1;
         return status;
+    }
+    // Stops the worker where it is (every thread of its group), or lets it go on with new
+    // limits (its CPU backstop raised to suit them).
+    void hold() { ::kill(-pid_, SIGSTOP); }
+    void resume(const Limits& limits, std::size_t jobs) {
+        limits_ = limits;
+        applyCpuBackstop(limits, jobs, true, pid_);
+        ::kill(-pid_, SIGCONT);
     }
     // What the current job has used: CPU seconds since it began, the highest resident memory
     // the parent saw.
@@ -599,18 +615,31 @@ struct BackgroundSeries::Running {
 };
 
 BackgroundSeries::BackgroundSeries(const Limits& limits, std::size_t count, SeriesJob job,
-                                   JobErrorKinds kinds)
-    : limits_(limits), count_(count), job_(std::move(job)), kinds_(std::move(kinds)) {}
+                                   JobErrorKinds kinds, bool holdOverCpu)
+    : limits_(limits),
+      count_(count),
+      job_(std::move(job)),
+      kinds_(std::move(kinds)),
+      holdOverCpu_(holdOverCpu) {}
+
+void BackgroundSeries::resume(const Limits& limits) {
+    if (!held_ || !running_) return;
+    limits_ = limits;
+    outcomes_.pop_back();                          // the job goes on: its outcome is still to come
+    running_->since += Clock::now() - heldSince_;  // the wall clock counts the time it ran
+    running_->worker->resume(limits, count_ - outcomes_.size());
+    held_ = false;
+}
 
 BackgroundSeries::~BackgroundSeries() = default;  // ~Worker kills and reaps a running child
 
 bool BackgroundSeries::poll() {
-    if (failed_) return true;
+    if (failed_ || held_) return true;
     while (outcomes_.size() < count_) {
         if (!running_) {  // a fresh worker for the next job (the first, or after a failure)
             running_ = std::make_unique<Running>();
-            running_->worker =
-                std::make_unique<Worker>(limits_, job_, kinds_, outcomes_.size(), count_);
+            running_->worker = std::make_unique<Worker>(limits_, job_, kinds_, outcomes_.size(),
+                                                        count_, holdOverCpu_);
             running_->since = Clock::now();
         }
         // Only what has arrived: a deadline already past makes nextLine return at once, so
@@ -627,6 +656,13 @@ bool BackgroundSeries::poll() {
             out = outcomeWithoutLine(read, *running_->worker, limits_);
         }
         out.seconds = std::chrono::duration<double>(Clock::now() - running_->since).count();
+        if (read == Read::OverCpu && holdOverCpu_) {  // stopped, not ended: resume() or not
+            running_->worker->hold();
+            held_ = true;
+            heldSince_ = Clock::now();
+            outcomes_.push_back(std::move(out));
+            return true;
+        }
         running_->since = Clock::now();
         const bool ok = out.kind == WorkerOutcome::Kind::Ok;
         outcomes_.push_back(std::move(out));

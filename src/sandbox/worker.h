@@ -10,6 +10,7 @@
 // (sandbox/budget.h sets it generously).
 #pragma once
 
+#include <chrono>
 #include <exception>
 #include <functional>
 #include <memory>
@@ -89,9 +90,13 @@ void useShaderCacheFolder(const std::string& folder);
 // The same series watched without blocking: the window tries a student's changed shaders in
 // it between frames, and must answer keys while a looping shader spins in the worker. Stops at
 // the first job that fails (its outcome is the last). The destructor kills a running worker.
+// `holdOverCpu`: a job past its CPU time is held (its worker stopped with SIGSTOP, not killed):
+// poll() says so (true, held(), a Timeout outcome), and resume() lets it go on under larger
+// limits from where it stood, so that a budget raised once its floor ran out costs no rerun.
 class BackgroundSeries {
   public:
-    BackgroundSeries(const Limits& limits, std::size_t count, SeriesJob job, JobErrorKinds kinds);
+    BackgroundSeries(const Limits& limits, std::size_t count, SeriesJob job, JobErrorKinds kinds,
+                     bool holdOverCpu = false);
     ~BackgroundSeries();
     BackgroundSeries(const BackgroundSeries&) = delete;
     BackgroundSeries& operator=(const BackgroundSeries&) = delete;
@@ -99,6 +104,9 @@ class BackgroundSeries {
     // failed. The first call starts the worker (fork: call it where no other thread is in GL).
     bool poll();
     const std::vector<WorkerOutcome>& outcomes() const { return outcomes_; }
+    bool held() const { return held_; }
+    // The held job goes on under `limits` (its wall clock resumes where it stopped).
+    void resume(const Limits& limits);
 
   private:
     struct Running;
@@ -109,6 +117,8 @@ class BackgroundSeries {
     std::vector<WorkerOutcome> outcomes_;
     std::unique_ptr<Running> running_;
     bool failed_ = false;
+    bool holdOverCpu_ = false, held_ = false;
+    std::chrono::steady_clock::time_point heldSince_;
 };
 
 // "30 s of CPU time" or "no time limit"; "2048 MB" or "no memory limit".

@@ -15,6 +15,7 @@
 #include "io/image.h"
 #include "platform/glut_window.h"
 #include "render/hud.h"
+#include "window/top_view_layout.h"
 #include "window/watchdog.h"
 #include "window/window_args.h"
 
@@ -192,6 +193,8 @@ class WindowSession {
     Rect pictureArea_;
     std::vector<Rect> halfAreas_;
     std::vector<std::string> halvesShow_;
+    std::vector<TopViewLayout::Label> topViewLabels_;  // the top view's labels, in topViewArea_
+    Rect topViewArea_;
     Sets drawnWith_;                      // the values the picture on screen last drew with
     std::string pictureShows_ = "stage";  // "stage" | "trying" | "none" | "help"
     std::vector<std::string> hudText_;    // the lines the last draw's panels showed (--state)

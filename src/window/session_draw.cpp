@@ -9,7 +9,6 @@
 #include "io/png.h"
 #include "math/mirror_topview.h"
 #include "math/orbit.h"
-#include "metrics/mirror_figure.h"
 #include "window/session.h"
 #include "window/window_text.h"
 
@@ -171,6 +170,7 @@ Image WindowSession::pictureAlone(int width, int height) {
 void WindowSession::drawPicture(const Rect& area) {
     halfAreas_.clear();
     halvesShow_.clear();
+    topViewLabels_.clear();
     if (showHelp_) {  // asked for: the keys in the picture's place, in every HUD mode
         drawPage(area, helpLines(), kBackground, &pageScroll_);
         pictureShows_ = "help";
@@ -348,57 +348,37 @@ void WindowSession::drawPage(const Rect& area, const std::vector<HudLine>& lines
 }
 
 // The lecture's practice exercise from above: the mirror p1-p2, the viewer's eye and at, the
-// reflected eye' and at', and the reflected camera's frustum, x to the right and z down the page.
+// reflected eye' and at', and the reflected camera's frustum, x to the right and z down the page,
+// labelled at the HUD's text size (window/top_view_layout.h places them).
 void WindowSession::drawTopView(const Rect& area, const WindowLesson& lesson) {
     const MirrorTopView v = practiceTopView(lesson.p1, lesson.p2, lesson.eye, lesson.at);
-    drawPage(area, {}, glm::vec4(0.96f, 0.96f, 0.94f, 1), nullptr);  // the paper
-    const float scale = std::max(1.0f, textScale(width_, height_) * 0.6f);
-    const glm::vec4 ink(0.1f, 0.1f, 0.1f, 1), mirror(0.1f, 0.35f, 0.9f, 1),
-        reflected(0.85f, 0.35f, 0.05f, 1);
-    HudBlock caption;  // what it shows, wrapped to the half
-    caption.panel = glm::vec4(0);
-    caption.lines = {{"the slides' exercise from above: the mirror p1-p2, eye and at, the "
-                      "reflected eye' and at' and the frustum",
-                      ink},
-                     {v.valid ? oneLine(describeTopView(v)) : v.reason, reflected}};
-    glViewport(area.x, area.y, area.width, area.height);
-    const auto panels = layoutHud({caption}, area.width, area.height, scale, HudRoom{0.4f, 0});
-    hud_.draw(hudShaders_, panels, area.width, area.height, scale);
-    const float top = hudBands(panels, area.height, scale).first;
-    std::vector<glm::vec2> all = {v.p1, v.p2, v.eye, v.at};
-    if (v.valid) all.insert(all.end(), {v.eyePrime, v.atPrime, v.far1, v.far2});
-    glm::vec2 lo = all[0], hi = all[0];
-    for (const glm::vec2& p : all) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    const float room = 2 * Hud::kLineHeight * scale;  // for the labels
-    const float w = area.width - 2 * room, h = area.height - top - 2 * room;
-    const float unit = std::max(
-        0.0f, std::min(w / std::max(hi.x - lo.x, 1e-3f), h / std::max(hi.y - lo.y, 1e-3f)));
-    const glm::vec2 origin(room + (w - unit * (hi.x - lo.x)) / 2,
-                           top + room + (h - unit * (hi.y - lo.y)) / 2);
-    auto at = [&](glm::vec2 p) { return origin + unit * (p - lo); };  // z grows down the page
-    glLineWidth(std::max(1.0f, scale / 2));  // a compatibility context: wide lines allowed
-    hud_.drawLines(hudShaders_, {at(v.eye), at(v.at)}, ink, area.width, area.height);
-    if (v.valid)
-        hud_.drawLines(hudShaders_,
-                       {at(v.eyePrime), at(v.atPrime), at(v.eyePrime), at(v.far1), at(v.eyePrime),
-                        at(v.far2), at(v.far1), at(v.far2), at(v.eye), at(v.eyePrime)},
-                       reflected, area.width, area.height);
-    glLineWidth(std::max(2.0f, scale * 1.5f));
-    hud_.drawLines(hudShaders_, {at(v.p1), at(v.p2)}, mirror, area.width, area.height);
-    glLineWidth(1);
-    auto label = [&](const std::string& text, glm::vec2 p, const glm::vec4& colour) {
-        hud_.drawLabel(hudShaders_, {text, colour}, at(p).x + 4, at(p).y + 4, area.width,
-                       area.height, scale);
-    };
-    label("p1", v.p1, mirror);
-    label("p2", v.p2, mirror);
-    label("eye", v.eye, ink);
-    label("at", v.at, ink);
-    if (v.valid) {
-        label("eye'", v.eyePrime, reflected);
-        label("at'", v.atPrime, reflected);
+    drawPage(area, {}, kTopViewPaper, nullptr);
+    const TopViewLayout f = layoutTopView(v, area.width, area.height, textScale(width_, height_));
+    const int w = area.width, h = area.height;
+    glViewport(area.x, area.y, w, h);
+    hud_.draw(hudShaders_, f.caption, w, h, f.captionScale);
+    for (const TopViewLayout::Stroke& s : f.strokes) {
+        glLineWidth(s.width);  // a compatibility context: wide lines allowed
+        hud_.drawLines(hudShaders_, {s.a, s.b}, s.color, w, h);
     }
+    glLineWidth(1);
+    for (const TopViewLayout::Stroke& m : f.markers)
+        hud_.drawBoxes(hudShaders_, {{m.a, m.b}}, m.color, w, h);
+    // Each label on its own patch of paper: a line it had to cross stays readable under it.
+    for (const TopViewLayout::Label& l : f.labels) {
+        if (!l.place.placed) continue;
+        const LabelBox& b = l.place.box;
+        hud_.drawBoxes(hudShaders_, {{b.x, b.y, b.x + b.width, b.y + b.height}}, kTopViewPaper, w,
+                       h);
+        hud_.drawLabel(hudShaders_, {l.place.key ? l.key : l.text, l.color}, b.x + f.pad,
+                       b.y + f.pad, w, h, f.labelScale);
+    }
+    if (!f.legend.empty())
+        hud_.drawLabel(hudShaders_, {f.legend, kTopViewInk}, f.legendBox.x + f.pad,
+                       f.legendBox.y + f.pad, w, h, f.labelScale);
     glViewport(0, 0, width_, height_);
+    topViewLabels_ = f.labels;
+    topViewArea_ = area;
 }
 
 void WindowSession::PictureTarget::resize(int width, int height) {

@@ -125,6 +125,17 @@ nlohmann::json WindowSession::state() const {
     j["halves"] = nlohmann::json::array();
     for (const Rect& h : halfAreas_) j["halves"].push_back(rect(h));
     j["halvesShow"] = halvesShow_;  // what each half shows: "stage", "trying", "none", "top-view"
+    j["topViewLabels"] = nlohmann::json::array();  // each label's box, text padding included
+    const int areaTop = height_ - topViewArea_.y - topViewArea_.height;
+    for (const TopViewLayout::Label& l : topViewLabels_) {
+        const LabelBox& b = l.place.box;
+        j["topViewLabels"].push_back(
+            {{"text", l.text},
+             {"shown", !l.place.placed ? ""
+                       : l.place.key   ? l.key
+                                       : l.text},
+             {"box", {topViewArea_.x + b.x, areaTop + b.y, b.width, b.height}}});
+    }
     j["drawnWith"] = nlohmann::json::object();  // the values the picture on screen drew with
     for (const auto& [name, value] : drawnWith_) j["drawnWith"][name] = value;
     j["textScale"] = textScale(width_, height_);

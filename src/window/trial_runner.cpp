@@ -163,11 +163,12 @@ Limits windowLimits(const BudgetRule& rule, const std::optional<JobCost>& ours) 
 
 // A job's worker, watched without blocking. Destroying it kills and reaps the worker, which
 // waits for the process to go: an abandoned one is destroyed on a thread of its own.
+// `hold`: a job past its CPU time is stopped, not killed, so that it can go on (see poll).
 struct TrialRunner::Series {
-    Series(const Limits& limits, Backend backend, const TrialJob& job)
+    Series(const Limits& limits, Backend backend, const TrialJob& job, bool hold = false)
         : background(
               limits, 1, [backend, job](std::size_t) { return drawInWorker(backend, job); },
-              renderJobErrors()) {}
+              renderJobErrors(), hold) {}
     BackgroundSeries background;
 };
 
@@ -177,15 +178,20 @@ TrialRunner::TrialRunner(const BudgetRule& rule, Backend backend)
 TrialRunner::~TrialRunner() = default;  // a running worker is killed and reaped
 
 void TrialRunner::abandon() {
-    if (series_) std::thread([s = std::move(series_)]() mutable { s.reset(); }).detach();
+    letGo(series_);
+    letGo(heldStudent_);
     phase_ = Phase::Idle;
 }
 
-void TrialRunner::run(const TrialJob& job, const Limits& limits, Phase phase) {
+void TrialRunner::letGo(std::unique_ptr<Series>& series) {
+    if (series) std::thread([s = std::move(series)]() mutable { s.reset(); }).detach();
+}
+
+void TrialRunner::run(const TrialJob& job, const Limits& limits, Phase phase, bool hold) {
     abandon();
     limits_ = limits;
     phase_ = phase;
-    series_ = std::make_unique<Series>(limits, backend_, job);
+    series_ = std::make_unique<Series>(limits, backend_, job, hold);
 }
 
 std::string TrialRunner::cacheKey(const TrialJob& job) const {
@@ -198,7 +204,10 @@ void TrialRunner::start(const TrialJob& job) {
     auto known = ours_.find(cacheKey(job));
     std::optional<JobCost> ours;
     if (known != ours_.end()) ours = known->second;
-    run(job, windowLimits(rule_, ours), Phase::Student);
+    // Stopped at the floor while ours are measured, a student's job goes on from there if its
+    // budget grows (it was run again from the start: 2 s of CPU and a fresh worker more).
+    const bool hold = !job.overlay.empty() && !rule_.cpuSeconds && known == ours_.end();
+    run(job, windowLimits(rule_, ours), Phase::Student, hold);
 }
 
 bool TrialRunner::poll(TrialVerdict& verdict) {
@@ -217,6 +226,8 @@ bool TrialRunner::poll(TrialVerdict& verdict) {
     const WorkerOutcome o = series_->background.outcomes().front();
     const Phase phase = phase_;
     const Limits limits = limits_;
+    std::unique_ptr<Series> held;  // the student's job, stopped at its floor: kept for now
+    if (series_->background.held()) held = std::move(series_);
     series_.reset();  // the worker has sent its line or ended: reaped at once
     phase_ = Phase::Idle;
     const std::string key = cacheKey(job_);
@@ -234,6 +245,7 @@ bool TrialRunner::poll(TrialVerdict& verdict) {
             verdict.oursSeconds = o.cpuSeconds;
         } else {
             ours_[key] = std::nullopt;
+            letGo(heldStudent_);
             const std::string why = o.kind == WorkerOutcome::Kind::Error
                                         ? o.errorWhat
                                         : workerFailureLine("our shipped shaders", o, limits);
@@ -244,15 +256,24 @@ bool TrialRunner::poll(TrialVerdict& verdict) {
             return true;
         }
         if (studentOutcome_.kind == WorkerOutcome::Kind::Error) {  // ours drew: the error is its
+            letGo(heldStudent_);
             verdict.kind = TrialVerdict::Kind::Refused;
             verdict.what = studentOutcome_.errorWhat;
             return true;
         }
         const Limits budget = windowLimits(rule_, ours_[key]);
-        if (budget.cpuSeconds > studentLimits_.cpuSeconds) {  // the floor was less: again
-            run(job_, budget, Phase::StudentAgain);
+        if (budget.cpuSeconds > studentLimits_.cpuSeconds) {  // the floor was less: go on
+            if (heldStudent_) {                               // from where it stopped
+                series_ = std::move(heldStudent_);
+                series_->background.resume(budget);
+                limits_ = budget;
+                phase_ = Phase::StudentAgain;
+            } else {
+                run(job_, budget, Phase::StudentAgain);
+            }
             return false;
         }
+        letGo(heldStudent_);
         verdict.kind = TrialVerdict::Kind::Refused;
         verdict.what = failureLine(what, studentOutcome_, studentLimits_);
         return true;
@@ -294,9 +315,11 @@ bool TrialRunner::poll(TrialVerdict& verdict) {
         oursLimit.wallSeconds = kWallFloorSeconds;
         limits_ = oursLimit;
         phase_ = Phase::Ours;
+        heldStudent_ = std::move(held);
         series_ = std::make_unique<Series>(oursLimit, backend_, shipped);
         return false;
     }
+    letGo(held);  // not measured now: the job is over
     if (platformMaybe && ours != ours_.end() && !ours->second) {
         verdict.kind = TrialVerdict::Kind::Lost;
         verdict.what = what + ": " + o.errorWhat +

@@ -81,7 +81,8 @@ class TrialRunner {
   private:
     enum class Phase { Idle, Student, Ours, StudentAgain };
     struct Series;
-    void run(const TrialJob& job, const Limits& limits, Phase phase);
+    void run(const TrialJob& job, const Limits& limits, Phase phase, bool hold = false);
+    static void letGo(std::unique_ptr<Series>& series);  // killed and reaped off this thread
     std::string cacheKey(const TrialJob& job) const;
     std::string failureLine(const std::string& what, const WorkerOutcome& o,
                             const Limits& limits) const;
@@ -92,6 +93,7 @@ class TrialRunner {
     Phase phase_ = Phase::Idle;
     Limits limits_;
     std::unique_ptr<Series> series_;
+    std::unique_ptr<Series> heldStudent_;  // stopped at its floor while ours are measured
     std::map<std::string, std::optional<JobCost>> ours_;  // by cacheKey; none: ours failed
     // While ours are measured: what the student's job got, and under which limits.
     TrialVerdict waiting_;

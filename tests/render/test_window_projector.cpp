@@ -389,3 +389,66 @@ TEST(LiveWindowProjector, ParameterTheShaderDoesNotReadIsMarked) {
         << w.state().dump();
     EXPECT_EQ(w.quit(), 0);
 }
+
+// The mirror's top view on a projector: full screen at 1920x1080, `n` brings the slides'
+// exercise from above; on the screen's pixels each label's ink is as tall as the HUD's text
+// (they were 0.6 of it), on its own patch of paper inside the figure's half, none over another.
+TEST(LiveWindowProjector, TopViewLabelsAtTheHudsTextSize) {
+    std::string dir = tempDir("live-top-view");
+    LiveWindow w("--fullscreen --stage mirror --state state.json", dir, true, "1920x1080");
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["width"] == 1920; }, 30));
+    ASSERT_TRUE(w.keys("n"));
+    ASSERT_TRUE(w.waitState(
+        [](const auto& s) {
+            return s["halvesShow"] == nlohmann::json({"top-view", "stage"}) &&
+                   s["topViewLabels"].size() == 6;
+        },
+        30))
+        << w.state().dump();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const Image shot = w.grab();
+    const auto state = w.state();
+    ASSERT_EQ(shot.width, 1920);
+    const int hud = firstTextLineHeight(shot, state["pictureTop"]);
+    ASSERT_GE(hud, 0.03 * 1080) << "the HUD's text height";
+    const auto half = state["halves"][0];
+    std::vector<std::array<int, 4>> boxes;
+    int tallest = 0;
+    for (const auto& label : state["topViewLabels"]) {
+        const std::string text = label["text"];
+        EXPECT_EQ(label["shown"], text) << "whole, not a key";
+        const auto b = label["box"];
+        const std::array<int, 4> box = {int(std::ceil(b[0].get<float>())),
+                                        int(std::ceil(b[1].get<float>())), int(b[2].get<float>()),
+                                        int(b[3].get<float>())};
+        EXPECT_TRUE(box[0] >= half[0] && box[1] >= half[1] &&
+                    box[0] + box[2] <= half[0].get<int>() + half[2].get<int>() &&
+                    box[1] + box[3] <= half[1].get<int>() + half[3].get<int>())
+            << text << " inside the top view's half";
+        for (const auto& other : boxes)
+            EXPECT_FALSE(box[0] < other[0] + other[2] && other[0] < box[0] + box[2] &&
+                         box[1] < other[1] + other[3] && other[1] < box[1] + box[3])
+                << text << " overlaps another label";
+        boxes.push_back(box);
+        // The rows with ink (anything darker than the paper) inside the label's box.
+        int first = -1, last = -1;
+        for (int j = box[1]; j < box[1] + box[3] && j < shot.height; ++j)
+            for (int i = box[0]; i < box[0] + box[2] && i < shot.width; ++i) {
+                const std::uint8_t* p = shot.at(i, j);
+                if (std::min({p[0], p[1], p[2]}) < 150) {
+                    if (first < 0) first = j;
+                    last = j;
+                    break;
+                }
+            }
+        const int ink = first < 0 ? 0 : last - first + 1;
+        std::cout << text << ": " << ink << " px of ink (the HUD's text: " << hud << " px)\n";
+        // Glyphs without a descender or an ascender ("eye", "at") take 7 of the line's 9 rows.
+        EXPECT_GE(ink, hud * 7 / 9 - 1) << text;
+        EXPECT_LE(ink, hud + 1) << text;
+        tallest = std::max(tallest, ink);
+    }
+    EXPECT_NEAR(tallest, hud, 1) << "p1, p2 and eye' span the whole line, as the HUD's text does";
+    EXPECT_EQ(w.quit(), 0);
+}

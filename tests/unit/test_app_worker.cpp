@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <ctime>
 #include <vector>
 
 #include "eval/job_errors.h"
@@ -207,6 +209,70 @@ TEST(Worker, ASeriesSharesItsWorkerUntilAJobFails) {
     EXPECT_NE(outcomes[4].value, outcomes[0].value);  // a fresh worker after each failure
     EXPECT_EQ(outcomes[4].value, outcomes[5].value);
     EXPECT_LT(seconds, 3.0);
+}
+
+// Should the parent stop watching, the kernel ends a worker at twice its CPU budget (plus 10 s):
+// SIGXCPU, then SIGKILL a second later.
+TEST(Worker, TheKernelsBackstopIsTwiceTheBudget) {
+    Limits l;
+    l.cpuSeconds = 1.5;
+    l.wallSeconds = 60;
+    WorkerOutcome o = runBounded(l, [] {
+        struct rlimit cpu;
+        ::getrlimit(RLIMIT_CPU, &cpu);
+        return nlohmann::json{cpu.rlim_cur, cpu.rlim_max};
+    });
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Ok) << o.detail();
+    EXPECT_EQ(o.value, nlohmann::json({13, 14}));
+}
+
+// The window's trial at its floor: a job past its CPU time is held (stopped, not killed) and
+// goes on from where it stood when given more (no rerun of what it had done): it sees the time
+// it was held as one gap, uses no CPU meanwhile, and runs under a CPU backstop raised for its
+// new budget.
+TEST(Worker, AHeldJobGoesOnFromWhereItStopped) {
+    Limits l;
+    l.cpuSeconds = 0.3;
+    l.wallSeconds = 60;
+    BackgroundSeries series(
+        l, 1,
+        [](std::size_t) -> nlohmann::json {
+            // Spins for 0.8 s of its own CPU time, noting the longest wall-clock gap it saw.
+            using Clock = std::chrono::steady_clock;
+            double gap = 0;
+            Clock::time_point last = Clock::now();
+            while (std::clock() < 0.8 * CLOCKS_PER_SEC) {
+                const Clock::time_point now = Clock::now();
+                gap = std::max(gap, std::chrono::duration<double>(now - last).count());
+                last = now;
+            }
+            struct rlimit cpu;
+            ::getrlimit(RLIMIT_CPU, &cpu);
+            return {{"gap", gap}, {"backstop", cpu.rlim_cur}, {"pid", ::getpid()}};
+        },
+        renderJobErrors(), true);
+    auto wait = [&] {
+        const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        while (!series.poll() && std::chrono::steady_clock::now() < end) ::usleep(20000);
+    };
+    wait();
+    ASSERT_TRUE(series.held());
+    ASSERT_EQ(series.outcomes().size(), 1u);
+    EXPECT_EQ(series.outcomes()[0].kind, WorkerOutcome::Kind::Timeout);
+    EXPECT_GE(series.outcomes()[0].cpuSeconds, 0.3);
+    ::usleep(700000);  // held: it must not run meanwhile
+    Limits more = l;
+    more.cpuSeconds = 8;
+    series.resume(more);
+    EXPECT_FALSE(series.held());
+    EXPECT_TRUE(series.outcomes().empty()) << "its outcome is still to come";
+    wait();
+    ASSERT_EQ(series.outcomes().size(), 1u);
+    const WorkerOutcome& o = series.outcomes()[0];
+    ASSERT_EQ(o.kind, WorkerOutcome::Kind::Ok) << o.detail();
+    EXPECT_GE(o.value["gap"].get<double>(), 0.7) << "the same run went on after its hold";
+    EXPECT_LT(o.cpuSeconds, 1.6) << "0.8 s of work, not redone";
+    EXPECT_EQ(o.value["backstop"], 2 * 8 + 10) << "the kernel's backstop raised for 8 s";
 }
 
 // A job that throws is its own outcome (Error, with the kind and message), and a fresh worker
