@@ -359,6 +359,7 @@ TEST(WorkerEnd, ALowPriorityThreadDoesNotHoldUpTheWorkersEnd) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - replied).count();
     stop = true;
     busy.join();
+    RecordProperty("seconds_after_reply", std::to_string(endAfterReply));
     ASSERT_EQ(outcome.kind, WorkerOutcome::Kind::Ok) << outcome.detail();
     ASSERT_EQ(outcome.value, "ok");
     EXPECT_LT(endAfterReply, 2.0);
