@@ -453,7 +453,7 @@ int ClassGrading::gradeShare(int job, int jobs, OutLock& lock) {
         JobProgress progress(progressPath(job), plans);
         gradeStudents(
             plans, share, settings_, calibration,
-            [&](std::size_t i, const StageRecord& st) { progress.stageDone(plans[i], st); },
+            [&](std::size_t i, const StageRecord& st) { progress.stageDone(i, st); },
             [&](std::size_t i, StudentRecord r) {
                 r.assignmentHash = in_.assignmentHash;
                 writeOrThrow(recordPath(index[i]), sealedRecordText(r));

@@ -6,14 +6,29 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "grade/grade_students.h"
 #include "io/files.h"
 
 namespace sl {
 
-JobProgress::JobProgress(const std::string& path, const std::vector<GradingPlan>& plans) {
-    for (const GradingPlan& plan : plans)
-        for (const StagePlan& st : plan.stages)
-            if (st.rendered()) total_ += st.rows.size();
+namespace {
+
+std::string roundViews(std::size_t round, const StagePlan& st) {
+    return std::to_string(round) + " " + st.stage + " " + st.tree;
+}
+
+}  // namespace
+
+JobProgress::JobProgress(const std::string& path, const std::vector<GradingPlan>& plans)
+    : plans_(plans) {
+    std::set<std::string> roundViewsPlanned;
+    for (std::size_t k = 0; k < plans.size(); ++k)
+        for (const StagePlan& st : plans[k].stages) {
+            if (!st.rendered()) continue;
+            total_ += st.rows.size();
+            if (roundViewsPlanned.insert(roundViews(roundOf(k, plans.size()), st)).second)
+                total_ += st.rows.size();
+        }
     fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
     write();
 }
@@ -22,12 +37,21 @@ JobProgress::~JobProgress() {
     if (fd_ >= 0) ::close(fd_);
 }
 
-void JobProgress::stageDone(const GradingPlan& plan, const StageRecord& stage) {
-    for (const StagePlan& st : plan.stages)
-        if (st.stage == stage.stage && st.tree == stage.tree && st.rendered()) {
-            done_ = std::min(total_, done_ + st.rows.size());
-            break;
-        }
+const StagePlan* JobProgress::renderedStage(std::size_t k, const std::string& stage,
+                                            const std::string& tree) const {
+    if (k >= plans_.size()) return nullptr;
+    for (const StagePlan& st : plans_[k].stages)
+        if (st.stage == stage && st.tree == tree && st.rendered()) return &st;
+    return nullptr;
+}
+
+void JobProgress::stageDone(std::size_t k, const StageRecord& stage) {
+    if (const StagePlan* st = renderedStage(k, stage.stage, stage.tree)) {
+        done_ += st->rows.size();
+        if (roundViewsDone_.insert(roundViews(roundOf(k, plans_.size()), *st)).second)
+            done_ += st->rows.size();
+        done_ = std::min(done_, total_);
+    }
     write();
 }
 

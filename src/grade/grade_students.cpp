@@ -14,6 +14,17 @@ std::string rowSlug(const CheckCase& c) {
     return slug;
 }
 
+std::size_t roundCount(std::size_t n) {
+    return std::max<std::size_t>(std::min<std::size_t>(3, n), (n + 7) / 8);
+}
+
+std::size_t roundOf(std::size_t k, std::size_t n) {
+    const std::size_t rounds = roundCount(n);
+    std::size_t r = 0;
+    while (r + 1 < rounds && k >= n * (r + 1) / rounds) ++r;
+    return r;
+}
+
 void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<StudentWork>& students,
                    const GradeSettings& settings, Calibration& calibration,
                    const std::function<void(std::size_t, const StageRecord&)>& stageDone,
@@ -45,7 +56,7 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
     // even size (a short last round would cost more a row than the others: the time left is
     // estimated by rows).
     const std::size_t n = students.size();
-    const std::size_t rounds = std::max<std::size_t>(std::min<std::size_t>(3, n), (n + 7) / 8);
+    const std::size_t rounds = roundCount(n);
     for (std::size_t r = 0; r < rounds; ++r)
         for (std::size_t j = 0; j < stageCount; ++j)
             for (std::size_t k = n * r / rounds; k < n * (r + 1) / rounds; ++k) {

@@ -47,6 +47,12 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
                    const std::function<void(std::size_t, const StageRecord&)>& stageDone,
                    const std::function<void(std::size_t, StudentRecord)>& done);
 
+// The rounds gradeStudents takes a series of n students in, and the round of student k: a
+// round's students are done together, and each stage's views are traced and drawn with our
+// shaders once a round.
+std::size_t roundCount(std::size_t n);
+std::size_t roundOf(std::size_t k, std::size_t n);
+
 // The file name of a row's images: "STAGE-TREE-VIEW-LESSON" with only [A-Za-z0-9._-].
 std::string rowSlug(const CheckCase& c);
 

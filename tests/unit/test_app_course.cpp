@@ -11,6 +11,7 @@
 #include "course/release.h"
 #include "feedback/feedback_html.h"
 #include "feedback/html_text.h"
+#include "grade/grade_students.h"
 #include "grade/record.h"
 #include "gradebook/gradebook_exports.h"
 
@@ -219,6 +220,43 @@ TEST(ClassProgress, ASlowStageHoldsTheEstimateAtTheRowsAfterIt) {
     // and nothing comes after it, so it may run out.
     EXPECT_NEAR(*pace.timeLeft(61, {{90, 100}}), 7.0, 1e-9);
     EXPECT_NEAR(*pace.timeLeft(70, {{90, 100}}), 0.0, 1e-9);
+}
+
+// A round draws its stages' views once (traced, and drawn with our shaders), about one student's
+// rows of work (issue 39): 4 students a job go in rounds of 1, 1 and 2. Here the views cost one
+// student (1 s for 10 rows): the rounds end at 2, 4 and 7 s, and after two rounds the estimate
+// is the 3 s the last round takes; by rows alone it said 4 s (a row of the last round costing
+// as much as one of the first two).
+TEST(ClassProgress, ARoundsViewsCountAsOneStudentMore) {
+    StagePlan margin;
+    margin.stage = "margin";
+    margin.tree = "core";
+    margin.rows.resize(10);
+    const std::vector<GradingPlan> plans(4, GradingPlan{"lab", {margin}});
+    ASSERT_EQ(roundCount(4), 3u);
+    const std::string path = ::testing::TempDir() + "/job-rounds.progress";
+    JobProgress progress(path, plans);
+    StageRecord done;
+    done.stage = "margin";
+    done.tree = "core";
+    Pace pace;
+    auto reading = [&](double seconds) {
+        std::vector<RowsDone> jobs = readProgress({path});
+        return std::make_pair(jobs[0], pace.timeLeft(seconds, jobs));
+    };
+    progress.stageDone(0, done);
+    auto [first, unused] = reading(2);
+    EXPECT_EQ(first.done, 20u);   // its rows and its round's views
+    EXPECT_EQ(first.total, 70u);  // 40 rows, 3 rounds' views
+    progress.stageDone(1, done);
+    auto [second, left] = reading(4);
+    EXPECT_EQ(second.done, 40u);
+    ASSERT_TRUE(left);
+    EXPECT_NEAR(*left, 3.0, 1e-9);
+    progress.stageDone(2, done);
+    EXPECT_EQ(reading(6).first.done, 60u);
+    progress.stageDone(3, done);  // the round's views counted once
+    EXPECT_EQ(reading(7).first.done, 70u);
 }
 
 TEST(ClassProgress, JobFilesReadOneByOneBadOnesCountNothing) {

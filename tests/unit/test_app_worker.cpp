@@ -1,13 +1,17 @@
 // The bounded worker: a value comes back, the job's exceptions come back with their type, and a
 // job that hangs, crashes, runs out of memory or exits is reported as such within its limits.
 #include <gtest/gtest.h>
+#include <pthread.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/mman.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <ctime>
+#include <thread>
 #include <vector>
 
 #include "eval/job_errors.h"
@@ -367,6 +371,64 @@ TEST(WorkerEnd, WhatTheJobDidStaysTheJobs) {
     ASSERT_EQ(busy.kind, WorkerOutcome::Kind::Timeout);
     if (busy.overWallClock && busy.cpuSeconds >= 0.6)  // a loaded machine may starve it: then not
         EXPECT_EQ(machineEvidence(busy, shortWall), "");
+}
+
+// Issue 39: Mesa's disk-cache thread runs at the lowest priority. A worker whose last thread out
+// is that one frees the worker's memory at that priority: beside a busy core its end took
+// seconds, and the job's parent waited. Here a job leaves a thread like it (SCHED_IDLE, all
+// signals blocked, on a core this test keeps busy) and 128 MB of touched memory: the worker is
+// reaped soon after its reply (0.2 s; with an _exit, 13-16 s).
+TEST(WorkerEnd, ALowPriorityThreadDoesNotHoldUpTheWorkersEnd) {
+    cpu_set_t mine;
+    ASSERT_EQ(::sched_getaffinity(0, sizeof mine, &mine), 0);
+    int core = 0;
+    while (!CPU_ISSET(core, &mine)) ++core;
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(core, &one);
+    std::atomic<bool> stop{false};
+    std::thread busy([&] {
+        ::sched_setaffinity(0, sizeof one, &one);
+        while (!stop) {
+        }
+    });
+    std::chrono::steady_clock::time_point replied;
+    WorkerOutcome outcome;
+    runBoundedSeries(
+        limits(30, 1024), 1,
+        [one](std::size_t) -> nlohmann::json {
+            const std::size_t size = 128u << 20;
+            void* block =
+                ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            if (block == MAP_FAILED) return "mmap failed";
+            volatile char* touch = static_cast<char*>(block);
+            for (std::size_t i = 0; i < size; i += 4096) touch[i] = 'x';
+            std::atomic<bool> lowered{false};
+            std::thread([&lowered, one] {
+                sigset_t all;
+                ::sigfillset(&all);
+                ::pthread_sigmask(SIG_BLOCK, &all, nullptr);
+                ::sched_setaffinity(0, sizeof one, &one);
+                struct sched_param none = {};
+                ::pthread_setschedparam(::pthread_self(), SCHED_IDLE, &none);
+                lowered = true;
+                for (;;) ::pause();
+            }).detach();
+            while (!lowered) ::usleep(1000);
+            return "ok";
+        },
+        [&](std::size_t, const WorkerOutcome& o) {
+            outcome = o;
+            replied = std::chrono::steady_clock::now();
+        });
+    const double endAfterReply =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - replied).count();
+    stop = true;
+    busy.join();
+    RecordProperty("seconds_after_reply", std::to_string(endAfterReply));
+    ASSERT_EQ(outcome.kind, WorkerOutcome::Kind::Ok) << outcome.detail();
+    ASSERT_EQ(outcome.value, "ok");
+    EXPECT_LT(endAfterReply, 2.0);
 }
 
 #if !defined(__SANITIZE_ADDRESS__)
