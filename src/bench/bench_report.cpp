@@ -15,11 +15,6 @@ namespace sl {
 
 namespace {
 
-// The speed targets at 640x480 with a 1024 map: issue 14's for hardware (2x2 PCF and nearest with
-// a still light; issue 6 had asked 1.05x for the 2x2 filter), issue 6's for the mirror.
-constexpr double kHardwareMovingTarget = 1.3, kHardwareStillTarget = 1.12,
-                 kNearestStillTarget = 1.06, kMirrorTarget = 2.2;
-
 const std::vector<std::string> kColumns = {"group",
                                            "series",
                                            "stage",
@@ -65,6 +60,15 @@ double mapSize(const BenchConfig& c) {
     for (const ParamSpec& p : info->params)
         if (p.name == "map-size") return p.defaultValue;
     return NAN;
+}
+
+// A target's words with "{ratio}" replaced by the measured ratio (two decimals).
+std::string replaceRatio(std::string words, double ratio) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%.2f", ratio);
+    std::size_t at = words.find("{ratio}");
+    if (at != std::string::npos) words.replace(at, 7, value);
+    return words;
 }
 
 std::string family(const std::string& series) {
@@ -414,36 +418,28 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
         if (!r.trusted()) return std::string(t);
         return std::string(r.median <= target ? "met" : "MISSED");
     };
+    // The speed targets the stages declare on their series (BenchSeries::targets), on every row
+    // of that series at 640 wide (and the target's map size).
+    std::map<std::string, std::vector<const BenchTarget*>> targets;
+    for (BenchGroup group :
+         {BenchGroup::MapSize, BenchGroup::Format, BenchGroup::Mirror, BenchGroup::EqualAccuracy})
+        for (const StageSeries& series : benchSeriesIn(group))
+            for (const BenchTarget& t : series.series->targets)
+                targets[series.series->name].push_back(&t);
     for (const Measured& m : results) {
         const BenchConfig& c = m.config;
-        bool hw1024 = c.series == "hardware/linear" && mapSize(c) == 1024 && c.width == 640;
-        bool mirror = c.series == "mirror/texture" && c.width == 640;
-        if (hw1024) {
-            double moving = m.ratio(true), still = m.ratio(false);
-            std::snprintf(line, sizeof line,
-                          "target hardware, 1024 map, light moving: %.2fx phong (<= %.2f: %s); "
-                          "still: %.2fx (<= %.2f: %s)\n",
-                          moving, kHardwareMovingTarget,
-                          verdict(m.ratioMoving, kHardwareMovingTarget).c_str(), still,
-                          kHardwareStillTarget,
-                          verdict(m.ratioStill, kHardwareStillTarget).c_str());
-            s << line;
-        }
-        if (c.series == "hardware/nearest" && mapSize(c) == 1024 && c.width == 640) {
-            std::snprintf(
-                line, sizeof line,
-                "target hardware filter=nearest, light still: %.2fx phong (<= %.2f: %s)\n",
-                m.ratio(false), kNearestStillTarget,
-                verdict(m.ratioStill, kNearestStillTarget).c_str());
-            s << line;
-        }
-        if (mirror) {
-            double still = m.ratio(false);
-            std::snprintf(line, sizeof line,
-                          "target mirror (texture, footprint-sized): %.2fx phong on the mirror "
-                          "scene (<= %.2f: %s)\n",
-                          still, kMirrorTarget, verdict(m.ratioStill, kMirrorTarget).c_str());
-            s << line;
+        auto found = targets.find(c.series);
+        if (found == targets.end() || c.width != 640) continue;
+        for (const BenchTarget* t : found->second) {
+            if (t->mapSize != 0 && mapSize(c) != t->mapSize) continue;
+            std::string text = "target " + t->what;
+            for (std::size_t k = 0; k < t->bounds.size(); ++k) {
+                const BenchBound& b = t->bounds[k];
+                std::snprintf(line, sizeof line, " (<= %.2f: %s)", b.atMost,
+                              verdict(m.ratios(b.moving), b.atMost).c_str());
+                text += (k ? "; " : "") + replaceRatio(b.words, m.ratio(b.moving)) + line;
+            }
+            s << text << "\n";
         }
     }
     report.summary = s.str();
