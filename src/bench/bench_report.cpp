@@ -8,6 +8,7 @@
 #include "bench/bench_output.h"
 #include "io/files.h"
 #include "io/usage_error.h"
+#include "metrics/figures.h"
 #include "metrics/pareto.h"
 #include "stages/registry.h"
 
@@ -15,42 +16,50 @@ namespace sl {
 
 namespace {
 
-const std::vector<std::string> kColumns = {"group",
-                                           "series",
-                                           "stage",
-                                           "tree",
-                                           "scene",
-                                           "width",
-                                           "height",
-                                           "settings",
-                                           "map_size",
-                                           "light",
-                                           "frames",
-                                           "frame_ms",
-                                           "frame_iqr_ms",
-                                           "frame_min_ms",
-                                           "frame_max_ms",
-                                           "shadow_ms",
-                                           "lit_ms",
-                                           "mirror_ms",
-                                           "map_renders",
-                                           "ratio_to_phong",
-                                           "ratio_p25",
-                                           "ratio_p75",
-                                           "ratio_iqr",
-                                           "ratio_blocks",
-                                           "ratio_trusted",
-                                           "instructions_per_frame",
-                                           "instructions_ratio_to_phong",
-                                           "false_shadow_pct",
-                                           "false_lit_pct",
-                                           "false_shadow_band_pct",
-                                           "false_lit_band_pct",
-                                           "edge_mean_px",
-                                           "edge_p95_px",
-                                           "error_pct",
-                                           "mirror_id_pct",
-                                           "mirror_psnr_db"};
+// The configuration, its times and its ratio to phong; then the accuracy columns (kColumns).
+const std::vector<std::string> kRunColumns = {"group",
+                                              "series",
+                                              "stage",
+                                              "tree",
+                                              "scene",
+                                              "width",
+                                              "height",
+                                              "settings",
+                                              "map_size",
+                                              "light",
+                                              "frames",
+                                              "frame_ms",
+                                              "frame_iqr_ms",
+                                              "frame_min_ms",
+                                              "frame_max_ms",
+                                              "shadow_ms",
+                                              "lit_ms",
+                                              "mirror_ms",
+                                              "map_renders",
+                                              "ratio_to_phong",
+                                              "ratio_p25",
+                                              "ratio_p75",
+                                              "ratio_iqr",
+                                              "ratio_blocks",
+                                              "ratio_trusted",
+                                              "instructions_per_frame",
+                                              "instructions_ratio_to_phong"};
+
+// The accuracy columns after kRunColumns: the shadow figures (metrics/figures.h), the charts'
+// error %, the mirror's figures.
+std::vector<const FigureInfo*> figuresOf(FigureKind kind) {
+    std::vector<const FigureInfo*> out;
+    for (const FigureInfo& f : figureTable())
+        if (f.kind == kind) out.push_back(&f);
+    return out;
+}
+const std::vector<std::string> kColumns = [] {
+    std::vector<std::string> columns = kRunColumns;
+    for (const FigureInfo* f : figuresOf(FigureKind::Shadow)) columns.push_back(f->name);
+    columns.push_back("error_pct");
+    for (const FigureInfo* f : figuresOf(FigureKind::Mirror)) columns.push_back(f->name);
+    return columns;
+}();
 
 // The map size a configuration used: its own setting or the stage's default; NaN without a map.
 double mapSize(const BenchConfig& c) {
@@ -86,42 +95,38 @@ std::vector<std::string> cells(const Row& r) {
     const BenchConfig& c = r.m->config;
     const Accuracy& a = r.m->accuracy;
     const PassTimes& t = r.t();
-    return {c.group,
-            c.series,
-            c.stage,
-            treeName(c.tree),
-            r.m->scene,
-            std::to_string(c.width),
-            std::to_string(c.height),
-            c.setsText(),
-            num(mapSize(c)),
-            r.moving ? "moving" : "still",
-            std::to_string(t.frame.count),
-            num(t.frame.median),
-            num(t.frame.iqr()),
-            num(t.frame.min),
-            num(t.frame.max),
-            num(t.shadow.median),
-            num(t.lit.median),
-            num(t.mirror.median),
-            std::to_string(t.mapRenders),
-            num(r.ratio.median),
-            num(r.ratio.p25),
-            num(r.ratio.p75),
-            num(r.ratio.iqr()),
-            std::to_string(r.ratio.blocks),
-            r.ratio.trusted() ? "yes" : "no",
-            num(r.moving ? r.m->instructions.moving : r.m->instructions.still, 6),
-            num(r.moving ? r.m->instructions.ratioMoving : r.m->instructions.ratioStill),
-            num(a.falseShadowPct),
-            num(a.falseLitPct),
-            num(a.falseShadowBandPct),
-            num(a.falseLitBandPct),
-            num(a.edgeMeanPx),
-            num(a.edgeP95Px),
-            num(a.errorPct),
-            num(a.mirrorIdPct),
-            num(a.mirrorPsnrDb)};
+    std::vector<std::string> cell = {
+        c.group,
+        c.series,
+        c.stage,
+        treeName(c.tree),
+        r.m->scene,
+        std::to_string(c.width),
+        std::to_string(c.height),
+        c.setsText(),
+        num(mapSize(c)),
+        r.moving ? "moving" : "still",
+        std::to_string(t.frame.count),
+        num(t.frame.median),
+        num(t.frame.iqr()),
+        num(t.frame.min),
+        num(t.frame.max),
+        num(t.shadow.median),
+        num(t.lit.median),
+        num(t.mirror.median),
+        std::to_string(t.mapRenders),
+        num(r.ratio.median),
+        num(r.ratio.p25),
+        num(r.ratio.p75),
+        num(r.ratio.iqr()),
+        std::to_string(r.ratio.blocks),
+        r.ratio.trusted() ? "yes" : "no",
+        num(r.moving ? r.m->instructions.moving : r.m->instructions.still, 6),
+        num(r.moving ? r.m->instructions.ratioMoving : r.m->instructions.ratioStill)};
+    for (const FigureInfo* f : figuresOf(FigureKind::Shadow)) cell.push_back(num(a.*f->field));
+    cell.push_back(num(a.errorPct));
+    for (const FigureInfo* f : figuresOf(FigureKind::Mirror)) cell.push_back(num(a.*f->field));
+    return cell;
 }
 
 nlohmann::json rowJson(const std::vector<std::string>& cell) {
