@@ -55,54 +55,28 @@ std::vector<BenchConfig> plan(bool quick, GlslTree tree) {
         c.height = h;
         out.push_back(std::move(c));
     };
-    // How cost grows with the map: each shadow method at its defaults, the map size varied.
-    struct Variant {
-        std::string series, stage;
-        std::vector<std::pair<std::string, std::string>> sets;
-    };
-    std::vector<Variant> variants = {
-        {"rgb", "rgb", {}},
-        {"depth", "depth", {}},
-        {"bias", "bias", {}},
-        {"margin/constant", "margin", {}},
-        {"margin/slope", "margin", {{"margin-kind", "slope"}}},
-        {"hardware/linear", "hardware", {}},
-        {"hardware/nearest", "hardware", {{"filter", "nearest"}}},
-        {"fixed", "fixed", {}},
-        {"hardware/pcf3x3", "hardware", {{"filter", "pcf3x3"}}},
-        // The tutorials' methods (stage peers), on the same axes as ours.
-        {"peers/learnopengl", "peers", {{"method", "learnopengl"}}},
-        {"peers/opengl-tutorial", "peers", {{"method", "opengl-tutorial"}}},
-        {"peers/normal-offset", "peers", {{"method", "normal-offset"}}},
-    };
-    for (const Variant& v : variants)
-        for (int size : mapSizes) {
-            auto sets = v.sets;
-            sets.emplace_back("map-size", std::to_string(size));
-            add("map-size", v.series, v.stage, sets, 640, 480,
-                v.stage == "fixed" ? std::optional<GlslTree>(GlslTree::Legacy) : std::nullopt);
+    // The stages' own series (StageDefinition::benchSeries), group by group: the settings a
+    // series declares, then the axis varied here; at 640x480.
+    auto addSeries = [&](BenchGroup group,
+                         std::vector<std::vector<std::pair<std::string, std::string>>> axis) {
+        for (const StageSeries& s : benchSeriesIn(group)) {
+            if (quick && !s.series->inQuick) continue;
+            for (const auto& point : axis) {
+                auto sets = s.series->sets;
+                sets.insert(sets.end(), point.begin(), point.end());
+                add(benchGroupName(group), s.series->name, s.stage->id, sets, 640, 480,
+                    s.stage->legacyOnly ? std::optional<GlslTree>(GlslTree::Legacy) : std::nullopt);
+            }
         }
+    };
+    // How cost grows with the map: each shadow method, the map size varied.
+    std::vector<std::vector<std::pair<std::string, std::string>>> sizes;
+    for (int size : mapSizes) sizes.push_back({{"map-size", std::to_string(size)}});
+    addSeries(BenchGroup::MapSize, sizes);
     // Storage formats at a 1024 map.
-    const std::string m = "1024";
-    if (!quick) {
-        add("format", "rgb/packed", "rgb", {{"encoding", "packed"}, {"map-size", m}});
-        for (const char* f : {"16", "24", "32f"})
-            add("format", std::string("depth/") + f, "depth",
-                {{"depth-format", f}, {"map-size", m}});
-        for (const char* s : {"rgb8", "depth16", "depth24", "depth32f"})
-            add("format", std::string("margin/") + s, "margin", {{"storage", s}, {"map-size", m}});
-        for (const char* f : {"16", "32f"})  // 24 is hardware's default
-            add("format", std::string("hardware/") + f, "hardware",
-                {{"depth-format", f}, {"map-size", m}});
-        add("format", "hardware/cull-front", "hardware",
-            {{"shadow-cull", "front"}, {"map-size", m}});
-    }
-    // The mirror: both methods, and the texture method at fixed sizes against its footprint.
-    add("mirror", "mirror/texture", "mirror", {});
-    add("mirror", "mirror/stencil", "mirror", {{"mirror-method", "stencil"}});
-    for (const char* s : quick ? std::vector<const char*>{"256"}
-                               : std::vector<const char*>{"128", "256", "512", "1024"})
-        add("mirror", std::string("mirror/texture-") + s, "mirror", {{"mirror-size", s}});
+    if (!quick) addSeries(BenchGroup::Format, {{{"map-size", "1024"}}});
+    // The mirror: its methods, and the texture method at fixed sizes against its footprint.
+    addSeries(BenchGroup::Mirror, {{}});
     // How cost grows with the window: every stage at its defaults.
     for (const auto& [w, h] : windows)
         for (const auto& s : stageRegistry())

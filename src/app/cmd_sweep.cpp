@@ -12,6 +12,7 @@
 #include "bench/bench_run.h"
 #include "io/files.h"
 #include "io/usage_error.h"
+#include "metrics/figures.h"
 #include "metrics/pareto.h"
 #include "stages/registry.h"
 
@@ -120,17 +121,11 @@ int runSweep(const SweepArgs& a) {
 
     BenchRig rig(toBackend(a.backend));
     Table points, breaks;
-    points.columns = {"axis",
-                      "stage",
-                      "tree",
-                      "value",
-                      "false_shadow_pct",
-                      "false_lit_pct",
-                      "false_shadow_band_pct",
-                      "false_lit_band_pct",
-                      "edge_mean_px",
-                      "edge_p95_px",
-                      "error_pct"};
+    // The shadow figures (metrics/figures.h) and the charts' error %.
+    points.columns = {"axis", "stage", "tree", "value"};
+    for (const std::string& name : figureNamesOf(FigureKind::Shadow))
+        points.columns.push_back(name);
+    points.columns.push_back("error_pct");
     breaks.columns = {"axis",       "stage",          "tree",        "threshold_pct",
                       "best_value", "best_error_pct", "works",       "works_from",
                       "works_to",   "breaks_before",  "breaks_after"};
@@ -165,9 +160,11 @@ int runSweep(const SweepArgs& a) {
             }
             rig.prepare(at, light);
             Accuracy acc = rig.accuracy();
-            points.add({axis.name, stage, treeName(c.tree), num(v, 8), num(acc.falseShadowPct),
-                        num(acc.falseLitPct), num(acc.falseShadowBandPct), num(acc.falseLitBandPct),
-                        num(acc.edgeMeanPx), num(acc.edgeP95Px), num(acc.errorPct)});
+            std::vector<std::string> row = {axis.name, stage, treeName(c.tree), num(v, 8)};
+            for (const FigureInfo& f : figureTable())
+                if (f.kind == FigureKind::Shadow) row.push_back(num(acc.*f.field));
+            row.push_back(num(acc.errorPct));
+            points.add(row);
             line.xs.push_back(v);
             line.ys.push_back(acc.errorPct);
             edge.xs.push_back(v);

@@ -2,40 +2,29 @@
 
 #include <map>
 
+#include "stages/registry.h"
+
 namespace sl {
 
 std::vector<BenchConfig> equalAccuracyCandidates(bool quick, GlslTree tree,
                                                  const std::string& only) {
-    struct Method {
-        std::string series, stage;
-        std::vector<std::pair<std::string, std::string>> sets;
-    };
-    const std::vector<Method> methods = {
-        {"hardware/linear", "hardware", {}},
-        {"hardware/nearest", "hardware", {{"filter", "nearest"}}},
-        {"hardware/pcf3x3", "hardware", {{"filter", "pcf3x3"}}},
-        {"margin/constant", "margin", {}},
-        {"depth", "depth", {}},
-        {"peers/learnopengl", "peers", {{"method", "learnopengl"}}},
-        {"peers/opengl-tutorial", "peers", {{"method", "opengl-tutorial"}}},
-        {"peers/normal-offset", "peers", {{"method", "normal-offset"}}},
-    };
     std::vector<int> sizes =
         quick ? std::vector<int>{256, 1024} : std::vector<int>{256, 512, 1024, 2048};
     // not a stage id: the light fit "fixed" (--set light-fit)
     const std::vector<std::string> allFits = {"tight", "sphere", "fixed"};
     std::vector<std::string> fits = quick ? std::vector<std::string>{"tight"} : allFits;
     std::vector<BenchConfig> out;
-    for (const Method& m : methods) {
-        if (m.series.find(only) == std::string::npos) continue;
+    // The methods: each stage's equal-accuracy series (StageDefinition::benchSeries).
+    for (const StageSeries& m : benchSeriesIn(BenchGroup::EqualAccuracy)) {
+        if (m.series->name.find(only) == std::string::npos) continue;
         for (const std::string& fit : fits)
             for (int size : sizes) {
                 BenchConfig c;
-                c.group = "equal-accuracy";
-                c.series = m.series;
-                c.stage = m.stage;
+                c.group = benchGroupName(BenchGroup::EqualAccuracy);
+                c.series = m.series->name;
+                c.stage = m.stage->id;
                 c.tree = tree;
-                c.sets = m.sets;
+                c.sets = m.series->sets;
                 c.sets.emplace_back("map-size", std::to_string(size));
                 c.sets.emplace_back("light-fit", fit);
                 out.push_back(c);

@@ -8,6 +8,7 @@
 #include "bench/bench_output.h"
 #include "io/files.h"
 #include "io/usage_error.h"
+#include "metrics/figures.h"
 #include "metrics/pareto.h"
 #include "stages/registry.h"
 
@@ -15,47 +16,50 @@ namespace sl {
 
 namespace {
 
-// The speed targets at 640x480 with a 1024 map: issue 14's for hardware (2x2 PCF and nearest with
-// a still light; issue 6 had asked 1.05x for the 2x2 filter), issue 6's for the mirror.
-constexpr double kHardwareMovingTarget = 1.3, kHardwareStillTarget = 1.12,
-                 kNearestStillTarget = 1.06, kMirrorTarget = 2.2;
+// The configuration, its times and its ratio to phong; then the accuracy columns (kColumns).
+const std::vector<std::string> kRunColumns = {"group",
+                                              "series",
+                                              "stage",
+                                              "tree",
+                                              "scene",
+                                              "width",
+                                              "height",
+                                              "settings",
+                                              "map_size",
+                                              "light",
+                                              "frames",
+                                              "frame_ms",
+                                              "frame_iqr_ms",
+                                              "frame_min_ms",
+                                              "frame_max_ms",
+                                              "shadow_ms",
+                                              "lit_ms",
+                                              "mirror_ms",
+                                              "map_renders",
+                                              "ratio_to_phong",
+                                              "ratio_p25",
+                                              "ratio_p75",
+                                              "ratio_iqr",
+                                              "ratio_blocks",
+                                              "ratio_trusted",
+                                              "instructions_per_frame",
+                                              "instructions_ratio_to_phong"};
 
-const std::vector<std::string> kColumns = {"group",
-                                           "series",
-                                           "stage",
-                                           "tree",
-                                           "scene",
-                                           "width",
-                                           "height",
-                                           "settings",
-                                           "map_size",
-                                           "light",
-                                           "frames",
-                                           "frame_ms",
-                                           "frame_iqr_ms",
-                                           "frame_min_ms",
-                                           "frame_max_ms",
-                                           "shadow_ms",
-                                           "lit_ms",
-                                           "mirror_ms",
-                                           "map_renders",
-                                           "ratio_to_phong",
-                                           "ratio_p25",
-                                           "ratio_p75",
-                                           "ratio_iqr",
-                                           "ratio_blocks",
-                                           "ratio_trusted",
-                                           "instructions_per_frame",
-                                           "instructions_ratio_to_phong",
-                                           "false_shadow_pct",
-                                           "false_lit_pct",
-                                           "false_shadow_band_pct",
-                                           "false_lit_band_pct",
-                                           "edge_mean_px",
-                                           "edge_p95_px",
-                                           "error_pct",
-                                           "mirror_id_pct",
-                                           "mirror_psnr_db"};
+// The accuracy columns after kRunColumns: the shadow figures (metrics/figures.h), the charts'
+// error %, the mirror's figures.
+std::vector<const FigureInfo*> figuresOf(FigureKind kind) {
+    std::vector<const FigureInfo*> out;
+    for (const FigureInfo& f : figureTable())
+        if (f.kind == kind) out.push_back(&f);
+    return out;
+}
+const std::vector<std::string> kColumns = [] {
+    std::vector<std::string> columns = kRunColumns;
+    for (const FigureInfo* f : figuresOf(FigureKind::Shadow)) columns.push_back(f->name);
+    columns.push_back("error_pct");
+    for (const FigureInfo* f : figuresOf(FigureKind::Mirror)) columns.push_back(f->name);
+    return columns;
+}();
 
 // The map size a configuration used: its own setting or the stage's default; NaN without a map.
 double mapSize(const BenchConfig& c) {
@@ -65,6 +69,15 @@ double mapSize(const BenchConfig& c) {
     for (const ParamSpec& p : info->params)
         if (p.name == "map-size") return p.defaultValue;
     return NAN;
+}
+
+// A target's words with "{ratio}" replaced by the measured ratio (two decimals).
+std::string replaceRatio(std::string words, double ratio) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%.2f", ratio);
+    std::size_t at = words.find("{ratio}");
+    if (at != std::string::npos) words.replace(at, 7, value);
+    return words;
 }
 
 std::string family(const std::string& series) {
@@ -82,42 +95,38 @@ std::vector<std::string> cells(const Row& r) {
     const BenchConfig& c = r.m->config;
     const Accuracy& a = r.m->accuracy;
     const PassTimes& t = r.t();
-    return {c.group,
-            c.series,
-            c.stage,
-            treeName(c.tree),
-            r.m->scene,
-            std::to_string(c.width),
-            std::to_string(c.height),
-            c.setsText(),
-            num(mapSize(c)),
-            r.moving ? "moving" : "still",
-            std::to_string(t.frame.count),
-            num(t.frame.median),
-            num(t.frame.iqr()),
-            num(t.frame.min),
-            num(t.frame.max),
-            num(t.shadow.median),
-            num(t.lit.median),
-            num(t.mirror.median),
-            std::to_string(t.mapRenders),
-            num(r.ratio.median),
-            num(r.ratio.p25),
-            num(r.ratio.p75),
-            num(r.ratio.iqr()),
-            std::to_string(r.ratio.blocks),
-            r.ratio.trusted() ? "yes" : "no",
-            num(r.moving ? r.m->instructions.moving : r.m->instructions.still, 6),
-            num(r.moving ? r.m->instructions.ratioMoving : r.m->instructions.ratioStill),
-            num(a.falseShadowPct),
-            num(a.falseLitPct),
-            num(a.falseShadowBandPct),
-            num(a.falseLitBandPct),
-            num(a.edgeMeanPx),
-            num(a.edgeP95Px),
-            num(a.errorPct),
-            num(a.mirrorIdPct),
-            num(a.mirrorPsnrDb)};
+    std::vector<std::string> cell = {
+        c.group,
+        c.series,
+        c.stage,
+        treeName(c.tree),
+        r.m->scene,
+        std::to_string(c.width),
+        std::to_string(c.height),
+        c.setsText(),
+        num(mapSize(c)),
+        r.moving ? "moving" : "still",
+        std::to_string(t.frame.count),
+        num(t.frame.median),
+        num(t.frame.iqr()),
+        num(t.frame.min),
+        num(t.frame.max),
+        num(t.shadow.median),
+        num(t.lit.median),
+        num(t.mirror.median),
+        std::to_string(t.mapRenders),
+        num(r.ratio.median),
+        num(r.ratio.p25),
+        num(r.ratio.p75),
+        num(r.ratio.iqr()),
+        std::to_string(r.ratio.blocks),
+        r.ratio.trusted() ? "yes" : "no",
+        num(r.moving ? r.m->instructions.moving : r.m->instructions.still, 6),
+        num(r.moving ? r.m->instructions.ratioMoving : r.m->instructions.ratioStill)};
+    for (const FigureInfo* f : figuresOf(FigureKind::Shadow)) cell.push_back(num(a.*f->field));
+    cell.push_back(num(a.errorPct));
+    for (const FigureInfo* f : figuresOf(FigureKind::Mirror)) cell.push_back(num(a.*f->field));
+    return cell;
 }
 
 nlohmann::json rowJson(const std::vector<std::string>& cell) {
@@ -414,36 +423,28 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
         if (!r.trusted()) return std::string(t);
         return std::string(r.median <= target ? "met" : "MISSED");
     };
+    // The speed targets the stages declare on their series (BenchSeries::targets), on every row
+    // of that series at 640 wide (and the target's map size).
+    std::map<std::string, std::vector<const BenchTarget*>> targets;
+    for (BenchGroup group :
+         {BenchGroup::MapSize, BenchGroup::Format, BenchGroup::Mirror, BenchGroup::EqualAccuracy})
+        for (const StageSeries& series : benchSeriesIn(group))
+            for (const BenchTarget& t : series.series->targets)
+                targets[series.series->name].push_back(&t);
     for (const Measured& m : results) {
         const BenchConfig& c = m.config;
-        bool hw1024 = c.series == "hardware/linear" && mapSize(c) == 1024 && c.width == 640;
-        bool mirror = c.series == "mirror/texture" && c.width == 640;
-        if (hw1024) {
-            double moving = m.ratio(true), still = m.ratio(false);
-            std::snprintf(line, sizeof line,
-                          "target hardware, 1024 map, light moving: %.2fx phong (<= %.2f: %s); "
-                          "still: %.2fx (<= %.2f: %s)\n",
-                          moving, kHardwareMovingTarget,
-                          verdict(m.ratioMoving, kHardwareMovingTarget).c_str(), still,
-                          kHardwareStillTarget,
-                          verdict(m.ratioStill, kHardwareStillTarget).c_str());
-            s << line;
-        }
-        if (c.series == "hardware/nearest" && mapSize(c) == 1024 && c.width == 640) {
-            std::snprintf(
-                line, sizeof line,
-                "target hardware filter=nearest, light still: %.2fx phong (<= %.2f: %s)\n",
-                m.ratio(false), kNearestStillTarget,
-                verdict(m.ratioStill, kNearestStillTarget).c_str());
-            s << line;
-        }
-        if (mirror) {
-            double still = m.ratio(false);
-            std::snprintf(line, sizeof line,
-                          "target mirror (texture, footprint-sized): %.2fx phong on the mirror "
-                          "scene (<= %.2f: %s)\n",
-                          still, kMirrorTarget, verdict(m.ratioStill, kMirrorTarget).c_str());
-            s << line;
+        auto found = targets.find(c.series);
+        if (found == targets.end() || c.width != 640) continue;
+        for (const BenchTarget* t : found->second) {
+            if (t->mapSize != 0 && mapSize(c) != t->mapSize) continue;
+            std::string text = "target " + t->what;
+            for (std::size_t k = 0; k < t->bounds.size(); ++k) {
+                const BenchBound& b = t->bounds[k];
+                std::snprintf(line, sizeof line, " (<= %.2f: %s)", b.atMost,
+                              verdict(m.ratios(b.moving), b.atMost).c_str());
+                text += (k ? "; " : "") + replaceRatio(b.words, m.ratio(b.moving)) + line;
+            }
+            s << text << "\n";
         }
     }
     report.summary = s.str();

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "metrics/figures.h"  // Accuracy
 #include "metrics/shadow_metrics.h"
 #include "metrics/shadow_truth.h"
 #include "platform/headless.h"
@@ -17,19 +18,6 @@
 #include "stages/request.h"
 
 namespace sl {
-
-// The accuracy figures of one render (GUIDE section 4). Non-applicable ones stay NaN.
-struct Accuracy {
-    double falseShadowPct = NAN, falseLitPct = NAN;
-    double falseShadowBandPct = NAN, falseLitBandPct = NAN;
-    double edgeMeanPx = NAN, edgeP95Px = NAN;
-    double darkWithoutCasterPct = NAN, falseShadowSpecklePct = NAN, shadowLevelOffPct = NAN;
-    double litLightLostPct = NAN, litTooBrightPct = NAN;
-    double mirrorIdPct = NAN, mirrorPsnrDb = NAN;
-    // One number for charts: shadow stages the balanced error (false shadow % + false lit %) / 2
-    // outside the edge band; the mirror 100 - id agreement %.
-    double errorPct = NAN;
-};
 
 // The Accuracy of a shadow stage from its figures (edge figures NaN when undefined).
 Accuracy shadowAccuracy(const ShadowFigures& f);

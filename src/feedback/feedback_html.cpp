@@ -10,6 +10,7 @@
 #include "feedback/html_text.h"
 #include "feedback/student_summary.h"
 #include "io/files.h"
+#include "metrics/figures.h"
 #include "stages/registry.h"
 
 namespace sl {
@@ -62,23 +63,9 @@ std::string boundInWords(const std::string& bound) {
 // One failing figure in plain words: what it measures, its value and the bound it missed.
 std::string figureInWords(const std::string& figure, const std::string& value,
                           const std::string& bound) {
-    static const std::map<std::string, std::pair<std::string, std::string>> kWords = {
-        {"false_shadow_pct", {"the surfaces the light reaches drawn in shadow", " %"}},
-        {"false_lit_pct", {"the true shadows drawn lit", " %"}},
-        {"false_shadow_band_pct", {"false shadow near the shadow edges", " %"}},
-        {"false_lit_band_pct", {"false light near the shadow edges", " %"}},
-        {"edge_mean_px", {"the mean distance of your shadow edges from the truth", " px"}},
-        {"edge_p95_px", {"the distance within which 95 % of your shadow edges lie", " px"}},
-        {"dark_without_caster_pct", {"the picture drawn dark where nothing casts a shadow", " %"}},
-        {"false_shadow_speckle_pct", {"speckled false shadow (acne)", " %"}},
-        {"shadow_level_off_pct", {"the shadows at the wrong darkness", " %"}},
-        {"lit_light_lost_pct", {"the lit surfaces that lost light", " %"}},
-        {"lit_too_bright_pct", {"the lit surfaces drawn too bright", " %"}},
-        {"mirror_id_pct", {"the mirror showing the right object", " %"}},
-        {"mirror_psnr_db", {"your mirror's PSNR against the exact (stencil) reflection", " dB"}}};
-    auto it = kWords.find(figure);
-    std::string what = it == kWords.end() ? figure : it->second.first;
-    std::string unit = it == kWords.end() ? "" : it->second.second;
+    const FigureInfo* info = findFigure(figure);
+    std::string what = info ? info->words : figure;
+    std::string unit = info ? std::string(" ") + info->unit : "";
     return what + " is " + value + unit + ", and should be " + boundInWords(bound) + unit;
 }
 

@@ -15,6 +15,7 @@
 #include "io/files.h"
 #include "io/png.h"
 #include "io/usage_error.h"
+#include "metrics/figures.h"
 #include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
 #include "stages/drawn.h"
@@ -176,19 +177,9 @@ std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCa
 }
 
 std::map<std::string, double> CheckResult::figureMap() const {
-    return {{"false_shadow_pct", figures.falseShadowPct},
-            {"false_lit_pct", figures.falseLitPct},
-            {"false_shadow_band_pct", figures.falseShadowBandPct},
-            {"false_lit_band_pct", figures.falseLitBandPct},
-            {"edge_mean_px", figures.edgeMeanPx},
-            {"edge_p95_px", figures.edgeP95Px},
-            {"dark_without_caster_pct", figures.darkWithoutCasterPct},
-            {"false_shadow_speckle_pct", figures.falseShadowSpecklePct},
-            {"shadow_level_off_pct", figures.shadowLevelOffPct},
-            {"lit_light_lost_pct", figures.litLightLostPct},
-            {"lit_too_bright_pct", figures.litTooBrightPct},
-            {"mirror_id_pct", figures.mirrorIdPct},
-            {"mirror_psnr_db", figures.mirrorPsnrDb}};
+    std::map<std::string, double> out;
+    for (const FigureInfo& f : figureTable()) out[f.name] = figures.*f.field;
+    return out;
 }
 
 CheckResult checkResultFor(const RenderRequest& request) {
@@ -449,20 +440,9 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
         r.light = vecFrom(j.at("light"));
         const auto& f = j.at("figures");
         Accuracy& a = r.figures;
-        a.falseShadowPct = numberFrom(f.at("false_shadow_pct"));
-        a.falseLitPct = numberFrom(f.at("false_lit_pct"));
-        a.falseShadowBandPct = numberFrom(f.at("false_shadow_band_pct"));
-        a.falseLitBandPct = numberFrom(f.at("false_lit_band_pct"));
-        a.edgeMeanPx = numberFrom(f.at("edge_mean_px"));
-        a.edgeP95Px = numberFrom(f.at("edge_p95_px"));
-        a.mirrorIdPct = numberFrom(f.at("mirror_id_pct"));
-        a.mirrorPsnrDb = numberFrom(f.at("mirror_psnr_db"));
-        a.darkWithoutCasterPct = numberFrom(f.at("dark_without_caster_pct"));
-        a.falseShadowSpecklePct = numberFrom(f.at("false_shadow_speckle_pct"));
-        a.shadowLevelOffPct = numberFrom(f.at("shadow_level_off_pct"));
-        a.litLightLostPct = numberFrom(f.at("lit_light_lost_pct"));
-        a.litTooBrightPct =
-            f.contains("lit_too_bright_pct") ? numberFrom(f["lit_too_bright_pct"]) : NAN;
+        for (const FigureInfo& fig : figureTable())
+            a.*fig.field =
+                fig.inEveryRecord || f.contains(fig.name) ? numberFrom(f.at(fig.name)) : NAN;
         if (!std::isnan(a.falseShadowPct)) a.errorPct = 0.5 * (a.falseShadowPct + a.falseLitPct);
         if (!std::isnan(a.mirrorIdPct)) a.errorPct = 100.0 - a.mirrorIdPct;
         const auto& pixels = j.at("pixels");

@@ -40,6 +40,7 @@ StageDefinition biasStage() {
                                          "added to the stored depth before comparing"));
     s.views = shadowViews();
     s.sourceRules = {gamingRule()};
+    s.benchSeries = {BenchSeries(BenchGroup::MapSize, "bias")};
     s.create = [] { return std::make_unique<BiasStage>(); };
     return s;
 }

@@ -35,6 +35,13 @@ StageDefinition depthStage() {
                                          "added to the stored depth before comparing"));
     s.views = shadowViews();
     s.sourceRules = {gamingRule()};
+    s.benchSeries = {
+        BenchSeries(BenchGroup::MapSize, "depth"),
+        BenchSeries(BenchGroup::Format, "depth/16", {{"depth-format", "16"}}),
+        BenchSeries(BenchGroup::Format, "depth/24", {{"depth-format", "24"}}),
+        BenchSeries(BenchGroup::Format, "depth/32f", {{"depth-format", "32f"}}),
+        BenchSeries(BenchGroup::EqualAccuracy, "depth").ranked(2),  // after hardware, margin
+    };
     s.create = [] { return std::make_unique<DepthStage>(); };
     return s;
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "io/data_paths.h"
+#include "metrics/figures.h"
 #include "scene/scene_json.h"
 #include "stages/registry.h"
 #include "stages/stage.h"
@@ -224,19 +225,11 @@ std::string Expectation::label() const {
 }
 
 const std::vector<std::string>& figureNames() {
-    static const std::vector<std::string> names = {"false_shadow_pct",
-                                                   "false_lit_pct",
-                                                   "false_shadow_band_pct",
-                                                   "false_lit_band_pct",
-                                                   "edge_mean_px",
-                                                   "edge_p95_px",
-                                                   "mirror_id_pct",
-                                                   "mirror_psnr_db",
-                                                   "dark_without_caster_pct",
-                                                   "false_shadow_speckle_pct",
-                                                   "shadow_level_off_pct",
-                                                   "lit_light_lost_pct",
-                                                   "lit_too_bright_pct"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> all;
+        for (const FigureInfo& f : figureTable()) all.push_back(f.name);
+        return all;
+    }();
     return names;
 }
 

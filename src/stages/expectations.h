@@ -54,7 +54,7 @@ struct GradingView {
     std::string why;
 };
 
-// The figures names a limit may use, in report order.
+// The figure names a limit may use, in report order (metrics/figures.h: figureTable()).
 const std::vector<std::string>& figureNames();
 
 // The stage's own default scene ("slides" unless it names one).

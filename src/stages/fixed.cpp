@@ -235,6 +235,7 @@ StageDefinition fixedStage() {
     s.legacyOnly = true;
     s.unshadowedIsOwn = true;  // its Gouraud lighting is its own: judged against its all-lit render
     s.views = {ViewMode::Final};
+    s.benchSeries = {BenchSeries(BenchGroup::MapSize, "fixed")};  // legacy tree: legacyOnly
 #ifndef SHADOWLAB_GL_ES
     s.create = [] { return std::make_unique<FixedStage>(); };
 #else

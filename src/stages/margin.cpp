@@ -56,6 +56,15 @@ StageDefinition marginStage() {
              {"the light direction", {"lightPosition", "gl_LightSource"}}},
             "the slope-scaled margin (margin-kind=slope) must grow with the angle between the "
             "normal and the light direction")};
+    s.benchSeries = {
+        BenchSeries(BenchGroup::MapSize, "margin/constant"),
+        BenchSeries(BenchGroup::MapSize, "margin/slope", {{"margin-kind", "slope"}}),
+        BenchSeries(BenchGroup::Format, "margin/rgb8", {{"storage", "rgb8"}}),
+        BenchSeries(BenchGroup::Format, "margin/depth16", {{"storage", "depth16"}}),
+        BenchSeries(BenchGroup::Format, "margin/depth24", {{"storage", "depth24"}}),
+        BenchSeries(BenchGroup::Format, "margin/depth32f", {{"storage", "depth32f"}}),
+        BenchSeries(BenchGroup::EqualAccuracy, "margin/constant").ranked(1),  // after hardware
+    };
     s.create = [] { return std::make_unique<MarginStage>(); };
     return s;
 }

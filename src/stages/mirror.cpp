@@ -417,6 +417,22 @@ StageDefinition mirrorStage() {
     // shadow-map here means the render-to-texture target: the mirror texture, full screen.
     s.views = {ViewMode::Final, ViewMode::ShadowMap};
     s.sourceRules = {gamingRule()};
+    // Both methods, and the texture method at fixed sizes against its footprint-sized default.
+    // Issue 6's speed target: the texture method at most 2.2x phong on the mirror scene.
+    BenchTarget texture{"mirror (texture, footprint-sized): ",
+                        0,
+                        {{false, 2.2, "{ratio}x phong on the mirror scene"}}};
+    s.benchSeries = {
+        BenchSeries(BenchGroup::Mirror, "mirror/texture").withTarget(texture),
+        BenchSeries(BenchGroup::Mirror, "mirror/stencil", {{"mirror-method", "stencil"}}),
+        BenchSeries(BenchGroup::Mirror, "mirror/texture-128", {{"mirror-size", "128"}})
+            .fullRunOnly(),
+        BenchSeries(BenchGroup::Mirror, "mirror/texture-256", {{"mirror-size", "256"}}),
+        BenchSeries(BenchGroup::Mirror, "mirror/texture-512", {{"mirror-size", "512"}})
+            .fullRunOnly(),
+        BenchSeries(BenchGroup::Mirror, "mirror/texture-1024", {{"mirror-size", "1024"}})
+            .fullRunOnly(),
+    };
     s.create = [] { return std::make_unique<MirrorStage>(); };
     return s;
 }

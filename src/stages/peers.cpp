@@ -65,6 +65,22 @@ StageDefinition peersStage() {
                                          "normal-offset: texels along N where N.L = 1"));
     s.views = shadowViews();
     s.sourceRules = {gamingRule()};
+    // The tutorials' methods on the same axes as ours, ranked after every series of ours.
+    s.benchSeries = {
+        BenchSeries(BenchGroup::MapSize, "peers/learnopengl", {{"method", "learnopengl"}})
+            .ranked(1),
+        BenchSeries(BenchGroup::MapSize, "peers/opengl-tutorial", {{"method", "opengl-tutorial"}})
+            .ranked(1),
+        BenchSeries(BenchGroup::MapSize, "peers/normal-offset", {{"method", "normal-offset"}})
+            .ranked(1),
+        BenchSeries(BenchGroup::EqualAccuracy, "peers/learnopengl", {{"method", "learnopengl"}})
+            .ranked(3),
+        BenchSeries(BenchGroup::EqualAccuracy, "peers/opengl-tutorial",
+                    {{"method", "opengl-tutorial"}})
+            .ranked(3),
+        BenchSeries(BenchGroup::EqualAccuracy, "peers/normal-offset", {{"method", "normal-offset"}})
+            .ranked(3),
+    };
     s.create = [] { return std::make_unique<PeersStage>(); };
     return s;
 }

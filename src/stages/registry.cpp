@@ -46,4 +46,16 @@ std::vector<const StageInfo*> stageInfos() {
     return infos;
 }
 
+std::vector<StageSeries> benchSeriesIn(BenchGroup group) {
+    std::vector<StageSeries> out;
+    for (const auto& s : stageRegistry())
+        for (const BenchSeries& b : s.benchSeries)
+            if (b.group == group) out.push_back({&s, &b});
+    // Stage order and each stage's own order are the registry's: a stable sort keeps them.
+    std::stable_sort(out.begin(), out.end(), [](const StageSeries& a, const StageSeries& b) {
+        return a.series->rank < b.series->rank;
+    });
+    return out;
+}
+
 }  // namespace sl

@@ -8,6 +8,7 @@
 
 #include "gl/source_rules.h"
 #include "render/stage_interface.h"
+#include "stages/bench_series.h"
 
 namespace sl {
 
@@ -16,6 +17,8 @@ struct StageDefinition : StageInfo {
     // What the student's shaders of this stage must or must not say, read from glslang's syntax
     // tree (gl/source_rules.h): a finding is a note on the row for the instructor, not a score.
     std::vector<SourceRule> sourceRules;
+    // What `bench` measures of the stage beyond its defaults (stages/bench_series.h).
+    std::vector<BenchSeries> benchSeries;
 };
 
 // Every stage, in the order of stage_list.h (defined by src/stages/registry.cpp).
@@ -29,5 +32,14 @@ const StageDefinition& lightingStage();
 bool stageNeedsMirror(const std::string& id);
 // The registry as the renderer takes it (Renderer's constructor).
 std::vector<const StageInfo*> stageInfos();
+
+// One bench series with the stage that declares it.
+struct StageSeries {
+    const StageDefinition* stage;
+    const BenchSeries* series;
+};
+// Every stage's series of `group`, in bench's row order (BenchSeries::rank, then stage order,
+// then the order each stage declares them).
+std::vector<StageSeries> benchSeriesIn(BenchGroup group);
 
 }  // namespace sl

@@ -41,6 +41,10 @@ StageDefinition rgbStage() {
                                          "added to the stored depth before comparing"));
     s.views = shadowViews();
     s.sourceRules = {gamingRule()};
+    s.benchSeries = {
+        BenchSeries(BenchGroup::MapSize, "rgb"),
+        BenchSeries(BenchGroup::Format, "rgb/packed", {{"encoding", "packed"}}),
+    };
     s.create = [] { return std::make_unique<RgbStage>(); };
     return s;
 }
