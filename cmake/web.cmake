@@ -48,7 +48,8 @@ add_subdirectory(${SL_WEB_SPIRV_CROSS_SOURCE} spirv-cross EXCLUDE_FROM_ALL)
 # desktop (the page reads its pictures from the canvas).
 file(GLOB SL_WEB_SOURCES CONFIGURE_DEPENDS
      src/io/*.cpp src/math/*.cpp src/scene/*.cpp src/gl/*.cpp src/render/*.cpp src/stages/*.cpp
-     src/platform/webgl_context.cpp src/window/lessons.cpp src/grade/intake.cpp src/web/*.cpp)
+     src/platform/webgl_context.cpp src/window/lessons.cpp src/grade/intake.cpp
+     src/metrics/figures.cpp src/web/*.cpp)
 list(FILTER SL_WEB_SOURCES EXCLUDE REGEX
      "/(io/png|io/box|gl/glsl_for_desktop|gl/loader|gl/machine)\\.cpp$")
 list(APPEND SL_WEB_SOURCES ${SL_WEB_GLSLANG_SOURCE}/StandAlone/ResourceLimits.cpp)

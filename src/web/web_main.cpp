@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "grade/intake.h"
 #include "io/files.h"
@@ -307,6 +308,24 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_student_notes() {
     for (const auto& note : shaders.unsetUniformNotes(p.request.stage)) notes.push_back(note);
     for (const auto& note : notes) text += sl::withShownFolders(note) + "\n";
     return handOver(text);
+}
+
+// Draws the stage on screen `frames` more times, each waited for (a one-pixel read: WebGL's
+// finish does not wait), and returns the median milliseconds a frame, as `shadowlab render`
+// prints its own (render + glFinish); -1 when nothing is on screen.
+EMSCRIPTEN_KEEPALIVE double sl_web_frame_ms(int frames) {
+    Page& p = page();
+    if (!p.renderer || frames < 1) return -1;
+    std::vector<double> times;
+    for (int k = 0; k < frames; ++k) {
+        double start = emscripten_get_now();
+        p.renderer->render(0, p.request.width, p.request.height);
+        unsigned char pixel[4];
+        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+        times.push_back(emscripten_get_now() - start);
+    }
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
 }
 
 // The stage whose picture is on screen: a stage whose shaders failed leaves the last good one.

@@ -213,6 +213,19 @@ def student_folder(driver, args, out, case_dir):
     return failures
 
 
+def frame_time(driver, native_printed):
+    """The page's median ms a frame of the stage on screen (20 frames, each waited for) beside
+    the one native `render --repeat 20` printed; printed and returned (a table, not a test:
+    docs/web.md)."""
+    page_ms = driver.execute_script("return Module.ccall('sl_web_frame_ms', 'number', "
+                                    "['number'], [20])")
+    native_ms = float(re.search(r"median ([0-9.]+) ms/frame", native_printed).group(1))
+    stage = driver.execute_script("return shadowlab.stages[shadowlab.current].id")
+    print(f"web: {stage:9} median ms a frame: page {page_ms:.2f} (SwiftShader), native "
+          f"{native_ms:.2f} (llvmpipe): {page_ms / native_ms:.1f}x")
+    return {"page_ms": page_ms, "native_ms": native_ms}
+
+
 def student_cases(driver, args, corpus):
     """The corpus's core-tree hand-ins of stages the page runs (their case.json says which)."""
     runs = set(driver.execute_script("return shadowlab.stages.filter(s => !s.nativeOnly)"
@@ -289,6 +302,7 @@ def main():
         corpus = pathlib.Path(__file__).resolve().parents[1] / "students"
         prerender(driver, args, out, corpus, pool)
         body = driver.find_element("tag name", "body")
+        frame_times = {}
         for index, stage in enumerate([] if args.students_only else stages):
             body.send_keys(str(index))  # the window's key for the stage
             current, message = driver.execute_script(
@@ -309,8 +323,9 @@ def main():
             failures += parameters(driver, stage)
             body.send_keys("x")  # the defaults again, for the comparison
             native = out / f"native_{stage['id']}.png"
-            subprocess.run([args.shadowlab, "render", "--stage", stage["id"], "--out", str(native)],
-                           check=True, capture_output=True)
+            printed = subprocess.run([args.shadowlab, "render", "--stage", stage["id"], "--out",
+                                      str(native), "--repeat", "20"],
+                                     check=True, capture_output=True, text=True).stdout
             url = "data:image/png;base64," + base64.b64encode(native.read_bytes()).decode()
             r = driver.execute_async_script(COMPARE, url, args.channel_tolerance)
             if "error" in r:
@@ -322,8 +337,10 @@ def main():
             verdict = "ok" if share <= args.pixel_tolerance else "DIFFERS"
             print(f"web: {stage['id']:9} {share:7.3%} of pixels differ by more than "
                   f"{args.channel_tolerance}/255 (worst {r['worst']}): {verdict}")
+            frame_times[stage["id"]] = frame_time(driver, printed)
             if verdict != "ok":
                 failures.append(f"{stage['id']}: {share:.3%} of pixels differ")
+        (out / "frame_times.json").write_text(json.dumps(frame_times, indent=1) + "\n")
         failures += student_folders(driver, args, out, corpus)
         body.send_keys("2")  # the whole page as a student sees it at 1920x1080 (the README's)
         driver.save_screenshot(str(out / "page_1920x1080.png"))
