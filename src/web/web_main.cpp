@@ -295,6 +295,14 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_intake_limits() {
                     std::to_string(sl::kIntakeLimits.totalBytes));
 }
 
+// The window's '+' and '-': the declared parameter one step up or down (ParamSet::step, as the
+// window steps it), `steps` times, and a redraw; "" or the one-line reason.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_step(const char* name, int direction, int steps) {
+    if (!page().renderer) return handOver("no stage selected");
+    for (int k = 0; k < steps; ++k) page().renderer->params().step(name, direction);
+    return sl_web_frame();
+}
+
 // What `check` notes of the student's files of the stage on screen, one a line: the stage's
 // source rules (gl/source_rules.h) and uniforms a student's pass uses but the stage never sets.
 EMSCRIPTEN_KEEPALIVE const char* sl_web_student_notes() {

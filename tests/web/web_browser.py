@@ -108,13 +108,34 @@ def parameters(driver, stage):
         return [f"{stage['id']}: the page's parameters {rows} are not the declared {declared}"]
     if not rows:
         return []
+    failures = []
+    # The window's keys on the table: Tab selects the next parameter, '+' steps it (ParamSet's
+    # step, the page redraws) and '-' steps it again; no other value moves, no message.
+    body = driver.find_element("tag name", "body")
+    values = lambda: driver.execute_script(
+        "return [...document.querySelectorAll('#params input')].map(i => i.value)")
+    index = 1 % len(rows)
+    body.send_keys(*(["\t"] * index))
+    before = values()
+    body.send_keys("+")
+    up = values()
+    body.send_keys("-")
+    down = values()
+    moved = [k for k in range(len(rows)) if up[k] != before[k]] + \
+        [k for k in range(len(rows)) if down[k] != up[k]]
+    message = driver.execute_script("return shadowlab.lastMessage")
+    if set(moved) != {index} or message:
+        failures.append(f"{stage['id']}: Tab x{index}, '+' then '-' gave {before} -> {up} -> "
+                        f"{down} ({message!r})")
+    body.send_keys(*(["\t"] * (len(rows) - index)))  # back to the first, as the stage opens
+    body.send_keys("x")
     name = rows[0][0]
     message = driver.execute_script(
         "const i = document.querySelector('#params input'); i.value = 'not-a-value';"
         "i.dispatchEvent(new Event('change')); return shadowlab.lastMessage")
     if name not in message or "\n" in message.strip():
-        return [f"{stage['id']}: {name}=not-a-value gave {message!r}"]
-    return []
+        failures.append(f"{stage['id']}: {name}=not-a-value gave {message!r}")
+    return failures
 
 
 # A student's folder through the page's folder picker (Selenium hands the input a folder): the
