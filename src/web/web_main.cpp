@@ -25,11 +25,12 @@ namespace {
 struct Page {
     sl::RenderRequest request;
     std::unique_ptr<sl::Renderer> renderer;
-    int lesson = -1;          // the current stage's lesson on screen (-1: the defaults)
-    std::string overlay;      // the student's snapshot (intake), laid over ours; "" for none
-    int snapshots = 0;        // snapshots taken: each in a fresh folder
-    std::string snapshotDir;  // the folder holding `overlay`
-    std::string text;         // the last string handed to the page
+    int lesson = -1;           // the current stage's lesson on screen (-1: the defaults)
+    std::string overlay;       // the student's snapshot (intake), laid over ours; "" for none
+    int snapshots = 0;         // snapshots taken: each in a fresh folder
+    std::string snapshotDir;   // the folder holding `overlay`
+    std::string overlayShown;  // how messages name `overlay`'s files (the folder as picked)
+    std::string text;          // the last string handed to the page
 };
 
 Page& page() {
@@ -252,6 +253,7 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_student_folder(const char* folder, const
     std::string overlay;
     std::string read;
     std::string snapshot;
+    std::string shown;  // how messages name the snapshot's files
     if (*folder) {
         snapshot = "/student/snapshot-" + std::to_string(++p.snapshots);
         try {
@@ -261,7 +263,8 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_student_folder(const char* folder, const
             std::filesystem::remove_all(folder);  // the snapshot is what is drawn
             // Messages name the student's own folder (its name as picked), never the copies.
             read = taken.folder.substr(std::min(taken.folder.size(), std::strlen(folder) + 1));
-            sl::showFolderAs(taken.root, std::string(name) + (read.empty() ? "" : "/" + read));
+            shown = std::string(name) + (read.empty() ? "" : "/" + read);
+            sl::showFolderAs(taken.root, shown);
             for (const auto& note : taken.notes) notes += asPicked(note, folder, name) + "\n";
             overlay = taken.root;
         } catch (const std::exception& e) {
@@ -279,7 +282,12 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_student_folder(const char* folder, const
     request.view = p.request.view;
     std::string error = show(request);
     bool adopted = p.request.overlay == overlay;
-    if (!adopted) p.overlay = before;
+    if (adopted) {
+        p.overlayShown = shown;
+    } else {  // the drawn snapshot's files keep their names in later messages
+        p.overlay = before;
+        sl::showFolderAs(p.overlay, p.overlay.empty() ? "" : p.overlayShown);
+    }
     // The page's memory holds one snapshot: the one drawn.
     std::string dropped = adopted ? p.snapshotDir : snapshot;
     if (adopted) p.snapshotDir = snapshot;
