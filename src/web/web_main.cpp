@@ -304,10 +304,10 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_intake_limits() {
 }
 
 // The window's '+' and '-': the declared parameter one step up or down (ParamSet::step, as the
-// window steps it), `steps` times, and a redraw; "" or the one-line reason.
-EMSCRIPTEN_KEEPALIVE const char* sl_web_step(const char* name, int direction, int steps) {
+// window steps it), and a redraw; "" or the one-line reason.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_step(const char* name, int direction) {
     if (!page().renderer) return handOver("no stage selected");
-    for (int k = 0; k < steps; ++k) page().renderer->params().step(name, direction);
+    page().renderer->params().step(name, direction);
     return sl_web_frame();
 }
 
