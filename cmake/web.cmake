@@ -12,7 +12,9 @@ foreach(header_dir glm nlohmann)
   endif()
   file(CREATE_LINK /usr/include/${header_dir} ${SL_WEB_INCLUDE}/${header_dir} SYMBOLIC)
 endforeach()
-file(CREATE_LINK /usr/include/stb/stb_easy_font.h ${SL_WEB_INCLUDE}/stb_easy_font.h SYMBOLIC)
+foreach(stb_header stb_easy_font.h stb_image_write.h)
+  file(CREATE_LINK /usr/include/stb/${stb_header} ${SL_WEB_INCLUDE}/${stb_header} SYMBOLIC)
+endforeach()
 # Written only when it differs: a new date on it at every configure rebuilt every object.
 file(CONFIGURE OUTPUT ${SL_WEB_INCLUDE}/shadowlab_glad.h
      CONTENT "#pragma once\n#include \"gl/gl_es3.h\"\n")
@@ -44,18 +46,26 @@ set(SPIRV_CROSS_SKIP_INSTALL ON CACHE BOOL "" FORCE)
 add_subdirectory(${SL_WEB_GLSLANG_SOURCE} glslang EXCLUDE_FROM_ALL)
 add_subdirectory(${SL_WEB_SPIRV_CROSS_SOURCE} spirv-cross EXCLUDE_FROM_ALL)
 
-# What runs in the browser: no PNG writer, sandbox, reference tracer or platform contexts of the
-# desktop (the page reads its pictures from the canvas).
+# What runs in the browser: the lecture (scene, renderer, stages, lessons) and `check` in the
+# page (the reference tracer, the figures, the plan, judge and record: grade/check_steps.h), drawn
+# into the page's WebGL context (platform/webgl_*); none of the desktop's sandbox, libpng (stb
+# writes the page's pictures: io/png_web.cpp), GL loader or OSMesa/EGL/X11 contexts.
 file(GLOB SL_WEB_SOURCES CONFIGURE_DEPENDS
      src/io/*.cpp src/math/*.cpp src/scene/*.cpp src/gl/*.cpp src/render/*.cpp src/stages/*.cpp
-     src/platform/webgl_context.cpp src/window/lessons.cpp src/grade/intake.cpp
-     src/metrics/figures.cpp src/web/*.cpp)
+     src/reference/*.cpp src/metrics/*.cpp src/eval/evaluator.cpp
+     src/platform/webgl_context.cpp src/platform/webgl_headless.cpp src/platform/headless.cpp
+     src/platform/framebuffer_target.cpp src/window/lessons.cpp
+     src/grade/intake.cpp src/grade/check_run.cpp src/grade/check_steps.cpp src/grade/check_plan.cpp
+     src/grade/judge.cpp src/grade/status.cpp src/grade/bounds.cpp src/grade/record.cpp
+     src/grade/plan.cpp src/grade/reports.cpp src/web/*.cpp)
 list(FILTER SL_WEB_SOURCES EXCLUDE REGEX
-     "/(io/png|io/box|gl/glsl_for_desktop|gl/loader|gl/machine)\\.cpp$")
+     "/(io/png|gl/glsl_for_desktop|gl/loader|metrics/callgrind|metrics/timing)\\.cpp$")
 list(APPEND SL_WEB_SOURCES ${SL_WEB_GLSLANG_SOURCE}/StandAlone/ResourceLimits.cpp)
 
 set(SL_WEB_DATA ${CMAKE_BINARY_DIR}/data)
 file(GLOB_RECURSE SL_WEB_SHADERS CONFIGURE_DEPENDS shaders_core/* scenes/* slides_examples/*)
+# The stages' data: the lessons' bounds (expectations.json), the displaced views' (check's).
+file(GLOB SL_WEB_STAGE_DATA CONFIGURE_DEPENDS src/stages/*.json)
 add_custom_command(
   OUTPUT ${SL_WEB_DATA}/shaders_core.stamp
   COMMAND ${CMAKE_COMMAND} -E rm -rf ${SL_WEB_DATA}
@@ -64,16 +74,18 @@ add_custom_command(
   COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/scenes ${SL_WEB_DATA}/scenes
   COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/slides_examples
           ${SL_WEB_DATA}/slides_examples
-  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/src/stages/expectations.json
-          ${SL_WEB_DATA}/src/stages/expectations.json
+  COMMAND ${CMAKE_COMMAND} -E make_directory ${SL_WEB_DATA}/src/stages
+  COMMAND ${CMAKE_COMMAND} -E copy ${SL_WEB_STAGE_DATA} ${SL_WEB_DATA}/src/stages/
   COMMAND ${CMAKE_COMMAND} -E touch ${SL_WEB_DATA}/shaders_core.stamp
-  DEPENDS ${SL_WEB_SHADERS} ${CMAKE_SOURCE_DIR}/src/stages/expectations.json
-  COMMENT "The page's data: shaders_core (translated in the page), scenes, lessons"
+  DEPENDS ${SL_WEB_SHADERS} ${SL_WEB_STAGE_DATA}
+  COMMENT "The page's data: shaders_core (translated in the page), scenes, lessons, bounds"
   VERBATIM)
 add_custom_target(web_data DEPENDS ${SL_WEB_DATA}/shaders_core.stamp)
 
 add_executable(shadowlab_web ${SL_WEB_SOURCES})
 add_dependencies(shadowlab_web web_data)
+# Embedded at link time (--embed-file below): a changed shader, scene or bound relinks the page.
+set_property(TARGET shadowlab_web APPEND PROPERTY LINK_DEPENDS ${SL_WEB_DATA}/shaders_core.stamp)
 target_include_directories(shadowlab_web PRIVATE src)
 target_include_directories(shadowlab_web SYSTEM PRIVATE ${SL_WEB_INCLUDE})  # Debian's headers
 target_compile_definitions(shadowlab_web PRIVATE GLM_FORCE_CTOR_INIT

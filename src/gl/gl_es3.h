@@ -34,8 +34,18 @@ inline void glDebugMessageCallback(GLDEBUGPROC, const void*) {}
 
 namespace sl::es3 {
 
-// ES 3.0 has no border clamp: the edge texel is read instead. At the stages' defaults no pixel
-// changes for it (tests/web/web_browser.py compares with the native render); docs/web.md.
+// ES 3.0 (3.8.16) and desktop GL clamp a depth compare's reference to [0, 1] for a fixed-point
+// depth texture; SwiftShader keeps such a texture as float and does not, so a receiver beyond the
+// light's far plane came out shadowed. The translation (gl/glsl_for_webgl.cpp) clamps every 2D
+// compare's reference to the uniform kDepthReferenceRange; before each draw it is set from the
+// depth texture the program compares with: [0, 1] for a fixed-point one, unbounded for a float
+// one (gl_es3.cpp). docs/web.md.
+constexpr const char* kDepthReferenceRange = "sl_depthReference";
+void noteTexImage(GLenum target, GLint internal);
+void beforeDraw();
+
+// ES 3.0 has no border clamp: the edge texel is read instead, which the shadow pass keeps at the
+// border's value (kBorderClamp, render/shadow_map.cpp); docs/web.md.
 inline void texParameteri(GLenum target, GLenum name, GLint value) {
     glTexParameteri(target, name, value == GL_CLAMP_TO_BORDER ? GL_CLAMP_TO_EDGE : value);
 }
@@ -50,6 +60,7 @@ inline void texImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GL
         format = GL_RGBA;
     }
     glTexImage2D(target, level, internal, w, h, border, format, type, pixels);
+    if (level == 0) noteTexImage(target, internal);
 }
 inline void drawBuffer(GLenum buffer) {
     glDrawBuffers(1, &buffer);
@@ -68,6 +79,14 @@ inline void depthRange(GLdouble nearValue, GLdouble farValue) {
 inline void clearDepth(GLdouble value) {
     glClearDepthf(static_cast<GLfloat>(value));
 }
+inline void drawArrays(GLenum mode, GLint first, GLsizei count) {
+    beforeDraw();
+    glDrawArrays(mode, first, count);
+}
+inline void drawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+    beforeDraw();
+    glDrawElements(mode, count, type, indices);
+}
 inline void getDoublev(GLenum name, GLdouble* out) {
     GLfloat values[16] = {};
     glGetFloatv(name, values);
@@ -84,3 +103,5 @@ inline void getDoublev(GLenum name, GLdouble* out) {
 #define glDepthRange sl::es3::depthRange
 #define glClearDepth sl::es3::clearDepth
 #define glGetDoublev sl::es3::getDoublev
+#define glDrawArrays sl::es3::drawArrays
+#define glDrawElements sl::es3::drawElements

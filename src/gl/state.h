@@ -43,6 +43,22 @@ class ScopedFramebuffer {
     std::array<GLint, 4> viewport_{};
 };
 
+// Draws only inside the box (x, y, width, height); nothing is clipped when `on` is false.
+class ScopedScissor {
+  public:
+    ScopedScissor(bool on, int x, int y, int width, int height) : enable_(GL_SCISSOR_TEST, on) {
+        glGetIntegerv(GL_SCISSOR_BOX, box_.data());
+        if (on) glScissor(x, y, width, height);
+    }
+    ~ScopedScissor() { glScissor(box_[0], box_[1], box_[2], box_[3]); }
+    ScopedScissor(const ScopedScissor&) = delete;
+    ScopedScissor& operator=(const ScopedScissor&) = delete;
+
+  private:
+    ScopedEnable enable_;
+    std::array<GLint, 4> box_{};
+};
+
 class ScopedPolygonOffset {
   public:
     ScopedPolygonOffset(float factor, float units)
@@ -90,6 +106,16 @@ class ScopedColorMask {
   private:
     std::array<GLboolean, 4> mask_{};
 };
+
+// What this GL lacks (gl/gl_es3.h; docs/web.md): WebGL refuses a near value above the far one
+// (glDepthRange(1, 0): INVALID_OPERATION) and has no border clamp (GL_CLAMP_TO_BORDER).
+#ifdef SHADOWLAB_GL_ES
+constexpr bool kDepthRangeFlips = false;
+constexpr bool kBorderClamp = false;
+#else
+constexpr bool kDepthRangeFlips = true;
+constexpr bool kBorderClamp = true;
+#endif
 
 class ScopedDepthRange {
   public:

@@ -1,5 +1,7 @@
 #include "grade/check_run.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -12,12 +14,14 @@
 #include "grade/bounds.h"
 #include "grade/judge.h"
 #include "grade/reports.h"
+#include "io/data_paths.h"
 #include "io/files.h"
 #include "io/png.h"
 #include "io/usage_error.h"
 #include "metrics/figures.h"
 #include "metrics/mirror_metrics.h"
 #include "metrics/shadow_metrics.h"
+#include "scene/scene_json.h"
 #include "stages/drawn.h"
 #include "stages/registry.h"
 #include "stages/stage.h"
@@ -130,50 +134,58 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
     return cases;
 }
 
+CaseSeries::CaseSeries(Evaluator& rig, std::vector<CheckCase> cases,
+                       std::function<std::string(const CheckCase&)> diffPath)
+    : rig_(rig), cases_(std::move(cases)), diffPath_(std::move(diffPath)) {}
+
+bool CaseSeries::done() const {
+    return results_.size() == cases_.size() ||
+           (!results_.empty() && unjudged(results_.back().status));
+}
+
+// Our shaders' figures in the seeded views (displaced and drawn rows, and an instructor's extra
+// views of drawn rows), where our shaders are the solution: measured in one go (one context for
+// ours, one for theirs: switching per row rebuilt both and traced the reference again each
+// time), once the submission's first rows have run (a shader that does not build ends the stage
+// before: no render of ours in its worker). A student edition's shaders are stubs: its displaced
+// rows are judged by the data alone, and it has no drawn rows.
+bool CaseSeries::needsOurs(const CheckCase& c) {
+    return c.request.displaceSeed && !c.request.overlay.empty() &&
+           !isStudentEdition(c.request.tree);
+}
+
+void CaseSeries::measureOurs() {
+    measured_ = true;
+    for (std::size_t k = 0; k < cases_.size(); ++k) {
+        if (!needsOurs(cases_[k])) continue;
+        RenderRequest shipped = cases_[k].request;
+        shipped.overlay.clear();
+        rig_.prepare(shipped);
+        CheckResult mine;
+        mine.figures = rig_.accuracy();
+        ours_[k] = mine.figureMap();
+    }
+}
+
+const CheckResult& CaseSeries::next() {
+    const std::size_t k = results_.size();
+    const CheckCase& c = cases_.at(k);
+    if (!measured_ && needsOurs(c)) measureOurs();
+    auto found = ours_.find(k);
+    CheckResult r = runCheck(rig_, c.request, diffPath_(c),
+                             found == ours_.end() ? nullptr : &found->second, c.pictures);
+    r.view = c.view;
+    r.lesson = c.lesson.empty() && r.expectation.entry ? r.expectation.entry->label() : c.lesson;
+    results_.push_back(std::move(r));
+    return results_.back();
+}
+
 std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCase>& cases,
                                        const std::function<std::string(const CheckCase&)>& diffPath,
                                        const std::function<void(const CheckResult&)>& progress) {
-    // Our shaders' figures in the seeded views (displaced and drawn rows, and an instructor's
-    // extra views of drawn rows), where our shaders are the solution: measured in one go (one
-    // context for ours, one for theirs: switching per row rebuilt both and traced the reference
-    // again each time), once the submission's first rows have run (a shader that does not build
-    // ends the stage before: no render of ours in its worker). A student edition's shaders are
-    // stubs: its displaced rows are judged by the data alone, and it has no drawn rows.
-    auto needsOurs = [&](const CheckCase& c) {
-        return c.request.displaceSeed && !c.request.overlay.empty() &&
-               !isStudentEdition(c.request.tree);
-    };
-    std::map<std::size_t, std::map<std::string, double>> ours;
-    bool measured = false;
-    auto measureOurs = [&] {
-        measured = true;
-        for (std::size_t k = 0; k < cases.size(); ++k) {
-            if (!needsOurs(cases[k])) continue;
-            RenderRequest shipped = cases[k].request;
-            shipped.overlay.clear();
-            rig.prepare(shipped);
-            CheckResult mine;
-            mine.figures = rig.accuracy();
-            ours[k] = mine.figureMap();
-        }
-    };
-    std::vector<CheckResult> results;
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-        const CheckCase& c = cases[k];
-        if (!measured && needsOurs(c)) measureOurs();
-        auto found = ours.find(k);
-        CheckResult r = runCheck(rig, c.request, diffPath(c),
-                                 found == ours.end() ? nullptr : &found->second, c.pictures);
-        r.view = c.view;
-        r.lesson =
-            c.lesson.empty() && r.expectation.entry ? r.expectation.entry->label() : c.lesson;
-        progress(r);
-        results.push_back(std::move(r));
-        // A shader that does not build fails the same way under every lesson and view: once is
-        // enough to report it.
-        if (unjudged(results.back().status)) break;
-    }
-    return results;
+    CaseSeries series(rig, cases, diffPath);
+    while (!series.done()) progress(series.next());
+    return series.results();
 }
 
 std::map<std::string, double> CheckResult::figureMap() const {
@@ -190,6 +202,44 @@ CheckResult checkResultFor(const RenderRequest& request) {
     r.width = request.width;
     r.height = request.height;
     return r;
+}
+
+namespace {
+
+// The camera, light and scene a stage would have been rendered with, for a stage whose worker
+// returned nothing. The scene is read again only when it is a regular file: a FIFO or a device
+// is the scene loader's to refuse, never the parent's to block on.
+void describeUnrendered(const RenderRequest& r, CheckResult& out) {
+    out.scene = effectiveScene(r);
+    std::string path = out.scene;
+    if (path.find('/') == std::string::npos && path.find(".json") == std::string::npos)
+        path = dataDir() + "/scenes/" + path + ".json";
+    struct stat st;
+    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
+        try {
+            Scene scene = loadScene(out.scene);
+            out.scene = scene.name;
+            out.camera = scene.camera;
+            out.light = scene.light.position;
+        } catch (const std::exception&) {  // the worker's error would have said why
+        }
+    }
+    if (r.eye) out.camera.eye = *r.eye;
+    if (r.at) out.camera.at = *r.at;
+    if (r.fovy) out.camera.fovyDegrees = *r.fovy;
+    if (r.light) out.light = *r.light;
+}
+
+}  // namespace
+
+CheckResult unrenderedResult(const RenderRequest& r) {
+    CheckResult out = checkResultFor(r);
+    if (const StageInfo* info = findStage(r.stage)) out.parameters = ParamSet(info->params);
+    for (const auto& [name, value] : r.sets) out.parameters.set(name, value);
+    describeUnrendered(r, out);
+    out.expectation =
+        findExpectation(expectations(), out.stage, out.scene, out.tree, out.parameters);
+    return out;
 }
 
 namespace {

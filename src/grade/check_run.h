@@ -56,6 +56,10 @@ struct CheckResult {
 // A result naming what `request` checks (stage, tree, overlay, size), nothing measured yet.
 CheckResult checkResultFor(const RenderRequest& request);
 
+// A row naming what `r` checks (its settings, scene, camera, expectation) with nothing measured:
+// the row of a stage that was not rendered (MISSING) or whose job gave no results.
+CheckResult unrenderedResult(const RenderRequest& r);
+
 // Renders and judges `request` (its view must be final); writes the diff image to `diffPath`
 // when not empty (the mirror's: its difference from our stencil reflection). A shader that does
 // not build is caught: the result is an ERROR with the compiler's first line, the full message
@@ -102,8 +106,30 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
 // A seed drawn now (std::random_device), for a run that was not given --seed.
 std::uint64_t drawSeed();
 
-// Runs the cases of one stage and tree in order on `rig`, reporting each result to `progress` as
-// it finishes. `diffPath(case)` names a case's diff image ("" for none).
+// The cases of one stage and tree run in order on `rig`, one at a time (the browser edition runs
+// a row between the page's frames). `diffPath(case)` names a case's diff image ("" for none). A
+// shader that does not build fails the same way under every lesson and view: the series is done
+// after the first row that could not be judged.
+class CaseSeries {
+  public:
+    CaseSeries(Evaluator& rig, std::vector<CheckCase> cases,
+               std::function<std::string(const CheckCase&)> diffPath);
+    bool done() const;
+    const CheckResult& next();  // runs the next case; only while !done()
+    const std::vector<CheckResult>& results() const { return results_; }
+
+  private:
+    static bool needsOurs(const CheckCase& c);
+    void measureOurs();
+    Evaluator& rig_;
+    std::vector<CheckCase> cases_;
+    std::function<std::string(const CheckCase&)> diffPath_;
+    std::map<std::size_t, std::map<std::string, double>> ours_;  // by case: our figures
+    bool measured_ = false;
+    std::vector<CheckResult> results_;
+};
+
+// The whole series at once, reporting each result to `progress` as it finishes.
 std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCase>& cases,
                                        const std::function<std::string(const CheckCase&)>& diffPath,
                                        const std::function<void(const CheckResult&)>& progress);

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "grade/bounds.h"
+#include "grade/check_plan.h"
 #include "grade/reports.h"
 #include "io/files.h"
 #include "io/json_fields.h"
@@ -42,57 +43,6 @@ void writeOutput(const std::string& option, const std::string& path, const std::
     if (!err.empty()) throw UsageError(option + ": " + err);
 }
 
-bool declares(const StageInfo& info, const std::string& param) {
-    for (const ParamSpec& p : info.params)
-        if (p.name == param) return true;
-    return false;
-}
-
-// The requests `--all` checks: every stage in every tree it runs in (or the --glsl tree), tree
-// by tree in lecture order, so stages sharing a scene share a context. --set values go to the
-// stages that declare them.
-std::vector<RenderRequest> allRequests(const StageCheckArgs& a, std::vector<std::string>& notes) {
-    const RenderRequest& base = a.base;
-    std::vector<GlslTree> trees = {GlslTree::Core, GlslTree::Legacy};
-    if (a.glslGiven) {
-        trees = {base.tree};
-    } else if (!base.overlay.empty()) {
-        trees = {GlslTree::Core};
-        notes.push_back(
-            "--shaders without --glsl: checking the core tree (add --glsl legacy for "
-            "a GLSL 1.20 overlay)");
-    }
-    for (const auto& [name, value] : base.sets) {
-        bool any = false;
-        for (const StageInfo& s : stageRegistry()) any = any || declares(s, name);
-        if (!any)
-            throw UsageError("--set " + name + "=" + value + ": no stage declares '" + name + "'");
-    }
-    bool sceneHasMirror = true;
-    if (base.sceneGiven) sceneHasMirror = loadScene(base.scene).mirror.has_value();
-    std::vector<RenderRequest> out;
-    for (GlslTree tree : trees)
-        for (const StageInfo& s : stageRegistry()) {
-            if (s.legacyOnly && tree == GlslTree::Core) continue;
-            RenderRequest r = base;
-            r.stage = s.id;
-            r.tree = tree;
-            r.sets.clear();
-            for (const auto& set : base.sets)
-                if (declares(s, set.first)) r.sets.push_back(set);
-            if (s.needsMirror && base.sceneGiven && !sceneHasMirror) {
-                r.scene = "slides";
-                r.sceneGiven = false;  // the stage's own scene
-                std::string note = "stage " + s.id + ": --scene " + base.scene +
-                                   " has no mirror, checked in its own scene";
-                if (std::find(notes.begin(), notes.end(), note) == notes.end())
-                    notes.push_back(note);
-            }
-            out.push_back(r);
-        }
-    return out;
-}
-
 // The file a row's diff image goes to: --diff-dir DIR/<stage>-<tree>-<view>[-<settings>].png;
 // --diff FILE.png for the first row, FILE-<view>[-<settings>].png for the others.
 std::string diffFileOf(const CheckOutputs& out, const CheckCase& c, bool first,
@@ -115,42 +65,6 @@ std::string diffFileOf(const CheckOutputs& out, const CheckCase& c, bool first,
         stem.resize(dot);
     }
     return stem + "-" + slug + ext;
-}
-
-// check's default plan: one stage per request, every lesson and view of it, a point a row; the
-// stage's own files due (those the student handed in, or all of them when none: MISSING).
-GradingPlan defaultPlan(const StageCheckArgs& a, const std::vector<RenderRequest>& requests,
-                        const Submission* submission) {
-    const ShippedTrees& shipped = shippedTrees();
-    GradingPlan plan;
-    plan.name = a.all ? "every stage" : "stage " + a.base.stage;
-    for (const RenderRequest& r : requests) {
-        StagePlan st;
-        st.stage = r.stage;
-        st.tree = treeName(r.tree);
-        const std::set<std::string>& tree = shipped.of(r.tree);
-        st.files = expectedFiles(r.stage, tree);
-        if (submission) {
-            std::vector<std::string> handed = stageFiles(*submission, r.stage, tree);
-            if (st.files.empty())
-                st.skipped = "stage " + r.stage +
-                             " has no shaders to hand in (fixed function): not graded with "
-                             "--shaders";
-            else if (handed.empty())
-                st.missingFiles = st.files;
-            else
-                st.files = handed;
-        }
-        for (const CheckCase& c : checkCases(r, a.narrowed, a.customView, a.settings.seed)) {
-            RowPlan row;
-            row.check = c;
-            row.points = 1;
-            st.rows.push_back(row);
-        }
-        st.points = double(st.rows.size());
-        plan.stages.push_back(std::move(st));
-    }
-    return plan;
 }
 
 void makeDiffDir(const CheckOutputs& out) {
@@ -276,14 +190,8 @@ int runStageCheck(const StageCheckArgs& a) {
     validateOutputs(a.out, a.base.overlay);
     RenderRequest base = a.base;
     std::vector<std::string> notes;
-    std::vector<RenderRequest> requests;
-    if (a.all) {
-        requests = allRequests(a, notes);
-    } else {
-        const StageInfo* info = findStage(base.stage);
-        if (info && info->legacyOnly && !a.glslGiven) base.tree = GlslTree::Legacy;
-        requests = {base};
-    }
+    std::vector<RenderRequest> requests = checkRequests(a, notes);
+    if (!a.all) base.tree = requests.front().tree;      // a legacy-only stage runs its own tree
     for (const auto& r : requests) validateRequest(r);  // every bad value before any GL work
     expectations();                                     // and a broken data file too
     // The submission, resolved and copied before anything is compiled: what is graded is the

@@ -9,16 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "grade/grade_students.h"
-#include "grade/intake.h"
+#include "grade/check_plan.h"
 
 namespace sl {
-
-// Where a check writes what it found.
-struct CheckOutputs {
-    std::string report, format = "json", junit;
-    std::string diff, diffDir;  // --diff FILE.png (one stage) or --diff-dir DIR
-};
 
 // Throws UsageError (exit 2) for a bad format, or outputs that would overwrite one another or
 // land inside the student's folder `submission` ("" for none).
@@ -31,12 +24,6 @@ int gradeOneStudent(const GradingPlan& plan, const StudentWork& work, GradeSetti
                     const CheckOutputs& out, const std::string& tool, const std::string& headline);
 
 // `check --stage/--all`.
-struct StageCheckArgs {
-    RenderRequest base;  // the common options (stage, tree, scene, overlay, size, camera, sets)
-    bool all = false, glslGiven = false, narrowed = false, customView = false;
-    CheckOutputs out;
-    GradeSettings settings;
-};
 int runStageCheck(const StageCheckArgs& args);
 
 }  // namespace sl

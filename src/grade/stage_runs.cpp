@@ -1,7 +1,5 @@
 #include "grade/stage_runs.h"
 
-#include <sys/stat.h>
-
 #include <iostream>
 #include <memory>
 
@@ -69,30 +67,6 @@ std::string jobErrorText(const CheckResult& r, const WorkerOutcome& outcome) {
     return stage + outcome.errorWhat;
 }
 
-// The camera, light and scene a stage would have been rendered with, for a stage whose worker
-// returned nothing. The scene is read again only when it is a regular file: a FIFO or a device
-// is the scene loader's to refuse, never the parent's to block on.
-void describeUnrendered(const RenderRequest& r, CheckResult& out) {
-    out.scene = effectiveScene(r);
-    std::string path = out.scene;
-    if (path.find('/') == std::string::npos && path.find(".json") == std::string::npos)
-        path = dataDir() + "/scenes/" + path + ".json";
-    struct stat st;
-    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
-        try {
-            Scene scene = loadScene(out.scene);
-            out.scene = scene.name;
-            out.camera = scene.camera;
-            out.light = scene.light.position;
-        } catch (const std::exception&) {  // the worker's error would have said why
-        }
-    }
-    if (r.eye) out.camera.eye = *r.eye;
-    if (r.at) out.camera.at = *r.at;
-    if (r.fovy) out.camera.fovyDegrees = *r.fovy;
-    if (r.light) out.light = *r.light;
-}
-
 // The one row of a job that gave no results.
 CheckResult failedRow(const RenderRequest& r, Status status, const std::string& message,
                       double seconds) {
@@ -155,16 +129,6 @@ std::optional<JobCost> Calibration::ours(const std::vector<CheckCase>& cases, st
     }
     why = found->second.why;
     return found->second.cost;
-}
-
-CheckResult unrenderedResult(const RenderRequest& r) {
-    CheckResult out = checkResultFor(r);
-    if (const StageInfo* info = findStage(r.stage)) out.parameters = ParamSet(info->params);
-    for (const auto& [name, value] : r.sets) out.parameters.set(name, value);
-    describeUnrendered(r, out);
-    out.expectation =
-        findExpectation(expectations(), out.stage, out.scene, out.tree, out.parameters);
-    return out;
 }
 
 void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,

@@ -39,10 +39,6 @@ class Calibration {
     std::map<std::string, Measured> cache_;
 };
 
-// A row naming what `r` checks (its settings, scene, camera, expectation) with nothing measured:
-// the row of a stage that was not rendered (MISSING) or whose job gave no results.
-CheckResult unrenderedResult(const RenderRequest& r);
-
 // The rows a worker sent back for a job (its "results", with the worker's backend and machine),
 // each bounded by boundResult: whatever a worker sends, the parent keeps rows of bounded size.
 // Throws std::invalid_argument (or nlohmann's exception) on a malformed reply.

@@ -175,11 +175,15 @@ Box readBox() {
     rlimit as{};
     if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY)
         box.addressSpaceBytes = (long long)as.rlim_cur;
+#ifdef __EMSCRIPTEN__
+    box.affinityCores = 1;  // the browser edition runs on the page's one thread
+#else
     cpu_set_t set;
     CPU_ZERO(&set);
     box.affinityCores = ::sched_getaffinity(0, sizeof set, &set) == 0
                             ? CPU_COUNT(&set)
                             : int(std::max(1u, std::thread::hardware_concurrency()));
+#endif
     return box;
 }
 

@@ -14,6 +14,7 @@
 #include "gl/debug.h"
 #include "gl/handles.h"
 #include "gl/loader.h"
+#include "platform/framebuffer_target.h"
 
 namespace sl {
 
@@ -60,31 +61,15 @@ class EglContextImpl : public HeadlessContext {
     }
     // Called once the GL entry points are loaded: the colour and depth/stencil target.
     void createTarget() {
-        colour_ = Renderbuffer::create();
-        glBindRenderbuffer(GL_RENDERBUFFER, colour_.id());
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width_, height_);
-        depthStencil_ = Renderbuffer::create();
-        glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_.id());
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width_, height_);
-        glBindRenderbuffer(GL_RENDERBUFFER, 0);
-        fbo_ = Framebuffer::create();
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                                  colour_.id());
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                                  depthStencil_.id());
-        std::string incomplete = checkFramebufferComplete("EGL target framebuffer");
-        if (!incomplete.empty()) throw std::runtime_error(incomplete);
+        target_ = createFramebufferTarget(width_, height_, "EGL target framebuffer");
     }
     ~EglContextImpl() override {
         // GL objects go while their context is still current; then the context itself.
-        fbo_.reset();
-        colour_.reset();
-        depthStencil_.reset();
+        target_ = FramebufferTarget();
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display_, context_);
     }
-    GLuint framebuffer() const override { return fbo_.id(); }
+    GLuint framebuffer() const override { return target_.fbo.id(); }
     const char* backendName() const override { return "egl"; }
     bool makeCurrent() override {
         return eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_);
@@ -93,8 +78,7 @@ class EglContextImpl : public HeadlessContext {
   private:
     EGLDisplay display_;
     EGLContext context_;
-    Renderbuffer colour_, depthStencil_;
-    Framebuffer fbo_;
+    FramebufferTarget target_;
 };
 
 }  // namespace

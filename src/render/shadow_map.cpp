@@ -155,9 +155,17 @@ void ShadowMap::update(FrameContext& f, const ShadowMapSettings& s, Program& pro
     glm::mat4 projection =
         s.depthFlipped ? depthFlippedProjection(frustum_.projection) : frustum_.projection;
     lightViewProjection_ = projection * frustum_.view;
+    // Where the GL refuses glDepthRange(1, 0) (WebGL), the map is drawn with the standard
+    // projection and range: its window depth (1 + z_standard) / 2 is exactly the flipped pair's
+    // (1 - z_flipped) / 2, so the map is the same, and the lit pass still gets the flipped
+    // projection: the slides' -0.5 is right with it and +0.5 inverted, as on the desktop.
+    const bool flipRange = s.depthFlipped && kDepthRangeFlips;
+    const glm::mat4 drawnFrom = s.depthFlipped && !kDepthRangeFlips
+                                    ? frustum_.projection * frustum_.view
+                                    : lightViewProjection_;
     {
         ScopedFramebuffer bind(fbo_.id(), s.size, s.size);
-        ScopedDepthRange range(s.depthFlipped ? 1.0 : 0.0, s.depthFlipped ? 0.0 : 1.0);
+        ScopedDepthRange range(flipRange ? 1.0 : 0.0, flipRange ? 0.0 : 1.0);
         // With the flipped range, nearer fragments have larger NDC z but smaller window z, so the
         // usual GL_LESS still keeps the nearest one.
         ScopedPolygonOffset offset(s.offsetFactor, s.offsetUnits);
@@ -165,6 +173,10 @@ void ShadowMap::update(FrameContext& f, const ShadowMapSettings& s, Program& pro
         glClearColor(1, 1, 1, 1);  // the far value, in colour too
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        // Without a border clamp (WebGL) a lookup outside the map reads the edge texel: the pass
+        // leaves the outermost texels at the clear value (the border's white, the far depth), so
+        // the edge texel is the border and outside the map is lit, as on the desktop.
+        ScopedScissor ring(!kBorderClamp, 1, 1, s.size - 2, s.size - 2);
         // Forced "everything lit" (grading): the same frustum and pass over a real scene whose
         // casters are out of the light's way and whose receivers lie a little farther from the
         // light (scaled about it, so each covers the same texels): no surface is in shadow, not
@@ -175,7 +187,7 @@ void ShadowMap::update(FrameContext& f, const ShadowMapSettings& s, Program& pro
         const glm::mat4 away = glm::translate(glm::mat4(1), f.lightPosition) *
                                glm::scale(glm::mat4(1), glm::vec3(1.0f + kLitFrameFarther)) *
                                glm::translate(glm::mat4(1), -f.lightPosition);
-        drawSceneFromLight(program, f, lightViewProjection_, which,
+        drawSceneFromLight(program, f, drawnFrom, which,
                            [&](Program& p, std::size_t i, const glm::mat4& model) {
                                if (f.allLit) p.set("model", away * model);
                                if (!s.cullBack) return;

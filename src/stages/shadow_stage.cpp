@@ -161,7 +161,11 @@ std::string ShadowStage::explain() const {
     mat("V_light (lookAt)", lf.view);
     mat("P_light", lf.projection);
     e << "depth range "
-      << (settings_.depthFlipped ? "(1, 0), projection flipped: near -> NDC z +1" : "(0, 1)")
+      << (!settings_.depthFlipped ? "(0, 1)"
+          : kDepthRangeFlips
+              ? "(1, 0), projection flipped: near -> NDC z +1"
+              : "(1, 0)'s map, projection flipped: near -> NDC z +1 (WebGL refuses (1, 0): "
+                "the map is drawn with the standard projection and (0, 1), the same depths)")
       << "\n";
     mat("bias (scale/bias)", biasMatrix(explainedBiasZ_));
     mat("bias * P_light * V_light", biasMatrix(explainedBiasZ_) * map_.lightViewProjection());

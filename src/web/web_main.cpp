@@ -18,6 +18,7 @@
 #include "platform/webgl_context.h"
 #include "stages/registry.h"
 #include "stages/request.h"
+#include "web/taken_folder.h"
 #include "window/window_args.h"
 
 namespace {
@@ -30,7 +31,10 @@ struct Page {
     int snapshots = 0;         // snapshots taken: each in a fresh folder
     std::string snapshotDir;   // the folder holding `overlay`
     std::string overlayShown;  // how messages name `overlay`'s files (the folder as picked)
-    std::string text;          // the last string handed to the page
+    // The folder last picked as the page copied it (kept until the next one): what the page's
+    // check takes again, as `check --shaders` takes the folder it is given.
+    std::string upload, uploadName;
+    std::string text;  // the last string handed to the page
 };
 
 Page& page() {
@@ -111,6 +115,19 @@ std::string show(const sl::RenderRequest& request) {
 }
 
 }  // namespace
+
+sl::web::PickedFolder sl::web::pickedFolder() {
+    return {page().upload, page().uploadName};
+}
+
+std::string sl::web::asPicked(const std::string& text) {
+    return page().upload.empty() ? text : ::asPicked(text, page().upload, page().uploadName);
+}
+
+void sl::web::nameDrawnFolder() {
+    const Page& p = page();
+    sl::showFolderAs(p.overlay, p.overlay.empty() ? "" : p.overlayShown);
+}
 
 extern "C" {
 
@@ -254,21 +271,26 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_student_folder(const char* folder, const
     std::string read;
     std::string snapshot;
     std::string shown;  // how messages name the snapshot's files
+    // The page's memory holds the snapshot drawn and the folder last picked (the check's).
+    if (!p.upload.empty() && p.upload != folder) std::filesystem::remove_all(p.upload);
+    p.upload = folder;
+    p.uploadName = name;
     if (*folder) {
         snapshot = "/student/snapshot-" + std::to_string(++p.snapshots);
         try {
             std::filesystem::create_directories(snapshot);
             sl::Submission taken =
                 sl::takeSubmission(folder, snapshot, sl::shippedTrees().both, {p.request.stage});
-            std::filesystem::remove_all(folder);  // the snapshot is what is drawn
             // Messages name the student's own folder (its name as picked), never the copies.
             read = taken.folder.substr(std::min(taken.folder.size(), std::strlen(folder) + 1));
             shown = std::string(name) + (read.empty() ? "" : "/" + read);
             sl::showFolderAs(taken.root, shown);
-            for (const auto& note : taken.notes) notes += asPicked(note, folder, name) + "\n";
+            for (auto& note : taken.notes) {
+                note = asPicked(note, folder, name);
+                notes += note + "\n";
+            }
             overlay = taken.root;
         } catch (const std::exception& e) {
-            std::filesystem::remove_all(folder);
             std::filesystem::remove_all(snapshot);
             return handOver(notes + "\t" + asPicked(e.what(), folder, name) + "\t");
         }
@@ -286,8 +308,8 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_student_folder(const char* folder, const
         p.overlayShown = shown;
     } else {  // the drawn snapshot's files keep their names in later messages
         p.overlay = before;
-        sl::showFolderAs(p.overlay, p.overlay.empty() ? "" : p.overlayShown);
     }
+    sl::web::nameDrawnFolder();
     // The page's memory holds one snapshot: the one drawn.
     std::string dropped = adopted ? p.snapshotDir : snapshot;
     if (adopted) p.snapshotDir = snapshot;

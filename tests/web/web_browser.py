@@ -68,8 +68,8 @@ img.src = nativeUrl;
 
 
 def lessons_and_views(driver, body, stage):
-    """Steps through the stage's lessons ('n') and views ('v'): each must draw without a message,
-    or be refused in words naming what WebGL lacks. Returns the failures; prints what it reached."""
+    """Steps through the stage's lessons ('n') and views ('v'): each must draw without a message.
+    Returns the failures; prints what it reached."""
     failures = []
     count = int(driver.execute_script("return document.getElementById('lesson').textContent")
                 .split()[0])
@@ -80,8 +80,6 @@ def lessons_and_views(driver, body, stage):
         name = text.splitlines()[0] if text else ""
         if not name.startswith(f"lesson {k}/{count}:"):
             failures.append(f"{stage} lesson {k}/{count}: the page shows {name!r}")
-        elif "WebGL refuses" in message:  # a difference docs/web.md lists, said in words
-            print(f"web: {stage:9} {name}: refused as docs/web.md says: {message}")
         elif message:
             failures.append(f"{stage} {name}: {message!r}")
     views = []
@@ -206,15 +204,8 @@ def student_folder(driver, args, out, case_dir):
         native_render(args.shadowlab, stage, folder / read, native)
     if error is None:
         share, r = differing_share(driver, native, args)
-        said = ""
-        if share > args.pixel_tolerance and stage in args.float_compare_stages:
-            # docs/web.md: the browser's 24-bit map compares as a float one (no clamp of the
-            # reference to [0, 1]); native's float map must then draw the page's picture.
-            native_render(args.shadowlab, stage, folder / read, native, ["depth-format=32f"])
-            share, r = differing_share(driver, native, args)
-            said = " (against native depth-format=32f: docs/web.md's float compare)"
         print(f"web: student {case_dir.name:34} drawn in {took:.2f} s: {share:7.3%} of pixels "
-              f"differ from native --shaders{said}")
+              f"differ from native --shaders")
         if message or share > args.pixel_tolerance:
             pathlib.Path(out, f"web_student_{case_dir.name}.png").write_bytes(
                 base64.b64decode(r["png"].split(",", 1)[1]))
@@ -297,11 +288,6 @@ def main():
     stages = json.loads(subprocess.run([args.shadowlab, "stages", "--json"], check=True,
                                        capture_output=True, text=True).stdout)
     stages = stages["stages"] if isinstance(stages, dict) else stages
-    # Stages whose map is 24-bit by default and may be float: there the browser's float compare
-    # (docs/web.md) is checked against native's float map.
-    args.float_compare_stages = {
-        s["id"] for s in stages for p in s["parameters"]
-        if p["name"] == "depth-format" and p.get("default") == "24" and "32f" in p.get("choices", [])}
     failures = []
     driver = browser()
     pool = concurrent.futures.ThreadPoolExecutor(2)

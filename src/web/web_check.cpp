@@ -1,0 +1,184 @@
+// The page's `check` (issue: check in the browser; docs/web.md): the native check's plan, rows,
+// judge and record (grade/check_plan.h, grade/check_steps.h), run in the page a row at a time so
+// it stays responsive between rows. The page calls these; each returns JSON text that stays
+// valid until the next call.
+#include <emscripten/emscripten.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "gl/gl.h"
+#include "grade/check_plan.h"
+#include "grade/check_steps.h"
+#include "grade/intake.h"
+#include "grade/reports.h"
+#include "io/files.h"
+#include "io/usage_error.h"
+#include "stages/expectations.h"
+#include "stages/registry.h"
+#include "web/taken_folder.h"
+
+namespace {
+
+constexpr const char* kPictures = "/check";  // the rows' pictures, in the page's memory
+
+struct PageCheck {
+    std::unique_ptr<sl::CheckSteps> steps;
+    std::string snapshot, shown;  // the checked folder's snapshot, named as picked
+    int snapshots = 0;
+    std::string text;
+};
+
+PageCheck& pageCheck() {
+    static PageCheck c;
+    return c;
+}
+
+const char* handOver(const nlohmann::json& j) {
+    pageCheck().text = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    return pageCheck().text.c_str();
+}
+
+// What the page lists of a stage's record: its line and its rows', as `check` prints them.
+nlohmann::json stageJson(const sl::StageRecord& st) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const sl::RowRecord& row : st.rows)
+        rows.push_back({{"name", sl::checkTestName(row.result)},
+                        {"verdict", row.result.verdict()},
+                        {"points", row.points},
+                        {"max_points", row.maxPoints},
+                        {"message", row.result.message},
+                        {"diff", row.result.diffFile}});
+    return {{"stage", st.stage},
+            {"tree", st.tree},
+            {"status", sl::statusName(st.status)},
+            {"points", st.points},
+            {"max_points", st.maxPoints},
+            {"message", st.message},
+            {"rows", rows}};
+}
+
+// The plan `check --stage STAGE` (or `--all`) grades over the folder last picked, taken again by
+// the intake for the stages checked, as `check --shaders` takes it (a refusal is its UsageError).
+sl::GradingPlan planFor(const std::string& what, std::uint64_t seed, sl::StudentWork& work,
+                        std::vector<std::string>& notes) {
+    sl::StageCheckArgs args;
+    args.all = what == "all";
+    args.base.stage = args.all ? sl::stageRegistry().front().id : what;
+    args.glslGiven = true;  // the browser runs the core tree only
+    args.settings.seed = seed;
+    std::vector<sl::RenderRequest> requests;
+    std::vector<std::string> stages;
+    for (sl::RenderRequest& r : sl::checkRequests(args, notes)) {
+        const sl::StageInfo* info = sl::findStage(r.stage);
+        if (info && info->legacyOnly) {
+            notes.push_back("stage " + r.stage + " runs in the native program only: not checked");
+            continue;
+        }
+        sl::validateRequest(r);
+        requests.push_back(r);
+        stages.push_back(r.stage);
+    }
+    if (requests.empty()) throw sl::UsageError("stage " + what + ": nothing the browser can check");
+    PageCheck& c = pageCheck();
+    const sl::web::PickedFolder picked = sl::web::pickedFolder();
+    sl::Submission submission;
+    work.name = "shipped shaders";
+    if (!picked.path.empty()) {
+        if (!c.snapshot.empty()) std::filesystem::remove_all(c.snapshot);
+        c.snapshot = "/student/check-" + std::to_string(++c.snapshots);
+        std::filesystem::create_directories(c.snapshot);
+        try {
+            submission =
+                sl::takeSubmission(picked.path, c.snapshot, sl::shippedTrees().both, stages);
+        } catch (const sl::IntakeError& e) {
+            throw sl::UsageError(sl::web::asPicked(e.what()));
+        }
+        const std::string read =
+            submission.folder.substr(std::min(submission.folder.size(), picked.path.size() + 1));
+        c.shown = picked.name + (read.empty() ? "" : "/" + read);
+        for (std::string& note : submission.notes) notes.push_back(note = sl::web::asPicked(note));
+        for (sl::RenderRequest& r : requests) r.overlay = c.snapshot;
+        work.name = picked.name;
+        work.overlay = c.snapshot;
+        work.files = submission.files;
+        work.notes = submission.notes;
+        work.hash = submission.hash;
+    }
+    sl::GradingPlan plan =
+        sl::defaultPlan(args, requests, picked.path.empty() ? nullptr : &submission);
+    // A row that does not pass keeps its render, truth and difference for the page to show.
+    for (sl::StagePlan& st : plan.stages)
+        for (sl::RowPlan& row : st.rows) row.check.pictures = sl::RowPictures::AllUnlessPassing;
+    return plan;
+}
+
+}  // namespace
+
+extern "C" {
+
+// Plans `check --stage WHAT` (or every stage the browser runs: "all") over the student's folder
+// on screen (ours when none), with the displaced views' seed `seed` (decimal; "" draws one).
+// {"rows", "seed", "notes", "plan"} or {"error"}.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_check_begin(const char* what, const char* seed) {
+    PageCheck& c = pageCheck();
+    c.steps.reset();
+    try {
+        std::uint64_t drawn = *seed ? std::stoull(seed) : sl::drawSeed();
+        sl::StudentWork work;
+        std::vector<std::string> notes;
+        sl::GradingPlan plan = planFor(what, drawn, work, notes);
+        std::filesystem::remove_all(kPictures);
+        std::filesystem::create_directories(kPictures);
+        auto row = std::make_shared<std::size_t>(0);
+        auto picture = [row](const sl::CheckCase&) {
+            return std::string(kPictures) + "/row-" + std::to_string((*row)++) + ".png";
+        };
+        c.steps = std::make_unique<sl::CheckSteps>(plan, work, drawn, picture);
+        return handOver({{"rows", c.steps->rowCount()},
+                         {"seed", std::to_string(drawn)},
+                         {"notes", notes},
+                         {"plan", plan.name}});
+    } catch (const std::exception& e) {
+        return handOver({{"error", e.what()}});
+    }
+}
+
+// Runs the next row: {"done", "rows", "row" (its check JSON, or null), "stages" (records made by
+// this step), "finished"}.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_check_step() {
+    PageCheck& c = pageCheck();
+    if (!c.steps) return handOver({{"error", "no check running"}});
+    nlohmann::json made = nlohmann::json::array();
+    if (!c.snapshot.empty()) sl::showFolderAs(c.snapshot, c.shown);  // messages name its files
+    for (const sl::StageRecord& st : c.steps->step()) made.push_back(stageJson(st));
+    sl::web::nameDrawnFolder();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);  // the page's own picture is the canvas's
+    const auto& row = c.steps->lastRow();
+    return handOver({{"done", c.steps->rowsDone()},
+                     {"rows", c.steps->rowCount()},
+                     {"row", row ? sl::checkJson(*row) : nlohmann::json()},
+                     {"name", row ? sl::checkTestName(*row) : ""},
+                     {"stages", made},
+                     {"finished", c.steps->done()}});
+}
+
+// The report `check --report` writes for the same run (its record and the expectations file),
+// and the summary lines `check` prints: {"report", "summary", "exit"}.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_check_report() {
+    PageCheck& c = pageCheck();
+    if (!c.steps) return handOver({{"error", "no check has run"}});
+    sl::StudentRecord record = c.steps->record();
+    record.tool = "shadowlab check (browser)";
+    nlohmann::json report = sl::recordJson(record);
+    report["expectations"] = sl::expectationsPath();
+    return handOver(
+        {{"report", report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n"},
+         {"summary", sl::stageSummary(record)},
+         {"exit", record.exitCode()}});
+}
+
+}  // extern "C"

@@ -1,0 +1,168 @@
+#!/usr/bin/env python3
+"""`check` in the browser against native `check` (docs/web.md, "Check in the page"): headless
+Chromium (SwiftShader's WebGL 2) runs the page's check over our shaders (every stage the page
+runs) and over hand-ins of the student corpus (tests/students, the core tree), each with the
+same seed as a native `check --report` of the same files (llvmpipe). Every row must have the
+native verdict; figures are printed beside native's (the largest difference per case), and the
+times of both. Writes page_report_CASE.json and native_report_CASE.json to --out and a
+summary (check_parity.json). Exit 77 (ctest: skipped) as web_browser.py does."""
+import argparse
+import json
+import pathlib
+import re
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import web_browser  # noqa: E402  (the browser, the folder picker, the skip rule)
+
+RUN = """
+const [what, seed, done] = arguments;
+document.getElementById('seed').value = seed;
+shadowlab.startCheck(what);
+const wait = () => shadowlab.check.running ? setTimeout(wait, 100)
+  : done({report: shadowlab.check.report, error: shadowlab.check.error,
+          seconds: shadowlab.check.seconds, state: document.getElementById('checkState').textContent});
+wait();
+"""
+
+
+def rows_of(report):
+    """(stage/tree, view, lesson) -> row, in the report's order."""
+    out = []
+    for stage in report["stages"]:
+        for row in stage["rows"]:
+            out.append(((stage["stage"] + "/" + stage["tree"], row.get("view", ""),
+                         row.get("lesson", "")), row))
+    return out
+
+
+def figure_gap(a, b):
+    """The largest |a - b| over the figures both rows measured, with its name ((0, "") when none
+    is); speckle shares left out (a share of the false shadow's few pixels: 100 against 0 for
+    one speck)."""
+    gaps = [(abs(a[k] - b[k]), k) for k in a if isinstance(a.get(k), (int, float))
+            and isinstance(b.get(k), (int, float)) and "speckle" not in k]
+    return max(gaps) if gaps else (0.0, "")
+
+
+def compare(name, page, native, folder):
+    """The rows whose verdicts differ (or that one side lacks), or whose ERROR line differs once
+    native's path to the folder is cut (the page names it as picked), and the largest figure
+    gap."""
+    failures, worst = [], (0.0, "")
+    p_rows, n_rows = rows_of(page), rows_of(native)
+    if [k for k, _ in p_rows] != [k for k, _ in n_rows]:
+        failures.append(f"{name}: the page's rows {[k for k, _ in p_rows]} are not native's "
+                        f"{[k for k, _ in n_rows]}")
+        return failures, worst
+    for (key, p), (_, n) in zip(p_rows, n_rows):
+        said = n["message"].replace(f"{folder.parent}/", "") if folder else n["message"]
+        if p["verdict"] != n["verdict"] or (p["verdict"] == "ERROR" and p["message"] != said):
+            failures.append(f"{name}: {'/'.join(filter(None, key))}: the page {p['verdict']} "
+                            f"({p['message']}), native {n['verdict']} ({said})")
+        gap, figure = figure_gap(p.get("figures", {}), n.get("figures", {}))
+        worst = max(worst, (gap, f"{figure} in {'/'.join(filter(None, key))}"))
+    return failures, worst
+
+
+def native_check(shadowlab, what, folder, seed, report):
+    """Native `check --report`: (its report, seconds, its last stderr line); the report is None
+    where it refused the run (exit 2: a folder the intake refuses)."""
+    command = [shadowlab, "check", "--glsl", "core", "--seed", str(seed), "--report", str(report)]
+    command += ["--all"] if what == "all" else ["--stage", what]
+    if folder:
+        command += ["--shaders", str(folder)]
+    report.unlink(missing_ok=True)
+    started = time.monotonic()
+    run = subprocess.run(command, capture_output=True, text=True)  # exit code: the verdict's
+    seconds = time.monotonic() - started
+    said = (run.stderr.strip().splitlines() or [""])[-1]
+    return (json.loads(report.read_text()) if report.exists() else None), seconds, said
+
+
+def check_case(driver, args, out, name, what, folder):
+    if folder:
+        web_browser.pick_folder(driver, folder)
+    else:
+        driver.execute_script("shadowlab.takeFolder('', '')")
+    got = driver.execute_async_script(RUN, what, str(args.seed))
+    native, native_s, said = native_check(args.shadowlab, what, folder, args.seed,
+                                          out / f"native_report_{name}.json")
+    if native is None:  # refused: the page must refuse with native's reason
+        reason = said.split(f"{folder}: ", 1)[-1]
+        same = bool(got.get("error")) and got["error"].endswith(reason)
+        print(f"web: check {name:34} refused as native: {reason!r}: {'ok' if same else 'NO'}")
+        return ([] if same else [f"{name}: the page says {got.get('error')!r}, native "
+                                 f"{said!r}"]), {"refused": True, "same": same}
+    if got.get("error"):
+        return [f"{name}: the page's check says {got['error']!r}, native ran it"], None
+    page = json.loads(got["report"])
+    (out / f"page_report_{name}.json").write_text(got["report"])
+    failures, worst = compare(name, page, native, folder)
+    rows = sum(len(s["rows"]) for s in page["stages"])
+    verdicts = " ".join(sorted({r["verdict"] for _, r in rows_of(page)}))
+    print(f"web: check {name:34} {rows:3} rows ({verdicts}): "
+          f"{'same verdicts' if not failures else 'DIFFER'}, largest figure gap {worst[0]:.3g} "
+          f"({worst[1]}); page {got['seconds']:.1f} s, native {native_s:.1f} s")
+    return failures, {"rows": rows, "page_s": got["seconds"], "native_s": native_s,
+                      "figure_gap": worst[0], "gap_figure": worst[1], "same": not failures}
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--site", required=True)
+    ap.add_argument("--shadowlab", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--seed", type=int, default=4242)
+    ap.add_argument("--students", default="", help="only the corpus cases this regex finds")
+    ap.add_argument("--no-ours", action="store_true", help="skip the check of our shaders")
+    ap.add_argument("--per-verdict", type=int, default=0,
+                    help="only the first N cases of each stage and expected verdict (0: all)")
+    args = ap.parse_args()
+    page = pathlib.Path(args.site, "index.html").resolve()
+    if not pathlib.Path(args.site, "shadowlab.js").exists():
+        web_browser.skip(f"no browser build in {args.site} (bash scripts/web.sh builds it)")
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    driver = web_browser.browser()
+    driver.set_script_timeout(1800)
+    failures, summary = [], {}
+    try:
+        driver.get(page.as_uri())
+        for _ in range(300):
+            if driver.execute_script("return window.shadowlab && window.shadowlab.ready"):
+                break
+            time.sleep(0.1)
+        else:
+            print("web: FAILED: the page never became ready")
+            return 1
+        runs = set(driver.execute_script(
+            "return shadowlab.stages.filter(s => !s.nativeOnly).map(s => s.id)"))
+        cases = [] if args.no_ours else [("ours_all", "all", None)]
+        corpus = pathlib.Path(__file__).resolve().parents[1] / "students"
+        taken = []  # (stage, verdict) of the cases taken
+        for folder in sorted(p for p in corpus.iterdir() if (p / "case.json").is_file()):
+            case = json.loads((folder / "case.json").read_text())
+            kind = (case.get("stage"), case.get("verdict"))
+            if case.get("tree") == "core" and case.get("stage") in runs and \
+                    args.students and re.search(args.students, folder.name) and \
+                    (not args.per_verdict or taken.count(kind) < args.per_verdict):
+                taken.append(kind)
+                cases.append((folder.name, case["stage"], folder / case.get("submission", "")))
+        for name, what, folder in cases:
+            f, result = check_case(driver, args, out, name, what, folder)
+            failures += f
+            if result:
+                summary[name] = result
+    finally:
+        driver.quit()
+    (out / "check_parity.json").write_text(json.dumps(summary, indent=1) + "\n")
+    for f in failures:
+        print(f"web: FAILED: {f}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
