@@ -98,6 +98,7 @@ const char* kindName(FigureKind kind) {
         case FigureKind::Look:
             return "look";
         case FigureKind::Mirror:
+            // not a stage id: the kind of figure (metrics/figures.h), the mirror's measures
             return "mirror";
     }
     return "";
