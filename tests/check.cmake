@@ -19,13 +19,13 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
 
 # Every stage in both trees shows its lesson: exit 0, and the report says so stage by stage.
 add_test(NAME check_all
-         COMMAND sh -c "rm -rf ${SL_CHECK_DIR}/all.json ${SL_CHECK_DIR}/all-diff && ${SL_EXE} check --all --report ${SL_CHECK_DIR}/all.json --diff-dir ${SL_CHECK_DIR}/all-diff && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all.json --count $(${SL_EXE} stages --json | ${SL_ROWS}) --exit 0 --verdict peers/core=PASS --verdict peers/legacy=PASS --verdict rgb/core=PASS --verdict bias/legacy=PASS --verdict fixed/legacy=PASS && test -s ${SL_CHECK_DIR}/all-diff/hardware-core-lecture.png && test -s ${SL_CHECK_DIR}/all-diff/fixed-legacy-grazing.png")
+         COMMAND sh -c "rm -rf ${SL_CHECK_DIR}/all.json ${SL_CHECK_DIR}/all-diff && ${SL_EXE} check --all --report ${SL_CHECK_DIR}/all.json --diff-dir ${SL_CHECK_DIR}/all-diff && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all.json --exe ${SL_EXE} --count $(${SL_EXE} stages --json | ${SL_ROWS}) --exit 0 --verdict peers/core=PASS --verdict peers/legacy=PASS --verdict rgb/core=PASS --verdict bias/legacy=PASS --verdict fixed/legacy=PASS && test -s ${SL_CHECK_DIR}/all-diff/hardware-core-lecture.png && test -s ${SL_CHECK_DIR}/all-diff/fixed-legacy-grazing.png")
 set_tests_properties(check_all PROPERTIES LABELS check TIMEOUT 600)
 
 # rgb: margin 0 shows acne, the slides' 0.01 cures it; both are the lesson (exit 0), and the
 # false-shadow figure drops by an order of magnitude.
 add_test(NAME check_rgb_margin
-         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/rgb0.json ${SL_CHECK_DIR}/rgb001.json && ${SL_EXE} check --stage rgb --report ${SL_CHECK_DIR}/rgb0.json && ${SL_EXE} check --stage rgb --set margin=0.01 --report ${SL_CHECK_DIR}/rgb001.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/rgb0.json --figure rgb/core:false_shadow_pct:gt:20 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/rgb001.json --figure rgb/core:false_shadow_pct:lt:2")
+         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/rgb0.json ${SL_CHECK_DIR}/rgb001.json && ${SL_EXE} check --stage rgb --report ${SL_CHECK_DIR}/rgb0.json && ${SL_EXE} check --stage rgb --set margin=0.01 --report ${SL_CHECK_DIR}/rgb001.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/rgb0.json --exe ${SL_EXE} --figure rgb/core:false_shadow_pct:gt:20 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/rgb001.json --exe ${SL_EXE} --figure rgb/core:false_shadow_pct:lt:2")
 set_tests_properties(check_rgb_margin PROPERTIES LABELS check TIMEOUT 300)
 
 # Settings with no entry of their own are judged by the stage's defaults lesson and the message
@@ -39,7 +39,7 @@ set_tests_properties(check_no_entry_judged_by_defaults PROPERTIES LABELS check T
 # behind the map, so even the all-lit render is dark. That is "dark without a caster": the diff
 # image is red over the truly lit scene (false shadow over 90 %), and exit 1.
 add_test(NAME check_student_inverted
-         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/bad.json ${SL_CHECK_DIR}/bad-diff.png; ${SL_EXE} check --stage margin --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_bad --report ${SL_CHECK_DIR}/bad.json --diff ${SL_CHECK_DIR}/bad-diff.png; test $? -eq 1 && python3 ${SL_CHECK_PY}/diff_colours.py ${SL_CHECK_DIR}/bad-diff.png ${SL_CHECK_DIR}/bad.json margin core 0 1 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/bad.json --exit 1 --verdict margin/core=FAIL --figure margin/core:false_shadow_pct:gt:90 --figure margin/core:dark_without_caster_pct:gt:90")
+         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/bad.json ${SL_CHECK_DIR}/bad-diff.png; ${SL_EXE} check --stage margin --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_bad --report ${SL_CHECK_DIR}/bad.json --diff ${SL_CHECK_DIR}/bad-diff.png; test $? -eq 1 && python3 ${SL_CHECK_PY}/diff_colours.py ${SL_CHECK_DIR}/bad-diff.png ${SL_CHECK_DIR}/bad.json margin core 0 1 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/bad.json --exe ${SL_EXE} --exit 1 --verdict margin/core=FAIL --figure margin/core:false_shadow_pct:gt:90 --figure margin/core:dark_without_caster_pct:gt:90")
 set_tests_properties(check_student_inverted PROPERTIES LABELS check TIMEOUT 300)
 
 # The same stage with our shader: its diff image has next to no blue (under 5 % of the true
@@ -62,7 +62,7 @@ add_test(NAME check_student_broken
                  -- ${SL_EXE} check --stage margin --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken)
 set_tests_properties(check_student_broken PROPERTIES LABELS check TIMEOUT 300)
 add_test(NAME check_all_student_broken
-         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/broken.json; ${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken.json; test $? -eq 2 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/broken.json --count $(${SL_EXE} stages --json | ${SL_ROWS} --tree core --submission) --exit 2 --verdict margin/core=ERROR --verdict hardware/core=MISSING")
+         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/broken.json; ${SL_EXE} check --all --shaders ${CMAKE_CURRENT_SOURCE_DIR}/student_broken --report ${SL_CHECK_DIR}/broken.json; test $? -eq 2 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/broken.json --exe ${SL_EXE} --count $(${SL_EXE} stages --json | ${SL_ROWS} --tree core --submission) --exit 2 --verdict margin/core=ERROR --verdict hardware/core=MISSING")
 set_tests_properties(check_all_student_broken PROPERTIES LABELS check TIMEOUT 300)
 
 # The graders' formats through real parsers: Gradescope's results.json (its documented fields
@@ -135,7 +135,7 @@ set_tests_properties(example_unknown PROPERTIES LABELS example)
 
 # The same verdicts on the EGL backend (the headless path without OSMesa).
 add_test(NAME check_all_egl
-         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/all-egl.json && SHADOWLAB_BACKEND=egl ${SL_EXE} check --all --report ${SL_CHECK_DIR}/all-egl.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all-egl.json --count $(${SL_EXE} stages --json | ${SL_ROWS}) --exit 0")
+         COMMAND sh -c "rm -f ${SL_CHECK_DIR}/all-egl.json && SHADOWLAB_BACKEND=egl ${SL_EXE} check --all --report ${SL_CHECK_DIR}/all-egl.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/all-egl.json --exe ${SL_EXE} --count $(${SL_EXE} stages --json | ${SL_ROWS}) --exit 0")
 set_tests_properties(check_all_egl PROPERTIES LABELS check TIMEOUT 600)
 
 # The mirror exercise's answer, worked by hand: eye (1, 1) reflected through the line p1 (-1, -1.5)
@@ -150,7 +150,7 @@ set_tests_properties(example_mirror_exercise PROPERTIES LABELS example)
 # their own entries: LearnOpenGL and 3x3 PCF correct, opengl-tutorial's acne near the light
 # (false shadow over 5 %), normal offset correct with only the casters in the map.
 add_test(NAME check_peers
-         COMMAND sh -c "for g in core legacy; do rm -f ${SL_CHECK_DIR}/peers-*-$g.json ${SL_CHECK_DIR}/hardware-pcf3x3-$g.json; ${SL_EXE} check --stage peers --glsl $g --report ${SL_CHECK_DIR}/peers-learnopengl-$g.json && ${SL_EXE} check --stage peers --glsl $g --set method=opengl-tutorial --report ${SL_CHECK_DIR}/peers-tutorial-$g.json && ${SL_EXE} check --stage peers --glsl $g --set method=normal-offset --set casters=casters-only --report ${SL_CHECK_DIR}/peers-normal-$g.json && ${SL_EXE} check --stage hardware --glsl $g --set filter=pcf3x3 --report ${SL_CHECK_DIR}/hardware-pcf3x3-$g.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/peers-tutorial-$g.json --exit 0 --verdict peers/$g=PASS --figure peers/$g:false_shadow_pct:gt:5 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/peers-normal-$g.json --exit 0 --figure peers/$g:false_shadow_pct:lt:1 || exit 1; done")
+         COMMAND sh -c "for g in core legacy; do rm -f ${SL_CHECK_DIR}/peers-*-$g.json ${SL_CHECK_DIR}/hardware-pcf3x3-$g.json; ${SL_EXE} check --stage peers --glsl $g --report ${SL_CHECK_DIR}/peers-learnopengl-$g.json && ${SL_EXE} check --stage peers --glsl $g --set method=opengl-tutorial --report ${SL_CHECK_DIR}/peers-tutorial-$g.json && ${SL_EXE} check --stage peers --glsl $g --set method=normal-offset --set casters=casters-only --report ${SL_CHECK_DIR}/peers-normal-$g.json && ${SL_EXE} check --stage hardware --glsl $g --set filter=pcf3x3 --report ${SL_CHECK_DIR}/hardware-pcf3x3-$g.json && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/peers-tutorial-$g.json --exe ${SL_EXE} --exit 0 --verdict peers/$g=PASS --figure peers/$g:false_shadow_pct:gt:5 && python3 ${SL_CHECK_PY}/check_report.py ${SL_CHECK_DIR}/peers-normal-$g.json --exe ${SL_EXE} --exit 0 --figure peers/$g:false_shadow_pct:lt:1 || exit 1; done")
 set_tests_properties(check_peers PROPERTIES LABELS check TIMEOUT 300)
 
 # Mesa's shader cache: a GL program of ours outside a worker (test_phong) fills XDG_CACHE_HOME,

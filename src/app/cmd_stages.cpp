@@ -1,9 +1,11 @@
-// `shadowlab stages [--json]`: every stage with its declared parameters.
+// `shadowlab stages [--json]`: every stage with its declared parameters; `--figures`: the figure
+// table (metrics/figures.h), which scripts and tests read instead of lists of their own.
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
 #include "io/usage_error.h"
+#include "metrics/figures.h"
 #include "stages/expectations.h"
 #include "stages/registry.h"
 
@@ -89,13 +91,51 @@ int listStages(bool json) {
     return kOk;
 }
 
+const char* kindName(FigureKind kind) {
+    switch (kind) {
+        case FigureKind::Shadow:
+            return "shadow";
+        case FigureKind::Look:
+            return "look";
+        case FigureKind::Mirror:
+            // not a stage id: the kind of figure (metrics/figures.h), the mirror's measures
+            return "mirror";
+    }
+    return "";
+}
+
+// Every figure a check measures, in the table's order (the order of reports and messages).
+int listFigures(bool json) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const FigureInfo& f : figureTable()) {
+        const char* better = f.better == Better::Lower ? "lower" : "higher";
+        if (!json) {
+            std::cout << f.name << "  " << f.unit << "  " << better << " is better  (" << f.words
+                      << ")\n";
+            continue;
+        }
+        out.push_back({{"name", f.name},
+                       {"unit", f.unit},
+                       {"better", better},
+                       {"kind", kindName(f.kind)},
+                       {"words", f.words}});
+    }
+    if (json) std::cout << out.dump(2) << "\n";
+    return kOk;
+}
+
 }  // namespace
 
 Command addStagesCommand(CLI::App& app) {
     auto* cmd = app.add_subcommand("stages", "list stages with their parameters and defaults");
     auto json = std::make_shared<bool>(false);
+    auto figures = std::make_shared<bool>(false);
     cmd->add_flag("--json", *json, "machine-readable output");
-    return {cmd, [json] { return guarded([&] { return listStages(*json); }); }};
+    cmd->add_flag("--figures", *figures,
+                  "list the figures a check measures (name, unit, which way is better, words)");
+    return {cmd, [json, figures] {
+                return guarded([&] { return *figures ? listFigures(*json) : listStages(*json); });
+            }};
 }
 
 }  // namespace sl

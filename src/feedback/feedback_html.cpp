@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -50,36 +49,24 @@ std::string imageUri(const CheckResult& row, const std::string& kind) {
     return "data:image/png;base64," + base64(bytes);
 }
 
-// A bound as a judge writes it (">= 32", "<= 5", "in [0, 5]") in words.
-std::string boundInWords(const std::string& bound) {
-    if (bound.rfind(">= ", 0) == 0) return "at least " + bound.substr(3);
-    if (bound.rfind("<= ", 0) == 0) return "at most " + bound.substr(3);
-    std::smatch m;
-    static const std::regex range(R"(in \[(\S+), (\S+)\])");
-    if (std::regex_match(bound, m, range)) return "between " + m[1].str() + " and " + m[2].str();
-    return bound;
+// A number as the judge's message writes it (three significant digits): the page and the
+// message agree on what was measured.
+std::string figureNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
 }
 
-// One failing figure in plain words: what it measures, its value and the bound it missed.
-std::string figureInWords(const std::string& figure, const std::string& value,
-                          const std::string& bound) {
-    const FigureInfo* info = findFigure(figure);
-    std::string what = info ? info->words : figure;
-    std::string unit = info ? std::string(" ") + info->unit : "";
-    return what + " is " + value + unit + ", and should be " + boundInWords(bound) + unit;
-}
-
-// The figures a judge's message names as failing ("mirror_psnr_db 12.5 not >= 32", possibly
-// with widened bounds in a displaced view), each in plain words.
-std::vector<std::string> failedFigures(const std::string& message) {
-    static const std::regex failing(R"(([a-z_0-9]+) (\S+) not (>= \S+|<= \S+|in \[\S+, \S+\]))");
-    std::vector<std::string> out;
-    for (std::sregex_iterator it(message.begin(), message.end(), failing), end; it != end; ++it) {
-        std::string bound = (*it)[3].str();
-        if (!bound.empty() && bound.back() == ',') bound.pop_back();
-        out.push_back(figureInWords((*it)[1].str(), (*it)[2].str(), bound));
-    }
-    return out;
+// One bound a figure missed, in plain words, from the record's reasons (grade/judge.h): what
+// the figure measures and its unit from the figure table, its value and the bound as held.
+std::string reasonInWords(const FigureReason& f) {
+    const FigureInfo* info = findFigure(f.figure);
+    const std::string what = info ? info->words : f.figure;
+    const std::string unit = info ? std::string(" ") + info->unit : "";
+    if (std::isnan(f.value)) return what + " was not measured";
+    return what + " is " + figureNumber(f.value) + unit + ", and should be " +
+           (f.side == FigureReason::Side::AtLeast ? "at least " : "at most ") +
+           figureNumber(f.bound) + unit;
 }
 
 }  // namespace
@@ -108,11 +95,9 @@ std::string plainWords(const RowRecord& rr) {
     const Accuracy& f = row.figures;
     if (!std::isnan(f.falseShadowPct))
         out << numText(f.falseShadowPct, 1)
-            << " % of the surfaces the light reaches are drawn in shadow"
-            << (f.falseShadowPct > 5 ? " (acne, or shadows too large)" : "") << "; ";
+            << " % of the surfaces the light reaches are drawn in shadow; ";
     if (!std::isnan(f.falseLitPct))
-        out << numText(f.falseLitPct, 1) << " % of the true shadows are drawn lit"
-            << (f.falseLitPct > 5 ? " (shadows missing or leaking)" : "") << "; ";
+        out << numText(f.falseLitPct, 1) << " % of the true shadows are drawn lit; ";
     if (!std::isnan(f.edgeP95Px))
         out << "shadow edges are within " << numText(f.edgeP95Px, 1)
             << " px of the truth for 95 % of them. ";
@@ -123,8 +108,12 @@ std::string plainWords(const RowRecord& rr) {
         return out.str();
     }
     out << "That is not what this check expects";
-    std::vector<std::string> failed = failedFigures(row.message);
-    for (std::size_t i = 0; i < failed.size(); ++i) out << (i == 0 ? ": " : "; ") << failed[i];
+    // The failing figures as the record holds them; a row without reasons (a record kept before
+    // they were, or no bound held) has only its message to say why, shown as it is.
+    int failed = 0;
+    for (const FigureReason& reason : row.reasons)
+        if (!reason.passed) out << (failed++ == 0 ? ": " : "; ") << reasonInWords(reason);
+    if (failed == 0 && !row.message.empty()) out << ": " << row.message;
     out << ".";
     return out.str();
 }

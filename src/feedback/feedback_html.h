@@ -10,8 +10,11 @@
 
 namespace sl {
 
-// A row's figures in plain words for a student ("34.2 % of the surfaces that should be lit are
-// drawn in shadow (acne?)"), after the verdict's own message.
+// A row's figures in plain words for a student ("34.2 % of the surfaces the light reaches are
+// drawn in shadow; ..."), and for a row that does not show the lesson each bound it missed, from
+// the row's reasons (grade/judge.h) in the figure table's words and units: "your mirror's PSNR
+// against the exact (stencil) reflection is 18.7 dB, and should be at least 32 dB". The message
+// is never parsed: a row without reasons (a record kept before they existed) shows its message.
 std::string plainWords(const RowRecord& row);
 
 // The student's page: per stage the status, points and message; one picture set per stage (the

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "feedback/html_text.h"
+#include "metrics/figures.h"
 #include "stages/expectations.h"
 
 namespace sl {
@@ -78,10 +79,12 @@ std::string lessonCaption(const RowRecord& row) {
     const Expectation* e = row.result.expectation.entry;
     if (!e || !earnsPoints(row.status())) return "";
     // A lesson whose point is a fault asks for at least some error: a lower bound on a figure
-    // that measures one (every figure but the mirror's, which measure agreement).
+    // that measures one (lower is better, in the figure table; the mirror's measure agreement).
     bool faultIsThePoint = false;
-    for (const Limit& l : e->limits)
-        if (!std::isnan(l.min) && l.figure.rfind("mirror_", 0) != 0) faultIsThePoint = true;
+    for (const Limit& l : e->limits) {
+        const FigureInfo* f = findFigure(l.figure);
+        if (!std::isnan(l.min) && f && f->better == Better::Lower) faultIsThePoint = true;
+    }
     if (!faultIsThePoint) return "";
     std::string caption = "These pictures show the lesson working: this setting should show " +
                           e->outcome +

@@ -14,6 +14,10 @@ namespace sl {
 constexpr std::size_t kMaxRowMessage = 4096;       // a report row's message or note
 constexpr std::size_t kMaxInheritedMessage = 512;  // a row's copy of its stage's failure
 constexpr std::size_t kMaxListedFiles = 32;        // student files named on one row
+// A row's reasons (grade/judge.h): one per side of a lesson's limits, so at most two per figure
+// of the table (13 today); a worker's row with more is cut here, each figure's name to 64 bytes.
+constexpr std::size_t kMaxReasons = 32;
+constexpr std::size_t kMaxReasonFigure = 64;
 
 // The first `kMaxListedFiles` of `files`, each capped, and "... and N more" when there were more.
 std::vector<std::string> cappedList(const std::vector<std::string>& files);

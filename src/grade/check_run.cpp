@@ -373,6 +373,7 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
             : judge(lesson, theirs);
     r.status = j.status;
     r.message = j.message;
+    r.reasons = j.reasons;
     if (!r.expectation.exact && !drawn)
         r.message += " [no entry for these settings: judged by the defaults' lesson]";
     writePictures(rig, evidence, diffPath, pictures, r);
@@ -381,6 +382,17 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
 }
 
 namespace {
+
+nlohmann::json reasonsJson(const std::vector<FigureReason>& reasons) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const FigureReason& f : reasons)
+        out.push_back({{"figure", f.figure},
+                       {"value", number(f.value)},
+                       {"side", sideName(f.side)},
+                       {"bound", number(f.bound)},
+                       {"passed", f.passed}});
+    return out;
+}
 
 nlohmann::json objectsJson(const std::vector<CheckResult::ObjectPixels>& objects) {
     nlohmann::json out = nlohmann::json::array();
@@ -433,6 +445,7 @@ nlohmann::json checkJson(const CheckResult& r) {
         {"student_files", r.studentFiles},
         {"verdict", r.verdict()},
         {"message", r.message},
+        {"reasons", reasonsJson(r.reasons)},
         {"diff", r.diffFile.empty() ? nlohmann::json() : nlohmann::json(r.diffFile)},
         {"note", r.note.empty() ? nlohmann::json() : nlohmann::json(r.note)},
         {"source_notes", r.sourceNotes},
@@ -463,6 +476,20 @@ const Expectation* expectationByLabel(const std::string& label, const std::strin
     }
     throw std::invalid_argument("no entry '" + label + "' for the " + tree + " tree in " +
                                 expectationsPath());
+}
+
+// A record kept before `reasons` existed has none: read as empty (its page shows the message).
+std::vector<FigureReason> reasonsFrom(const nlohmann::json& j) {
+    std::vector<FigureReason> out;
+    if (!j.contains("reasons")) return out;
+    for (const auto& f : j.at("reasons")) {
+        const std::string side = f.at("side").get<std::string>();
+        std::optional<FigureReason::Side> s = sideFromName(side);
+        if (!s) throw std::invalid_argument("a reason's side '" + side + "' is not >= or <=");
+        out.push_back({f.at("figure").get<std::string>(), numberFrom(f.at("value")), *s,
+                       numberFrom(f.at("bound")), f.at("passed").get<bool>()});
+    }
+    return out;
 }
 
 }  // namespace
@@ -513,6 +540,7 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
         if (!status) throw std::invalid_argument("unknown verdict '" + verdict + "'");
         r.status = *status;
         r.message = j.at("message").get<std::string>();
+        r.reasons = reasonsFrom(j);
         if (j.contains("student_files"))
             r.studentFiles = j["student_files"].get<std::vector<std::string>>();
         r.diffFile = textOrEmpty(j.at("diff"));
@@ -532,6 +560,8 @@ void boundResult(CheckResult& r) {
     r.note = capped(r.note, kMaxRowMessage);
     r.studentFiles = cappedList(r.studentFiles);
     r.sourceNotes = cappedList(r.sourceNotes);
+    if (r.reasons.size() > kMaxReasons) r.reasons.resize(kMaxReasons);
+    for (FigureReason& f : r.reasons) f.figure = capped(f.figure, kMaxReasonFigure);
 }
 
 }  // namespace sl

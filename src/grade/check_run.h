@@ -11,6 +11,7 @@
 #include <string>
 
 #include "eval/evaluator.h"
+#include "grade/judge.h"
 #include "grade/status.h"
 #include "sandbox/worker.h"
 #include "stages/expectations.h"
@@ -39,6 +40,11 @@ struct CheckResult {
     // PASS, FAIL and SKIP; MISSING, ERROR, TIMEOUT, CRASH and NOT GRADED rows have none.
     Status status = Status::Skip;
     std::string message;
+    // The bounds the verdict held the figures to, side by side (grade/judge.h): what a page lists
+    // (a failing figure, its value, its bound), never read back out of `message`. Empty where no
+    // bound was held (an unjudged row, a stage with no entry) and in a record kept before the
+    // field existed (its page shows the message instead: feedback/feedback_html.h).
+    std::vector<FigureReason> reasons;
     std::vector<std::string> studentFiles;  // the submission's files this row used (relative)
     std::string diffFile;                   // the diff image written, or ""
     std::string note;                       // e.g. why no diff image was written
@@ -141,8 +147,9 @@ nlohmann::json checkJson(const CheckResult& r);
 // machine are not in the JSON and stay empty. Throws std::invalid_argument on a malformed one.
 CheckResult checkResultFromJson(const nlohmann::json& j);
 
-// The same result with its message and note within kMaxRowMessage and its file list within
-// kMaxListedFiles (src/grade/bounds.h): whatever a worker sends, a row stays small.
+// The same result with its message and note within kMaxRowMessage, its file list within
+// kMaxListedFiles and its reasons within kMaxReasons (src/grade/bounds.h): whatever a worker
+// sends, a row stays small.
 void boundResult(CheckResult& r);
 
 }  // namespace sl

@@ -17,11 +17,33 @@ std::string number(double v) {
 
 }  // namespace
 
+bool FigureReason::operator==(const FigureReason& o) const {
+    auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+    return figure == o.figure && same(value, o.value) && side == o.side && same(bound, o.bound) &&
+           passed == o.passed;
+}
+
+const char* sideName(FigureReason::Side side) {
+    return side == FigureReason::Side::AtLeast ? ">=" : "<=";
+}
+
+std::optional<FigureReason::Side> sideFromName(const std::string& name) {
+    if (name == ">=") return FigureReason::Side::AtLeast;
+    if (name == "<=") return FigureReason::Side::AtMost;
+    return std::nullopt;
+}
+
 Judgement judge(const Expectation& e, const std::map<std::string, double>& figures) {
     std::string failed, unmeasured, held;
+    std::vector<FigureReason> reasons;
     for (const Limit& l : e.limits) {
         auto it = figures.find(l.figure);
         double v = it == figures.end() ? NAN : it->second;
+        // Each side the limit has, as it was held (a value not measured passes neither).
+        if (!std::isnan(l.min))
+            reasons.push_back({l.figure, v, FigureReason::Side::AtLeast, l.min, v >= l.min});
+        if (!std::isnan(l.max))
+            reasons.push_back({l.figure, v, FigureReason::Side::AtMost, l.max, v <= l.max});
         if (std::isnan(v)) {
             unmeasured += (unmeasured.empty() ? "" : ", ") + l.figure;
             continue;
@@ -31,9 +53,10 @@ Judgement judge(const Expectation& e, const std::map<std::string, double>& figur
         list += (list.empty() ? "" : ", ") + l.figure + " " + number(v) + (ok ? " " : " not ") +
                 l.bound();
     }
-    if (!failed.empty()) return {Status::Fail, "expected " + e.outcome + ", but " + failed};
-    if (!unmeasured.empty()) return {Status::Skip, "not measured: " + unmeasured};
-    return {Status::Pass, e.outcome + " as expected: " + held};
+    if (!failed.empty())
+        return {Status::Fail, "expected " + e.outcome + ", but " + failed, reasons};
+    if (!unmeasured.empty()) return {Status::Skip, "not measured: " + unmeasured, reasons};
+    return {Status::Pass, e.outcome + " as expected: " + held, reasons};
 }
 
 Judgement judgeDisplaced(const Expectation& e, const std::map<std::string, double>& theirs,
@@ -91,7 +114,7 @@ Judgement judgeDrawn(const DrawnRow& row, const std::string& drawnValues,
             {t.figure, std::max(0.0, v / t.factor - t.abs), v * t.factor + t.abs});
     }
     if (againstOurs.limits.empty())
-        return {Status::Skip, "our shaders measured none of " + row.label() + "'s figures"};
+        return {Status::Skip, "our shaders measured none of " + row.label() + "'s figures", {}};
     Judgement j = judge(againstOurs, theirs);
     j.message += " [drawn " + drawnValues + ": held to our shaders at the same values]";
     return j;

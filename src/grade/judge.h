@@ -3,8 +3,11 @@
 // in grade/, and nowhere else.
 #pragma once
 
+#include <cmath>
 #include <map>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "grade/status.h"
 #include "stages/displaced_bounds.h"
@@ -13,9 +16,26 @@
 
 namespace sl {
 
+// One side of one bound the judge held a figure to: the verdict's reasons as data, so a page
+// renders them without reading the message (GUIDE section 6: pages never parse messages). A
+// range (both a floor and a ceiling) is two of these, one per side.
+struct FigureReason {
+    enum class Side { AtLeast, AtMost };  // value >= bound, value <= bound
+    std::string figure;                   // the figure table's name (metrics/figures.h)
+    double value = NAN;                   // what was measured; NaN: not measured
+    Side side = Side::AtMost;
+    double bound = NAN;   // as held: a displaced view's widened bound, a drawn row's from ours
+    bool passed = false;  // the value is on the bound's side (never for a value not measured)
+    bool operator==(const FigureReason& o) const;
+};
+// ">=" or "<=", as the report writes a side; and back (nullopt for anything else).
+const char* sideName(FigureReason::Side side);
+std::optional<FigureReason::Side> sideFromName(const std::string& name);
+
 struct Judgement {
-    Status status = Status::Skip;  // PASS, FAIL, or SKIP (a bounded figure not measured)
-    std::string message;           // why, in one line
+    Status status = Status::Skip;       // PASS, FAIL, or SKIP (a bounded figure not measured)
+    std::string message;                // why, in one line
+    std::vector<FigureReason> reasons;  // every bound held, in the lesson's order of its limits
 };
 
 Judgement judge(const Expectation& e, const std::map<std::string, double>& figures);

@@ -2,18 +2,44 @@
 """Checks a `shadowlab check --report` file: every documented field (docs/check.md) is there
 with the right type, the summary agrees with the results, and optional claims hold.
 
-usage: check_report.py REPORT.json [--count N] [--exit N] [--verdict STAGE/TREE=VERDICT]...
-       [--figure STAGE/TREE:NAME:lt:VALUE | STAGE/TREE:NAME:gt:VALUE]...
-(lt/gt rather than < and > so the arguments survive a shell.)"""
+usage: check_report.py REPORT.json --exe SHADOWLAB [--count N] [--exit N]
+       [--verdict STAGE/TREE=VERDICT]... [--figure STAGE/TREE:NAME:lt:VALUE | ...:gt:VALUE]...
+(lt/gt rather than < and > so the arguments survive a shell.) The figures every row must have
+are the program's own table (`SHADOWLAB stages --figures --json`), not a list of this script's;
+each row's `reasons` (the verdict's bounds as data) must agree with its verdict."""
 import json
+import subprocess
 import sys
 
-FIGURES = ["false_shadow_pct", "false_lit_pct", "false_shadow_band_pct", "false_lit_band_pct",
-           "edge_mean_px", "edge_p95_px", "mirror_id_pct", "mirror_psnr_db"]
 RESULT_FIELDS = {"stage": str, "tree": str, "scene": str, "size": list, "parameters": dict,
                  "camera": dict, "light": list, "figures": dict, "pixels": dict,
-                 "expectation": dict, "verdict": str, "message": str, "seconds": float,
-                 "student_files": list}
+                 "expectation": dict, "verdict": str, "message": str, "reasons": list,
+                 "seconds": float, "student_files": list}
+
+
+def figure_table(exe):
+    """The names of the figure table, as the program lists them."""
+    out = subprocess.run([exe, "stages", "--figures", "--json"], check=True,
+                         capture_output=True, text=True).stdout
+    return [f["name"] for f in json.loads(out)]
+
+
+def reason_problems(name, row, figures):
+    """A row's reasons: well formed, naming figures of the table, and agreeing with its verdict
+    (a FAIL misses at least one bound; a PASS holds every one)."""
+    problems = []
+    for f in row.get("reasons", []):
+        ok = (f.get("figure") in figures and f.get("side") in (">=", "<=")
+              and isinstance(f.get("passed"), bool) and isinstance(f.get("bound"), (int, float))
+              and (f.get("value") is None or isinstance(f.get("value"), (int, float))))
+        if not ok:
+            problems.append(f"{name}: a malformed reason {f}")
+    missed = [f for f in row.get("reasons", []) if not f.get("passed")]
+    if row.get("verdict") == "FAIL" and not missed:
+        problems.append(f"{name}: FAIL with no reason that missed its bound")
+    if row.get("verdict") == "PASS" and (missed or not row.get("reasons")):
+        problems.append(f"{name}: PASS with reasons {row.get('reasons')}")
+    return problems
 
 
 # The one order of grade/status.h: later is worse.
@@ -37,6 +63,11 @@ def main():
     args = sys.argv[1:]
     with open(args.pop(0)) as f:
         report = json.load(f)
+    if "--exe" not in args[::2]:
+        sys.exit("usage: check_report.py REPORT.json --exe SHADOWLAB ... (the figure table)")
+    at = args[::2].index("--exe") * 2
+    figures = figure_table(args[at + 1])
+    del args[at:at + 2]
     problems = []
     for key in ("tool", "report_version", "expectations", "machine", "summary", "stages"):
         if key not in report:
@@ -65,9 +96,10 @@ def main():
         for key, kind in RESULT_FIELDS.items():
             if not isinstance(r.get(key), (int, float) if kind is float else kind):
                 problems.append(f"{name}: '{key}' missing or not {kind.__name__}")
-        for fig in FIGURES:
+        for fig in figures:
             if fig not in r.get("figures", {}):
                 problems.append(f"{name}: figures.{fig} missing")
+        problems += reason_problems(name, r, figures)
         exp = r.get("expectation", {})
         for key in ("entry", "matched", "outcome", "why", "limits"):
             if key not in exp:

@@ -31,8 +31,6 @@ SEVERITY = {"SKIP": 0, "PASS": 1, "FAIL": 2, "ERROR": 3, "TIMEOUT": 3, "CRASH": 
 # check's one line for a submission that replaces no shipped file at all (exit 2, no report):
 # for the stage graded, nothing was handed in.
 NOTHING_REPLACED = "no file replaces a shipped shader"
-FIGURES = ("false_shadow_pct", "false_lit_pct", "edge_mean_px", "edge_p95_px", "mirror_id_pct",
-           "mirror_psnr_db")
 CASE_TIMEOUT_S = 600
 
 
@@ -89,9 +87,19 @@ def describe(row):
     exp = row.get("expectation")
     if isinstance(exp, dict) and exp.get("entry") and "entry" not in row:
         parts.append(f"entry={exp['entry']}")
-    figures = row.get("figures") or {}
-    shown = [f"{k}={figures[k]:.4g}" for k in FIGURES
-             if isinstance(figures.get(k), (int, float))]
+    # The figures the verdict held to a bound, from the row's reasons (the report names them: no
+    # list here), each with the bounds it missed; a row without reasons, every figure measured.
+    judged = {}
+    for f in row.get("reasons") or []:
+        value = f.get("value")
+        entry = judged.setdefault(f["figure"], f"{f['figure']}=" + (
+            f"{value:.4g}" if isinstance(value, (int, float)) else "not measured"))
+        if not f.get("passed"):
+            judged[f["figure"]] = entry + f" (not {f['side']} {f['bound']:.4g})"
+    shown = list(judged.values())
+    if not judged:
+        figures = row.get("figures") or {}
+        shown = [f"{k}={v:.4g}" for k, v in figures.items() if isinstance(v, (int, float))]
     parts.extend(shown)
     if row.get("verdict") in ("ERROR", "TIMEOUT", "CRASH") and row.get("message"):
         parts.append(str(row["message"]).splitlines()[0][:160])

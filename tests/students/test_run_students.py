@@ -33,6 +33,12 @@ class RowsTest(unittest.TestCase):
         self.assertEqual(row["verdict"], "FAIL")
         self.assertIn("view=grazing", rs.describe(row))
         self.assertIn("false_shadow_pct=7.5", rs.describe(row))
+        # With reasons (the verdict's bounds as data), the judged figures and each missed bound.
+        row["reasons"] = [{"figure": "false_shadow_pct", "value": 7.5, "side": "<=", "bound": 1,
+                           "passed": False},
+                          {"figure": "edge_p95_px", "value": 1.25, "side": "<=", "bound": 2,
+                           "passed": True}]
+        self.assertIn("false_shadow_pct=7.5 (not <= 1) edge_p95_px=1.25", rs.describe(row))
 
     def test_error_outranks_fail(self):
         report = {"results": [{"stage": "bias", "verdict": "FAIL"},

@@ -39,6 +39,8 @@ CheckResult judgedRgb() {
     r.expectation = findExpectation(expectations(), "rgb", "slides", "core", r.parameters);
     r.status = Status::Pass;
     r.message = "as expected: no acne";
+    r.reasons = {{"false_shadow_pct", 0.125, FigureReason::Side::AtMost, 1, true},
+                 {"mirror_psnr_db", NAN, FigureReason::Side::AtLeast, 32, false}};
     r.diffFile = "/tmp/diff/rgb-core.png";
     r.note = "a note";
     r.sourceNotes = {
@@ -66,6 +68,14 @@ TEST(CheckJson, AJudgedResultRoundTrips) {
     EXPECT_EQ(back.note, "a note");
     EXPECT_EQ(back.sourceNotes, r.sourceNotes);
     EXPECT_EQ(j["source_notes"].size(), 1u);
+    EXPECT_EQ(back.reasons, r.reasons);
+    const nlohmann::json first = {{"figure", "false_shadow_pct"},
+                                  {"value", 0.125},
+                                  {"side", "<="},
+                                  {"bound", 1.0},
+                                  {"passed", true}};
+    EXPECT_EQ(j["reasons"][0], first);
+    EXPECT_TRUE(j["reasons"][1]["value"].is_null());
     // Through text as well, as it crosses the pipe.
     EXPECT_EQ(checkJson(checkResultFromJson(nlohmann::json::parse(j.dump()))), j);
 }
@@ -101,6 +111,23 @@ TEST(CheckJson, AMalformedResultIsRefused) {
     nlohmann::json badEntry = j;
     badEntry["expectation"]["entry"] = "rgb margin=0.07";
     EXPECT_THROW(checkResultFromJson(badEntry), std::invalid_argument);
+    nlohmann::json badSide = j;
+    badSide["reasons"][0]["side"] = "in";
+    EXPECT_THROW(checkResultFromJson(badSide), std::invalid_argument);
+    nlohmann::json noValue = j;
+    noValue["reasons"][0].erase("value");
+    EXPECT_THROW(checkResultFromJson(noValue), std::invalid_argument);
+}
+
+// A row kept before `reasons` existed (last term's records, a resume or --regrade reading them)
+// loads with none; written again, it says so with an empty list.
+TEST(CheckJson, ARowKeptBeforeReasonsLoadsWithNone) {
+    nlohmann::json j = checkJson(judgedRgb());
+    j.erase("reasons");
+    CheckResult back = checkResultFromJson(j);
+    EXPECT_TRUE(back.reasons.empty());
+    EXPECT_EQ(back.message, judgedRgb().message);
+    EXPECT_EQ(checkJson(back)["reasons"], nlohmann::json::array());
 }
 
 // The parent bounds what a worker sends back: a row past the bounds is cut, not kept whole.
@@ -109,6 +136,7 @@ TEST(CheckJson, AWorkersRowOverTheBoundIsCut) {
     r.message = std::string(100000, 'm');
     r.note = std::string(100000, 'n');
     for (int k = 0; k < 100; ++k) r.studentFiles.push_back("shader" + std::to_string(k) + ".frag");
+    r.reasons.assign(1000, {std::string(1000, 'f'), 1, FigureReason::Side::AtMost, 2, true});
     WorkerOutcome outcome;
     outcome.value = {{"results", {checkJson(r)}}, {"backend", "EGL"}, {"machine", "box"}};
     std::vector<CheckResult> rows = workerResults(outcome);
@@ -118,6 +146,8 @@ TEST(CheckJson, AWorkersRowOverTheBoundIsCut) {
     EXPECT_NE(rows[0].message.find("bytes cut]"), std::string::npos);
     EXPECT_EQ(rows[0].note, capped(r.note, kMaxRowMessage));
     EXPECT_EQ(rows[0].studentFiles.size(), kMaxListedFiles + 1);  // "... and 68 more"
+    ASSERT_EQ(rows[0].reasons.size(), kMaxReasons);
+    EXPECT_EQ(rows[0].reasons[0].figure, capped(std::string(1000, 'f'), kMaxReasonFigure));
     EXPECT_EQ(rows[0].backend, "EGL");
     EXPECT_EQ(rows[0].machine, "box");
 }
@@ -228,6 +258,17 @@ TEST(Record, RoundTripsThroughItsJson) {
     EXPECT_EQ(j["summary"]["failed"], 2);
     EXPECT_EQ(j["summary"]["errors"], 2);
     EXPECT_THROW(recordFromJson(nlohmann::json{{"report_version", 1}}), std::invalid_argument);
+}
+
+// Last term's kept record, whose rows have no `reasons`, still loads (a resume or a regrade).
+TEST(Record, ARecordKeptBeforeReasonsLoads) {
+    nlohmann::json j = recordJson(twoStages());
+    for (auto& st : j["stages"])
+        for (auto& row : st["rows"]) row.erase("reasons");
+    StudentRecord back = recordFromJson(nlohmann::json::parse(j.dump()));
+    ASSERT_EQ(back.stages.size(), twoStages().stages.size());
+    for (const StageRecord& st : back.stages)
+        for (const RowRecord& row : st.rows) EXPECT_TRUE(row.result.reasons.empty());
 }
 
 // A hand-in name that is not UTF-8 comes back byte for byte (the record is found again under it:

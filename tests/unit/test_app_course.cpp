@@ -416,6 +416,63 @@ TEST(StudentPage, HiddenRowsAreCountedNowhere) {
     EXPECT_NE(page.find("graded but hidden"), std::string::npos) << page;
 }
 
+// A failing row's page names each failing figure, its value and its bound as the record's
+// reasons hold them (grade/judge.h), in the figure table's words and units; the message is never
+// read: a reworded judge message changes nothing the page lists, the record's numbers do.
+StudentRecord failingMirror(const std::string& message, double psnr) {
+    StudentRecord r = oneStage("ann", "mirror", Status::Fail, 0, 10);
+    r.maxScore = 10;
+    RowRecord row;
+    row.maxPoints = 10;
+    row.result.stage = "mirror";
+    row.result.tree = "core";
+    row.result.view = "front";
+    row.result.status = Status::Fail;
+    row.result.message = message;
+    using Side = FigureReason::Side;
+    row.result.reasons = {{"mirror_psnr_db", psnr, Side::AtLeast, 32, false},
+                          {"mirror_id_pct", 99.5, Side::AtLeast, 95, true},
+                          {"edge_p95_px", 7.6, Side::AtMost, 7.5, false}};
+    r.stages[0].rows = {row};
+    return r;
+}
+
+TEST(StudentPage, AFailingRowNamesItsFiguresFromTheRecordNotTheMessage) {
+    const std::string judged =
+        "expected reflection right, but mirror_psnr_db 18.7 not >= 32, edge_p95_px 7.6 not <= "
+        "7.5";
+    const std::string page = studentPage(failingMirror(judged, 18.7));
+    const std::string psnr =
+        "your mirror&#39;s PSNR against the exact (stencil) reflection is 18.7 dB, and should be "
+        "at least 32 dB";
+    const std::string edge =
+        "the distance within which 95 % of your shadow edges lie is 7.6 px, "
+        "and should be at most 7.5 px";
+    EXPECT_NE(page.find(psnr), std::string::npos) << page;
+    EXPECT_NE(page.find(edge), std::string::npos) << page;
+    EXPECT_EQ(page.find("the mirror showing the right object is"), std::string::npos) << page;
+    // A reworded message (or one naming other numbers) lists the same figures.
+    for (const char* reworded : {"PSNR too low; edges too far", "mirror_psnr_db 5 not >= 99",
+                                 "expected reflection right, but mirror_id_pct 1 not >= 95"})
+        EXPECT_EQ(studentPage(failingMirror(reworded, 18.7)), page) << reworded;
+    // The record's value is what the page shows, whatever the message says.
+    EXPECT_NE(studentPage(failingMirror(judged, 20.25)).find("is 20.2 dB, and should be at least"),
+              std::string::npos);
+}
+
+// A row kept before reasons existed (last term's record, regraded or resumed) shows its message.
+TEST(StudentPage, ARowWithoutReasonsShowsItsMessage) {
+    StudentRecord r =
+        failingMirror("expected reflection right, but mirror_psnr_db 18.7 not >= 32", 18.7);
+    r.stages[0].rows[0].result.reasons.clear();
+    const std::string page = studentPage(r);
+    EXPECT_NE(page.find("That is not what this check expects: expected reflection right, but "
+                        "mirror_psnr_db 18.7 not &gt;= 32."),
+              std::string::npos)
+        << page;
+    EXPECT_EQ(page.find("should be at least"), std::string::npos) << page;
+}
+
 // The release's README tells a student how to install shadowlab and, when the assignment has
 // one, its late policy (issue 39: a class charged late without having been told how).
 TEST(ReleaseReadme, SaysHowToInstallAndTheLatePolicy) {

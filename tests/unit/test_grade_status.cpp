@@ -102,5 +102,50 @@ TEST(Judge, AFloorTheSolutionClearsIsNotLowered) {
               Status::Pass);
 }
 
+// The verdict's reasons are data: one per side of each limit, with the value and the bound as
+// held (a displaced view's widened one, a drawn row's from ours), so no page reads the message.
+TEST(Judge, ReasonsAreEachSideAsHeld) {
+    using Side = FigureReason::Side;
+    Expectation e;
+    e.outcome = "some acne";
+    e.limits = {{"false_shadow_speckle_pct", 2, 40}, {"false_lit_pct", NAN, 5}};
+    auto fail = judge(e, {{"false_shadow_speckle_pct", 50}, {"false_lit_pct", 1}});
+    ASSERT_EQ(fail.status, Status::Fail);
+    const std::vector<FigureReason> expected = {
+        {"false_shadow_speckle_pct", 50, Side::AtLeast, 2, true},
+        {"false_shadow_speckle_pct", 50, Side::AtMost, 40, false},
+        {"false_lit_pct", 1, Side::AtMost, 5, true}};
+    EXPECT_EQ(fail.reasons, expected);
+    // Not measured: no value, passes neither side (the row is a SKIP).
+    auto skip = judge(e, {{"false_shadow_speckle_pct", 10}});
+    ASSERT_EQ(skip.status, Status::Skip);
+    ASSERT_EQ(skip.reasons.size(), 3u);
+    EXPECT_TRUE(std::isnan(skip.reasons[2].value));
+    EXPECT_FALSE(skip.reasons[2].passed);
+    EXPECT_TRUE(skip.reasons[0].passed && skip.reasons[1].passed);
+    // A displaced view: the reason carries the widened bound (6 + a quarter = 7.5), not 2.
+    Expectation edge;
+    edge.limits = {{"edge_p95_px", NAN, 2}};
+    DisplacedFigures ours = {{"edge_p95_px", {3, 6}}};
+    auto displaced = judgeDisplaced(edge, {{"edge_p95_px", 7.6}}, &ours);
+    const std::vector<FigureReason> widened = {{"edge_p95_px", 7.6, Side::AtMost, 7.5, false}};
+    EXPECT_EQ(displaced.reasons, widened);
+    // A drawn row: held to ours (4) within a factor 2.5 and 0.3, both sides.
+    DrawnRow row;
+    row.stage = "margin";
+    row.tolerances = {{"false_shadow_pct", /*abs*/ 0.3, /*factor*/ 2.5}};
+    auto drawn =
+        judgeDrawn(row, "margin=0.0023", {{"false_shadow_pct", 0.05}}, {{"false_shadow_pct", 4.0}});
+    ASSERT_EQ(drawn.reasons.size(), 2u);
+    EXPECT_EQ(drawn.reasons[0].side, Side::AtLeast);
+    EXPECT_DOUBLE_EQ(drawn.reasons[0].bound, 4.0 / 2.5 - 0.3);
+    EXPECT_FALSE(drawn.reasons[0].passed);
+    EXPECT_DOUBLE_EQ(drawn.reasons[1].bound, 4.0 * 2.5 + 0.3);
+    EXPECT_TRUE(drawn.reasons[1].passed);
+    EXPECT_EQ(sideFromName(sideName(Side::AtLeast)), Side::AtLeast);
+    EXPECT_EQ(sideFromName(sideName(Side::AtMost)), Side::AtMost);
+    EXPECT_FALSE(sideFromName("in").has_value());
+}
+
 }  // namespace
 }  // namespace sl
