@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <set>
 #include <sstream>
 
 #include "stages/stage.h"
@@ -176,13 +177,37 @@ std::vector<const DrawnRow*> drawnRowsOf(const std::string& stage, const std::st
     return out;
 }
 
+namespace {
+
+// The values someone chose for a number parameter of `stage`: its default and each lesson's (a
+// shader can recognise those, as one testing textureSize == 2048 recognises the packed lesson).
+std::set<double> chosenValues(const std::string& stage, const ParamSpec& spec) {
+    std::set<double> chosen;
+    ParamSet defaults(findStage(stage)->params);
+    chosen.insert(defaults.number(spec.name));
+    for (const Expectation& e : expectations())
+        for (const auto& [name, value] : e.set)
+            if (e.stage == stage && name == spec.name) chosen.insert(std::stod(value));
+    return chosen;
+}
+
+}  // namespace
+
 std::vector<std::pair<std::string, std::string>> drawnSettings(const DrawnRow& row,
                                                                std::uint64_t seed) {
     std::mt19937_64 rng(seed ^ labelHash(row.label()));
     ParamSet values(findStage(row.stage)->params);
     auto settings = row.set;
-    for (const DrawnParam& d : row.draw)
-        settings.emplace_back(d.name, drawOne(d, *values.find(d.name), rng));
+    for (const DrawnParam& d : row.draw) {
+        const ParamSpec& spec = *values.find(d.name);
+        std::string drawn = drawOne(d, spec, rng);
+        if (d.choices.empty()) {  // a number no lesson names: drawn again (a few tries)
+            const std::set<double> chosen = chosenValues(row.stage, spec);
+            for (int tries = 0; tries < 16 && chosen.count(std::stod(drawn)); ++tries)
+                drawn = drawOne(d, spec, rng);
+        }
+        settings.emplace_back(d.name, drawn);
+    }
     return settings;
 }
 

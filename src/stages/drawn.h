@@ -49,8 +49,9 @@ std::vector<const DrawnRow*> drawnRowsOf(const std::string& stage, const std::st
 
 // The settings of `row` for `seed`: its fixed ones, then each drawn one (numbers to two
 // significant digits, three where the range would hold fewer than 20 values; integers to a
-// multiple of 64 where the range allows). The same on every
-// platform (mt19937_64's output is fixed; the mapping is ours).
+// multiple of 64 where the range allows), never a number the stage's default or a lesson names
+// (drawn again: a shader that recognises the lesson's map size or margin must not meet it). The
+// same on every platform (mt19937_64's output is fixed; the mapping is ours).
 std::vector<std::pair<std::string, std::string>> drawnSettings(const DrawnRow& row,
                                                                std::uint64_t seed);
 

@@ -55,6 +55,30 @@ TEST(Drawn, SeedsDrawDifferentValues) {
     }
 }
 
+// A drawn number is never one a lesson or the default names: a shader that recognises the
+// packed lesson by textureSize == 2048 passed whenever the seed drew 2048 (1 in 29 runs).
+TEST(Drawn, NeverAValueALessonNames) {
+    useSourceTree();
+    for (const DrawnRow& row : drawnRows()) {
+        ParamSet defaults(findStage(row.stage)->params);
+        for (const DrawnParam& d : row.draw) {
+            if (!d.choices.empty()) continue;
+            std::set<double> named = {defaults.number(d.name)};
+            for (const Expectation& e : expectations())
+                for (const auto& [name, value] : e.set)
+                    if (e.stage == row.stage && name == d.name) named.insert(std::stod(value));
+            int inRange = 0;
+            for (double v : named) inRange += v >= d.min && v <= d.max;
+            for (std::uint64_t seed = 0; seed < 400; ++seed)
+                for (const auto& [name, value] : drawnSettings(row, seed))
+                    if (name == d.name)
+                        EXPECT_EQ(named.count(std::stod(value)), 0u)
+                            << row.label() << " seed " << seed << " drew " << name << "=" << value
+                            << ", a lesson's value (" << inRange << " such in range)";
+        }
+    }
+}
+
 TEST(Drawn, SettingsOutsideTheRangesFindNoRow) {
     useSourceTree();
     const DrawnRow* row = drawnRowsOf("margin", "core").front();
