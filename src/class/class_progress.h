@@ -67,9 +67,9 @@ std::vector<RowsDone> readProgress(const std::vector<std::string>& paths);
 // program compiled for the first time, the worker's caches empty; 0.059 and 0.087 s a row against
 // 0.043 and 0.064 in the second, docs/results-class.md) and the pace since the first reading said
 // the rest would cost that too. The later rounds alone hold fewer rows and differ in what they
-// hold (a round of starters writes a picture for every failing row): replayed on 7 recorded
-// runs, the mean had fewer readings over 25 % than the pace since the first reading on 5 (as
-// many on one, 41 against 39 on one) and than the later rounds' pace alone on 5 (issue 39;
+// hold (a round of starters writes a picture for every failing row): replayed on 6 recorded
+// runs, the mean had fewer readings over 25 % than the pace since the first reading on 5 (41
+// against 39 on one) and than the later rounds' pace alone on 5 (issue 39;
 // docs/results-class.md).
 class Pace {
   public:
