@@ -182,7 +182,7 @@ StudentRecord noHandInRecord(const Assignment& a, const RosterEntry& e) {
 }
 
 // The roster's students with no hand-in get a record and a page ("no hand-in", every stage
-// MISSING) so the gradebook is complete; hand-ins the roster does not list are named.
+// MISSING) so the gradebook is complete.
 void addRosterStudents(const Roster& roster, const Assignment& a,
                        const std::vector<std::string>& names, const std::string& out,
                        std::vector<StudentRecord>& records, std::vector<std::string>& pages) {
@@ -191,6 +191,10 @@ void addRosterStudents(const Roster& roster, const Assignment& a,
         pages.push_back("feedback/" + recordKey(e->handIn) + ".html");
         writeOrThrow(out + "/" + pages.back(), studentPage(records.back()));
     }
+}
+
+// Hand-ins the roster does not list, named in one line before any grading (known from the names).
+void sayStrangers(const Roster& roster, const std::vector<std::string>& names) {
     std::vector<std::string> strangers = handInsNotOnRoster(roster, names);
     if (strangers.empty()) return;
     std::cout << strangers.size() << " hand-in" << (strangers.size() == 1 ? "" : "s")
@@ -222,7 +226,9 @@ class ClassGrading {
     int gradeInJobs(OutLock& lock);
     int gradeShare(int job, int jobs, OutLock& lock);
     void reportFinished(double seconds, const std::optional<double>& rowsLeft);
+    void writeStudentOutputs(std::size_t k, const StudentRecord& r, bool annotated);
     std::size_t writeOutputs();
+    void sayGraded(std::size_t notGraded);
     std::string recordPath(std::size_t k) const {
         return args_.out + "/students/" + in_.files[k] + ".json";
     }
@@ -242,6 +248,8 @@ class ClassGrading {
     std::vector<std::size_t> todo_;  // the students graded in this run
     std::vector<StudentWork> subs_;  // their snapshots (by student index)
     std::set<std::size_t> reported_;
+    std::set<std::size_t> pageWritten_;  // pages written as their records came back
+    std::string lastLine_;  // the last student's line, said once the class's outputs are written
     Pace pace_;
     std::chrono::steady_clock::time_point start_;
 };
@@ -258,8 +266,9 @@ int ClassGrading::run() {
     // our shipped programs are compiled once per class instead of once per student, lesson and
     // view, and a student's own once per student. Keyed by the shader's text and the driver, so
     // no hand-in is served another's program; private, gone with the run.
-    PrivateDir shaderCache("shadowlab-shader-cache");
-    useShaderCacheFolder(shaderCache.path());
+    std::optional<PrivateDir> shaderCache;
+    shaderCache.emplace("shadowlab-shader-cache");
+    useShaderCacheFolder(shaderCache->path());
     trees_ = solutionTrees(args_.solutions);
     const std::string checkKey = solutionCheckKey(in_.assignmentHash, trees_, *settings_.seed);
     const bool checked = solutionPassedBefore(checkKey);
@@ -278,10 +287,24 @@ int ClassGrading::run() {
     annotations_ = readAnnotations(args_, in_.a, in_.names);
     warnOnDownloadTimes(annotations_, in_.a, in_.names, in_.entries);
     chooseStudents();
+    if (annotations_.roster) sayStrangers(*annotations_.roster, in_.names);
     takeIn();
     start_ = std::chrono::steady_clock::now();
+    // The copy flags from the snapshots (takeIn's, and earlier runs' for kept records), before
+    // any grading: each student's record and page are then final as the student comes back, and
+    // after the last one only the class's page, gradebooks and exports are left (issue 39).
+    addCopyFlags(annotations_, in_.a, in_.names, in_.files, args_.out, trees_);
     int exitCode = gradeInJobs(lock);
-    if (writeOutputs() > 0) exitCode = 3;
+    std::size_t notGraded = 0;
+    try {
+        notGraded = writeOutputs();
+    } catch (...) {  // a full disk: the last student's line is still said, before the error's
+        std::cout << lastLine_ << std::flush;
+        throw;
+    }
+    if (notGraded > 0) exitCode = 3;
+    shaderCache.reset();  // removing it is part of the run
+    sayGraded(notGraded);
     return exitCode;
 }
 
@@ -466,7 +489,9 @@ int ClassGrading::gradeShare(int job, int jobs, OutLock& lock) {
 }
 
 // A line for each student whose record came back since the last call, with the total the pages
-// show and the time left at the pace of the rows the jobs rendered (class/class_progress.h).
+// show and the time left at the pace of the rows the jobs rendered (class/class_progress.h); the
+// student's record (annotated) and page are written first. The last student's line is held until
+// the class's outputs are written: its "0 s" is then true.
 void ClassGrading::reportFinished(double seconds, const std::optional<double>& rowsLeft) {
     const std::size_t n = in_.entries.size();
     for (std::size_t k : todo_) {
@@ -474,7 +499,8 @@ void ClassGrading::reportFinished(double seconds, const std::optional<double>& r
         std::optional<StudentRecord> r;
         if (!isFresh(k, r)) continue;
         reported_.insert(k);
-        annotateRecord(annotations_, in_.a, in_.names[k], in_.entries[k], *r);
+        writeStudentOutputs(k, *r,
+                            annotateRecord(annotations_, in_.a, in_.names[k], in_.entries[k], *r));
         double left =
             rowsLeft ? *rowsLeft
                      : seconds / double(reported_.size()) * double(todo_.size() - reported_.size());
@@ -485,15 +511,30 @@ void ClassGrading::reportFinished(double seconds, const std::optional<double>& r
                       printableName(escapedName(in_.names[k])).c_str(),
                       r->graded() ? r->total() : r->score, r->maxScore, statusName(r->status()),
                       reported_.size() == todo_.size() ? "0 s" : duration(left).c_str());
-        std::cout << line << std::flush;
+        if (reported_.size() == todo_.size())
+            lastLine_ = line;
+        else
+            std::cout << line << std::flush;
     }
 }
 
-// The class's outputs from every record (those of earlier runs too): a page per student,
-// grades.csv, the LMS gradebooks and the class page. Returns how many are not graded.
+// A student's own outputs as the record comes back: the record again when annotating changed it,
+// and the page. A write that fails is left to writeOutputs, which writes it again (and says why).
+void ClassGrading::writeStudentOutputs(std::size_t k, const StudentRecord& r, bool annotated) {
+    if (annotated) {
+        const std::string text = sealedRecordText(r);
+        if (!writeFileAtomically(recordPath(k), text.data(), text.size()).empty()) return;
+    }
+    const std::string page = studentPage(r);
+    const std::string path = args_.out + "/feedback/" + in_.files[k] + ".html";
+    if (writeFileAtomically(path, page.data(), page.size()).empty()) pageWritten_.insert(k);
+}
+
+// The class's outputs from every record (those of earlier runs too): a page per student (but
+// those written as their records came back, unchanged since), grades.csv, the LMS gradebooks and
+// the class page. Returns how many are not graded.
 std::size_t ClassGrading::writeOutputs() {
     const std::size_t n = in_.entries.size();
-    addCopyFlags(annotations_, in_.a, in_.names, in_.files, args_.out, trees_);
     std::vector<StudentRecord> records;
     std::vector<std::string> pages;
     std::size_t notGraded = 0;
@@ -507,11 +548,13 @@ std::size_t ClassGrading::writeOutputs() {
             continue;
         }
         if (!r->graded()) ++notGraded;
-        if (annotateRecord(annotations_, in_.a, in_.names[k], in_.entries[k], *r))
-            writeOrThrow(recordPath(k), sealedRecordText(*r));
+        const bool annotated =
+            annotateRecord(annotations_, in_.a, in_.names[k], in_.entries[k], *r);
+        if (annotated) writeOrThrow(recordPath(k), sealedRecordText(*r));
         records.push_back(*r);
         pages.push_back("feedback/" + in_.files[k] + ".html");
-        writeOrThrow(args_.out + "/" + pages.back(), studentPage(*r));
+        if (annotated || !pageWritten_.count(k))
+            writeOrThrow(args_.out + "/" + pages.back(), studentPage(*r));
     }
     if (annotations_.roster)
         addRosterStudents(*annotations_.roster, in_.a, in_.names, args_.out, records, pages);
@@ -521,6 +564,13 @@ std::size_t ClassGrading::writeOutputs() {
     writeOrThrow(args_.out + "/class.html",
                  classPage(in_.a.name, records, pages, in_.listing.skipped,
                            {annotations_.pairs, annotations_.solutionCopies}));
+    return notGraded;
+}
+
+// The last student's line, held until now, then the run's summary.
+void ClassGrading::sayGraded(std::size_t notGraded) {
+    const std::size_t n = in_.entries.size();
+    std::cout << lastLine_;
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     std::size_t copyFull = 0;  // hand-ins whose private copy found the disk full (NOT GRADED)
@@ -534,7 +584,6 @@ std::size_t ClassGrading::writeOutputs() {
     if (notGraded > 0) std::cout << "; " << notGraded << " not graded: rerun";
     std::cout << " in " << duration(seconds) << ": " << args_.out << "/grades.csv, " << args_.out
               << "/class.html, " << args_.out << "/feedback/, " << args_.out << "/students/\n";
-    return notGraded;
 }
 
 }  // namespace

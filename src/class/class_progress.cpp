@@ -28,6 +28,7 @@ JobProgress::JobProgress(const std::string& path, const std::vector<GradingPlan>
             total_ += st.rows.size();
             if (roundViewsPlanned.insert(roundViews(roundOf(k, plans.size()), st)).second)
                 total_ += st.rows.size();
+            if (roundOf(k, plans.size()) == 0) firstRound_ = total_;
         }
     fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
     write();
@@ -57,8 +58,8 @@ void JobProgress::stageDone(std::size_t k, const StageRecord& stage) {
 
 void JobProgress::write() {
     if (fd_ < 0) return;  // no progress file: the lines fall back to nothing worse than no time
-    char line[64];
-    int n = std::snprintf(line, sizeof line, "%20zu %20zu\n", done_, total_);
+    char line[96];
+    int n = std::snprintf(line, sizeof line, "%20zu %20zu %20zu\n", done_, total_, firstRound_);
     if (n > 0 && ::pwrite(fd_, line, std::size_t(n), 0) < 0) {
         ::close(fd_);
         fd_ = -1;
@@ -70,17 +71,22 @@ std::vector<RowsDone> readProgress(const std::vector<std::string>& paths) {
     for (std::size_t j = 0; j < paths.size(); ++j) {
         std::string text;
         if (!readRegularFile(paths[j], 256, text).empty()) continue;
-        std::size_t done = 0, total = 0;
-        if (std::sscanf(text.c_str(), "%zu %zu", &done, &total) != 2 || done > total) continue;
-        jobs[j] = {done, total};
+        std::size_t done = 0, total = 0, firstRound = 0;
+        const int fields = std::sscanf(text.c_str(), "%zu %zu %zu", &done, &total, &firstRound);
+        if (fields < 2 || done > total) continue;
+        jobs[j] = {done, total, fields == 3 && firstRound <= total ? firstRound : 0};
     }
     return jobs;
 }
 
 double Pace::Seen::secondsPerRow() const {
-    return lastDone > firstDone && lastAt > firstAt
-               ? (lastAt - firstAt) / double(lastDone - firstDone)
-               : firstAt / double(firstDone);
+    const double sinceFirst = lastDone > firstDone && lastAt > firstAt
+                                  ? (lastAt - firstAt) / double(lastDone - firstDone)
+                                  : firstAt / double(firstDone);
+    if (!roundDone || lastDone <= roundDone->second || lastAt <= roundDone->first)
+        return sinceFirst;
+    const double sinceRound = (lastAt - roundDone->first) / double(lastDone - roundDone->second);
+    return (sinceFirst + sinceRound) / 2;
 }
 
 std::optional<double> Pace::timeLeft(double seconds, const std::vector<RowsDone>& jobs) {
@@ -91,12 +97,14 @@ std::optional<double> Pace::timeLeft(double seconds, const std::vector<RowsDone>
         const RowsDone& r = jobs[j];
         if (r.done == 0) continue;
         std::optional<Seen>& s = seen_[j];
-        if (!s) s = Seen{seconds, seconds, r.done, r.done, r.done};
+        if (!s) s = Seen{seconds, seconds, r.done, r.done, r.done, std::nullopt};
         if (r.done > s->lastDone) {
             s->lastAt = seconds;
             s->lastStep = r.done - s->lastDone;
             s->lastDone = r.done;
         }
+        if (!s->roundDone && r.firstRound > 0 && r.done >= r.firstRound)
+            s->roundDone = std::make_pair(seconds, r.done);
         rates += s->secondsPerRow();
         ++known;
     }

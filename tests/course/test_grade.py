@@ -2,10 +2,12 @@
 """ctest course_grade: a class of mixed folders and zips (wrapper folder, zip in a zip, missing
 stages, a broken shader, correct work, the starter, a README only, a zip with a link) graded
 with `grade --jobs 2`; every student's points and status are those make_class.py derived from
-the assignment; a run killed after its first student resumes and skips it; grades.csv matches
-the records; every page loads in headless Chromium with its images decoded and nothing
+the assignment; a run killed after its first student resumes and skips it; each student's page
+is written by the time the student's line is said, the class's page and gradebook by the last
+student's (issue 39: nothing but the class's outputs after it); grades.csv matches the records;
+every page loads in headless Chromium with its images decoded and nothing
 overflowing.  usage: test_grade.py SHADOWLAB REPO WORKDIR"""
-import csv, json, os, shutil, signal, subprocess, sys, time
+import csv, json, os, queue, re, shutil, signal, subprocess, sys, threading, time
 
 sys.path.insert(0, os.path.dirname(__file__))
 import pages
@@ -21,27 +23,62 @@ expected = json.loads(subprocess.run(
      work + "/release/shaders", work + "/class"], check=True, capture_output=True, text=True).stdout)
 out = work + "/out"
 
-# A run killed once its first student with work to render is written...
+
+def student_lines(p, seconds, seen):
+    """grade's `[student i of n] NAME` lines as they come: (i, n, NAME); every line printed and
+    kept in `seen`."""
+    lines = queue.Queue()
+    threading.Thread(target=lambda: [lines.put(l) for l in p.stdout] + [lines.put("")],
+                     daemon=True).start()
+    deadline = time.time() + seconds
+    while time.time() < deadline:
+        try:
+            line = lines.get(timeout=max(0.0, deadline - time.time()))
+        except queue.Empty:
+            break
+        if not line:
+            return
+        print(line, end="")
+        seen.append(line)
+        m = re.match(r"\[student (\d+) of (\d+)\] (\S+)", line)
+        if m:
+            yield int(m.group(1)), int(m.group(2)), m.group(3)
+    raise AssertionError("grade said nothing for %d s" % seconds)
+
+
+def page_of(student):
+    return out + "/feedback/%s.html" % student
+
+
+# A run killed once its first student with work to render is said: that student's page is there.
 p = subprocess.Popen([exe, "grade", work + "/class", "--assignment", lab, "--out", out, "--jobs", "1", "--time-limit", "300"],
                      stdout=subprocess.PIPE, text=True)
-deadline = time.time() + 300
-while time.time() < deadline:
-    done = [f for f in os.listdir(out + "/students")] if os.path.isdir(out + "/students") else []
-    if any(f.startswith(("alice", "bob", "carol", "dave")) for f in done):
+for i, n, student in student_lines(p, 300, []):
+    assert os.path.isfile(page_of(student)), "%s said before its page was written" % student
+    if student.startswith(("alice", "bob", "carol", "dave")):
         break
-    time.sleep(0.2)
 p.send_signal(signal.SIGKILL)
 p.wait()
 first = sorted(os.listdir(out + "/students"))
 print("killed after", first)
 assert first and len(first) < 6, first
-# ...resumes: the students written are skipped.
-r = subprocess.run([exe, "grade", work + "/class", "--assignment", lab, "--out", out, "--jobs", "2", "--time-limit", "300"],
-                   capture_output=True, text=True, timeout=900)
-print(r.stdout, r.stderr)
-assert r.returncode == 0, r.returncode
-assert "%d already graded, %d to grade" % (len(first), 6 - len(first)) in r.stdout, "no resume"
-assert r.stdout.count("[student ") == 6 - len(first), "graded again what was done"
+assert not os.path.exists(out + "/class.html")
+# ...resumes: the students written are skipped. Each page is written by its student's line, the
+# class's page and gradebook by the last line and not before.
+p = subprocess.Popen([exe, "grade", work + "/class", "--assignment", lab, "--out", out, "--jobs", "2", "--time-limit", "300"],
+                     stdout=subprocess.PIPE, text=True)
+said, seen = [], []
+for i, n, student in student_lines(p, 900, seen):
+    said.append(student)
+    assert os.path.isfile(page_of(student)), "%s said before its page was written" % student
+    last = len(said) == 6 - len(first)
+    for f in ("class.html", "grades.csv", "gradebook-canvas.csv", "gradebook-moodle.csv"):
+        assert os.path.isfile(out + "/" + f) == last, "%s %s at %s's line" % (
+            f, "missing" if last else "written", student)
+assert p.wait(timeout=60) == 0, p.returncode
+assert any(l.startswith("graded 6 of 6 in ") for l in seen), "no summary"
+assert "%d already graded, %d to grade" % (len(first), 6 - len(first)) in "".join(seen), "no resume"
+assert len(said) == 6 - len(first), "graded again what was done: %s" % said
 
 records = {}
 for f in os.listdir(out + "/students"):
