@@ -131,6 +131,9 @@ std::string temporaryName(const std::string& path) {
 // renamed over `path`: a process killed while writing (a worker at its time limit) leaves
 // nothing behind. -1: the file system or a missing /proc cannot; the caller falls back.
 int writeUnnamed(const std::string& path, const void* data, std::size_t size, mode_t mode) {
+#ifdef __EMSCRIPTEN__
+    return -1;  // the browser's memory file system links /proc/self/fd/N as a dangling symlink
+#endif
     int fd = ::open(folderOf(path).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, mode);
     if (fd < 0) return -1;
     int error = writeAll(fd, static_cast<const char*>(data), size);
@@ -166,8 +169,12 @@ std::string failed(const std::string& path, int error) {
 
 std::string writeFileAtomically(const std::string& path, const void* data, std::size_t size) {
     if (std::string err = outputPathProblem(path); !err.empty()) return err;
-    mode_t mask = ::umask(0);
+#ifdef __EMSCRIPTEN__
+    const mode_t mask = 022;  // emscripten's umask() gives 0777: files nobody could read back
+#else
+    const mode_t mask = ::umask(0);
     ::umask(mask);
+#endif
     int error = writeUnnamed(path, data, size, 0666 & ~mask);
     if (error > 0) return failed(path, error);
     if (error == 0) return {};

@@ -101,6 +101,12 @@ def check_case(driver, args, out, name, what, folder):
     page = json.loads(got["report"])
     (out / f"page_report_{name}.json").write_text(got["report"])
     failures, worst = compare(name, page, native, folder)
+    shot = out / "page_check.png"  # the page after a check with a failing row (docs/web.md)
+    if not shot.exists() and '"verdict": "FAIL"' in got["report"] and driver.execute_script(
+            "const p = document.querySelector('#checkRows .picture');"
+            "if (p) p.click(); return !!p"):
+        time.sleep(0.5)
+        driver.save_screenshot(str(shot))
     rows = sum(len(s["rows"]) for s in page["stages"])
     verdicts = " ".join(sorted({r["verdict"] for _, r in rows_of(page)}))
     print(f"web: check {name:34} {rows:3} rows ({verdicts}): "
