@@ -23,6 +23,7 @@
 #include "metrics/shadow_metrics.h"
 #include "scene/scene_json.h"
 #include "stages/drawn.h"
+#include "stages/drawn_figures.h"
 #include "stages/registry.h"
 #include "stages/stage.h"
 
@@ -112,24 +113,21 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
     }
     // The rows whose method parameters the seed draws, seen from the displaced view (its truth
     // is traced once for both), each held to our shaders at the same values (judgeDrawn). Only
-    // for a submission: our own shaders would be held to themselves.
-    // Not in a student edition: its shaders are the stubs, and a drawn row compares with the
-    // solution's render at the drawn values, which only an install with the solutions can make
-    // (docs/check.md "Drawn rows": the home check says so and leaves them to the grader).
-    if (narrowed || customView || !seed || base.overlay.empty() || isStudentEdition(base.tree))
-        return cases;
+    // for a submission: our own shaders would be held to themselves. A student edition's shaders
+    // are stubs: it draws at a seed of the shipped set (stages/drawn_figures.h), whose figures
+    // of ours are data, and judges by the same rule (docs/check.md "Drawn rows").
+    if (narrowed || customView || !seed || base.overlay.empty()) return cases;
+    const std::uint64_t drawSeed = isStudentEdition(base.tree) ? shippedDrawnSeed(*seed) : *seed;
     for (const DrawnRow* row : drawnRowsOf(base.stage, treeName(base.tree))) {
         RenderRequest r = base;
-        r.sets = drawnSettings(*row, *seed);
+        r.sets = drawnSettings(*row, drawSeed);
         if (!row->scene.empty()) {
             r.scene = row->scene;
             r.sceneGiven = true;
         }
-        r.displaceSeed = seed;
-        std::string drawn;
-        for (std::size_t k = row->set.size(); k < r.sets.size(); ++k)
-            drawn += (drawn.empty() ? "" : " ") + r.sets[k].first + "=" + r.sets[k].second;
-        cases.push_back({r, "drawn", row->label() + " (drawn: " + drawn + ")"});
+        r.displaceSeed = drawSeed;
+        cases.push_back(
+            {r, "drawn", row->label() + " (drawn: " + drawnValuesText(*row, drawSeed) + ")"});
     }
     return cases;
 }
@@ -148,7 +146,7 @@ bool CaseSeries::done() const {
 // ours, one for theirs: switching per row rebuilt both and traced the reference again each
 // time), once the submission's first rows have run (a shader that does not build ends the stage
 // before: no render of ours in its worker). A student edition's shaders are stubs: its displaced
-// rows are judged by the data alone, and it has no drawn rows.
+// and drawn rows are judged by the data alone (runCheck).
 bool CaseSeries::needsOurs(const CheckCase& c) {
     return c.request.displaceSeed && !c.request.overlay.empty() &&
            !isStudentEdition(c.request.tree);
@@ -297,6 +295,70 @@ std::string drawnValues(const DrawnRow& row, const ParamSet& values) {
     return text;
 }
 
+// Our figures shipped for `row` at `seed` when they are for these very values (a --set that
+// repeats the seed's row), else null: the student edition cannot render ours.
+const ShippedDrawn* shippedDrawnAt(const DrawnRow& row, const std::string& tree, std::uint64_t seed,
+                                   const ParamSet& values) {
+    const ShippedDrawn* data = shippedDrawnOf(row, tree, seed);
+    if (!data || data->drawn != drawnValuesText(row, seed)) return nullptr;
+    ParamSet expected(values.specs());
+    for (const auto& [name, value] : drawnSettings(row, seed)) expected.set(name, value);
+    for (const DrawnParam& d : row.draw)
+        if (expected.text(d.name) != values.text(d.name)) return nullptr;
+    return data;
+}
+
+std::string seedList(const std::vector<std::uint64_t>& seeds) {
+    std::string text;
+    for (std::uint64_t s : seeds) text += (text.empty() ? "" : ", ") + std::to_string(s);
+    return text.empty() ? "none" : text;
+}
+
+// A drawn row's judgement: against our figures at the same values and view, rendered here
+// (`shipped`) or, in a student edition, shipped as data for the seed (none: a SKIP).
+Judgement judgeDrawnCase(const RenderRequest& request, const CheckResult& r, const DrawnRow& row,
+                         const std::map<std::string, double>* shipped) {
+    const std::map<std::string, double> theirs = r.figureMap();
+    const std::string values = drawnValues(row, r.parameters);
+    if (shipped || request.overlay.empty() || !isStudentEdition(request.tree))
+        return judgeDrawn(row, values, theirs, shipped ? *shipped : theirs);
+    const std::uint64_t seed = *request.displaceSeed;
+    const ShippedDrawn* data = shippedDrawnAt(row, r.tree, seed, r.parameters);
+    if (!data)
+        return {Status::Skip, "drawn " + values + " at seed " + std::to_string(seed) +
+                                  ": this student edition ships our figures only at the values "
+                                  "drawn at seeds " +
+                                  seedList(shippedDrawnSeeds()) + " (" + drawnFiguresPath() +
+                                  "); the grader judges it"};
+    Judgement j = judgeDrawn(row, values, theirs, data->figures);
+    j.message += " [student edition: our figures shipped for seed " + std::to_string(seed) +
+                 ", one of " + std::to_string(shippedDrawnSeeds().size()) +
+                 " (src/stages/drawn_figures.json); the grader draws at its own seed]";
+    return j;
+}
+
+// The row's judgement once measured (its expectation found): a drawn row against ours, a
+// displaced one against the wider of the lesson's and the solution's, else the lesson's bounds.
+Judgement judgeCase(const RenderRequest& request, const CheckResult& r,
+                    const std::map<std::string, double>* shipped) {
+    // Settings no lesson names but a drawn row covers (the seed's, or the same typed with --set):
+    // held to ours at the same values, not to the defaults' lesson.
+    const DrawnRow* drawn = request.displaceSeed && !r.expectation.exact
+                                ? drawnRowFor(r.stage, r.scene, r.tree, r.parameters)
+                                : nullptr;
+    if (drawn) return judgeDrawnCase(request, r, *drawn, shipped);
+    const Expectation& lesson = *r.expectation.entry;
+    const std::map<std::string, double> theirs = r.figureMap();
+    Judgement j =
+        request.displaceSeed
+            ? judgeDisplaced(lesson, theirs, displacedFiguresOf(r.stage, r.tree, lesson.label()),
+                             request.overlay.empty() ? &theirs : shipped)
+            : judge(lesson, theirs);
+    if (!r.expectation.exact)
+        j.message += " [no entry for these settings: judged by the defaults' lesson]";
+    return j;
+}
+
 }  // namespace
 
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
@@ -357,25 +419,10 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
     }
-    // Settings no lesson names but a drawn row covers (the seed's, or the same typed with --set):
-    // held to ours at the same values, not to the defaults' lesson.
-    const DrawnRow* drawn = request.displaceSeed && !r.expectation.exact
-                                ? drawnRowFor(r.stage, r.scene, r.tree, r.parameters)
-                                : nullptr;
-    const Expectation& lesson = *r.expectation.entry;
-    const std::map<std::string, double> theirs = r.figureMap();
-    Judgement j =
-        drawn ? judgeDrawn(*drawn, drawnValues(*drawn, r.parameters), theirs,
-                           shipped ? *shipped : theirs)
-        : request.displaceSeed
-            ? judgeDisplaced(lesson, theirs, displacedFiguresOf(r.stage, r.tree, lesson.label()),
-                             request.overlay.empty() ? &theirs : shipped)
-            : judge(lesson, theirs);
+    const Judgement j = judgeCase(request, r, shipped);
     r.status = j.status;
     r.message = j.message;
     r.reasons = j.reasons;
-    if (!r.expectation.exact && !drawn)
-        r.message += " [no entry for these settings: judged by the defaults' lesson]";
     writePictures(rig, evidence, diffPath, pictures, r);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;

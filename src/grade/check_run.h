@@ -75,7 +75,9 @@ CheckResult unrenderedResult(const RenderRequest& r);
 // bounds and the solution's figures in displaced views (data: stages/displaced_bounds.h); one
 // whose settings no lesson names but a drawn row covers (the seed's, or the same given with
 // --set) is held to `shipped`, our shaders' figures at the same values and view, within the
-// row's tolerance (judgeDrawn; the case's own figures when null).
+// row's tolerance (judgeDrawn; the case's own figures when null). In a student edition, which
+// cannot render ours, our figures for a submission's drawn row come from the data shipped for its
+// seed (stages/drawn_figures.h); values it does not ship are a SKIP.
 // `pictures` says which are written once the row is judged (RowPictures below): with the
 // render and the truth's shading (the mirror: our stencil reflection) beside the diff image
 // (DIFF.render.png, DIFF.truth.png), a feedback page shows the three side by side.
@@ -105,7 +107,8 @@ struct CheckCase {
 // (displacedViewOf, scene/mirror_displace.h; GUIDE section 4: a shader that knows the fixed
 // views' geometry or cameras cannot know this one's). With a seed and a submission's overlay
 // (not narrowed, no custom view), each "drawn" row of the stage (stages/drawn.h) adds one more,
-// view "drawn": the displaced view at settings the seed draws.
+// view "drawn": the displaced view at settings the seed draws (in a student edition, at the
+// seed of the shipped set that shippedDrawnSeed picks: stages/drawn_figures.h).
 std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool customView,
                                   std::optional<std::uint64_t> seed = std::nullopt);
 

@@ -17,6 +17,7 @@
 #include "sandbox/private_dir.h"
 #include "scene/scene_json.h"
 #include "stages/drawn.h"
+#include "stages/drawn_figures.h"
 #include "stages/registry.h"
 #include "stages/stage.h"
 
@@ -221,17 +222,21 @@ int runStageCheck(const StageCheckArgs& a) {
         work.notes = submission.notes;
         work.hash = submission.hash;
     }
-    // A student edition cannot judge drawn rows (they compare with the solution's render at the
-    // drawn values): say so, rather than let a home check look like the grade.
-    if (!base.overlay.empty()) {
+    // A student edition has no solution to render drawn rows with: it draws them at a seed of
+    // the shipped set, whose figures of ours are data (stages/drawn_figures.h). Say which, so a
+    // home check is not mistaken for the grader's own seed.
+    if (!base.overlay.empty() && a.settings.seed && !a.narrowed && !a.customView) {
         std::size_t drawn = 0;
         for (const auto& r : requests)
             if (isStudentEdition(r.tree)) drawn += drawnRowsOf(r.stage, treeName(r.tree)).size();
         if (drawn > 0)
             notes.push_back(std::to_string(drawn) + (drawn == 1 ? " row" : " rows") +
-                            " whose values the seed draws (the method's parameters) are judged "
-                            "by the grader only: they compare with the solution's render, which "
-                            "this student edition does not carry");
+                            " whose values the seed draws (the method's parameters) are drawn at "
+                            "seed " +
+                            std::to_string(shippedDrawnSeed(*a.settings.seed)) + ", one of the " +
+                            std::to_string(shippedDrawnSeeds().size()) +
+                            " whose solution figures this student edition ships; the grader "
+                            "draws them at its own seed");
     }
     for (const auto& n : notes) std::cerr << "shadowlab: note: " << printable(n) << "\n";
     GradeSettings settings = a.settings;

@@ -58,25 +58,33 @@ out=$(run check --assignment "$tmp/two.json" --shaders "$tmp/handin" --time-limi
 python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); assert r["score"] == r["max_score"] == 20, r["score"]' \
   "$tmp/two-report.json" || fail "no full marks: $out"
 # One grading truth (issue 39): a corpus of hand-ins checked at home with the student edition,
-# then checked and graded with the instructor's install, at one seed: the same verdict on every
-# row the home check has (the untouched starter 0 in each; a shader that knows the fixed cameras
-# loses its displaced row in each); the grader's drawn rows are the one difference. The displaced rows' bounds are data measured on the solution
-# (src/stages/displaced_bounds.json), not measured on the installed (here stubbed) shaders.
-seed=4242
-for who in starter correct known_eyes; do mkdir -p "$tmp/corpus/$who/margin"; done
+# then checked and graded with the instructor's install, at one seed: the same rows, verdicts,
+# points and score in each (the untouched starter 0; the correct one full marks; a shader that
+# knows the fixed cameras loses its displaced row; a constant margin dressed as the slope formula
+# loses its drawn rows). The displaced rows' bounds and the drawn rows' figures of ours are data
+# measured on the solution (src/stages/displaced_bounds.json, drawn_figures.json), not measured
+# on the installed (here stubbed) shaders. The seed is one the data ships (the home check draws
+# its drawn rows at a shipped seed; at any other it picks one of them, checked below).
+seed=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["seeds"][-1])' \
+  "$data/src/stages/drawn_figures.json")
+corpus="starter correct known_eyes constant"
+for who in $corpus; do mkdir -p "$tmp/corpus/$who/margin"; done
 cp "$data/shaders_core/margin/lit.frag" "$tmp/corpus/starter/margin/"
 cp "$src/shaders_core/margin/lit.frag" "$tmp/corpus/correct/margin/"
 cp "$src/tests/students/margin_game_known_eyes/margin/lit.frag" "$tmp/corpus/known_eyes/margin/"
-corpus_check() {  # corpus_check LABEL: each hand-in checked into $tmp/LABEL-NAME.json
-  for who in starter correct known_eyes; do
+cp "$src/tests/students/margin_game_slope_times_zero/margin/lit.frag" "$tmp/corpus/constant/margin/"
+corpus_check() {  # corpus_check LABEL [SEED]: each hand-in checked into $tmp/LABEL-NAME.json
+  for who in $corpus; do
     set +e
-    run check --assignment "$tmp/margin.json" --shaders "$tmp/corpus/$who" --seed $seed \
-      --time-limit 300 --report "$tmp/$1-$who.json" >/dev/null 2>&1
+    run check --assignment "$tmp/margin.json" --shaders "$tmp/corpus/$who" --seed "${2:-$seed}" \
+      --time-limit 300 --report "$tmp/$1-$who.json" >/dev/null 2>"$tmp/$1-$who.err"
     set -e
-    [ -f "$tmp/$1-$who.json" ] || fail "check of $who ($1) wrote no report"
+    [ -f "$tmp/$1-$who.json" ] || fail "check of $who ($1) wrote no report: $(cat "$tmp/$1-$who.err")"
   done
 }
 corpus_check home
+# A run's seed the data does not ship: the drawn rows are drawn at a shipped one, and say so.
+all=$corpus; corpus=constant; corpus_check other 4242; corpus=$all
 # Nothing to release from: the edition has no solution regions.
 set +e
 run release --assignment "$tmp/margin.json" --out "$tmp/rel" >/dev/null 2>"$tmp/err"
@@ -95,29 +103,38 @@ out=$(run check --stage margin --time-limit 300) || fail "check --stage margin w
 corpus_check instructor
 run grade "$tmp/corpus" --assignment "$tmp/margin.json" --out "$tmp/graded" --seed $seed \
   --time-limit 300 >/dev/null || fail "grade of the corpus with the solutions"
-python3 - "$tmp" <<'PY' || fail "the student edition does not judge as the grader"
+python3 - "$tmp" "$data/src/stages/drawn_figures.json" <<'PY' || fail "the student edition does not judge as the grader"
 import json, sys
-tmp = sys.argv[1]
+tmp, shipped = sys.argv[1], json.load(open(sys.argv[2]))["seeds"]
 def rows(path):
     r = json.load(open(path))
     return r["score"], {(x["stage"], x["tree"], x["view"], x["lesson"]): (x["verdict"], x["points"])
                         for st in r["stages"] for x in st["rows"]}
-want = {"starter": lambda s: s == 0, "correct": lambda s: s == 10, "known_eyes": lambda s: 0 < s < 10}
+def drawn_rows(path):
+    return [x for st in json.load(open(path))["stages"] for x in st["rows"] if x["view"] == "drawn"]
+want = {"starter": lambda s: s == 0, "correct": lambda s: s == 10,
+        "known_eyes": lambda s: 0 < s < 10, "constant": lambda s: 0 < s < 10}
 for who, ok in want.items():
     home, mine = rows(f"{tmp}/home-{who}.json"), rows(f"{tmp}/instructor-{who}.json")
     graded = rows(f"{tmp}/graded/students/{who}.json")
-    assert mine == graded, (who, mine, graded)
-    # The one difference (docs/check.md, "Graded by the method"): the drawn rows compare with the
-    # solution's render, which the student edition cannot make; it plans none. Every other row
-    # has the same verdict at home.
-    drawn = {k for k in mine[1] if k[2] == "drawn"}
-    assert set(home[1]) == set(mine[1]) - drawn and drawn, (who, sorted(home[1]), sorted(mine[1]))
-    for k, (verdict, _) in home[1].items():
-        assert verdict == mine[1][k][0], (who, k, verdict, mine[1][k])
-    assert ok(home[0]) and ok(mine[0]), (who, home[0], mine[0])
+    # One grading truth: every row, verdict and point the same at home as graded, drawn rows too.
+    assert home == mine == graded, (who, home, mine, graded)
+    drawn = drawn_rows(f"{tmp}/home-{who}.json")
+    assert drawn and all("student edition: our figures shipped for seed" in x["message"]
+                         for x in drawn if x["verdict"] in ("PASS", "FAIL")), (who, drawn)
+    assert ok(home[0]), (who, home[0])
     assert any(v == "displaced" for (_, _, v, _) in home[1]), who
-    print(f"{who}: {home[0]} of 10 at home ({len(home[1])} rows), {mine[0]} with the solutions "
-          f"and graded ({len(mine[1])} rows, {len(drawn)} drawn)")
+    print(f"{who}: {home[0]} of 10 at home, with the solutions and graded ({len(home[1])} rows, "
+          f"{len(drawn)} drawn: {[x['verdict'] for x in drawn]})")
+fails = lambda path: [x["verdict"] for x in drawn_rows(path)].count("FAIL")
+assert fails(f"{tmp}/home-constant.json") > 0, "the constant passes its drawn rows at home"
+assert all(x["verdict"] == "PASS" for x in drawn_rows(f"{tmp}/home-correct.json"))
+# At a seed the data does not ship, the home check draws at one it does, and fails the constant.
+other = drawn_rows(f"{tmp}/other-constant.json")
+assert other and all(x["seed"] in shipped and x["seed"] != 4242 for x in other), other
+assert [x["verdict"] for x in other].count("FAIL") > 0, other
+print(f"constant at seed 4242: drawn at seed {other[0]['seed']} of {shipped}: "
+      f"{[x['verdict'] for x in other]}")
 PY
 run release --assignment "$tmp/margin.json" --out "$tmp/rel" --time-limit 300 >/dev/null ||
   fail "release with the solutions component"
