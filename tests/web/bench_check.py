@@ -5,12 +5,10 @@ headless Chromium (SwiftShader) and native `check` (llvmpipe) run alternately --
 this machine. Prints each pair's ratio and the median with its spread, writes bench_check.json.
 A benchmark, not a test: it asserts nothing about time.
 usage: bench_check.py --site build-web/site --shadowlab build/shadowlab --out DIR [--reps 3]"""
-import argparse
 import json
 import pathlib
 import statistics
 import sys
-import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import web_browser  # noqa: E402
@@ -18,10 +16,7 @@ import web_check  # noqa: E402
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--site", required=True)
-    ap.add_argument("--shadowlab", required=True)
-    ap.add_argument("--out", required=True)
+    ap = web_browser.site_arguments()
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--seed", type=int, default=4242)
     ap.add_argument("--only", default="", help="these runs only (comma-separated: margin,all)")
@@ -32,11 +27,9 @@ def main():
     driver.set_script_timeout(1800)
     results = {}
     try:
-        driver.get(pathlib.Path(args.site, "index.html").resolve().as_uri())
-        for _ in range(300):
-            if driver.execute_script("return window.shadowlab && window.shadowlab.ready"):
-                break
-            time.sleep(0.1)
+        if not web_browser.open_page(driver, args.site):
+            print("bench: the page never became ready")
+            return 1
         runs = driver.execute_script(
             "return shadowlab.stages.filter(s => !s.nativeOnly).map(s => s.id)") + ["all"]
         if args.only:

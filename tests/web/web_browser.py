@@ -270,17 +270,34 @@ def student_folders(driver, args, out, corpus):
     return failures
 
 
-def main():
+def site_arguments():
+    """The options every browser script takes: the built site, the native program, an output
+    folder."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--site", required=True)
     ap.add_argument("--shadowlab", required=True)
     ap.add_argument("--out", required=True)
+    return ap
+
+
+def open_page(driver, site):
+    """Opens the site's page from the disk and waits until it is ready (30 s at most); returns
+    whether it became ready."""
+    driver.get(pathlib.Path(site, "index.html").resolve().as_uri())
+    for _ in range(300):
+        if driver.execute_script("return window.shadowlab && window.shadowlab.ready"):
+            return True
+        time.sleep(0.1)
+    return False
+
+
+def main():
+    ap = site_arguments()
     ap.add_argument("--channel-tolerance", type=int, default=8)
     ap.add_argument("--pixel-tolerance", type=float, default=0.01)
     ap.add_argument("--students", default="", help="only the corpus cases this regex finds")
     ap.add_argument("--students-only", action="store_true", help="skip the stages' own tour")
     args = ap.parse_args()
-    page = pathlib.Path(args.site, "index.html").resolve()
     if not pathlib.Path(args.site, "shadowlab.js").exists():
         skip(f"no browser build in {args.site} (bash scripts/web.sh builds it)")
     out = pathlib.Path(args.out)
@@ -293,12 +310,7 @@ def main():
     pool = concurrent.futures.ThreadPoolExecutor(2)
     try:
         started = time.monotonic()
-        driver.get(page.as_uri())
-        for _ in range(300):
-            if driver.execute_script("return window.shadowlab && window.shadowlab.ready"):
-                break
-            time.sleep(0.1)
-        else:
+        if not open_page(driver, args.site):
             skip_or_fail = driver.execute_script("return window.shadowlab && shadowlab.lastMessage")
             print(f"web: FAILED: the page never became ready ({skip_or_fail})")
             return 1

@@ -6,7 +6,6 @@ same seed as a native `check --report` of the same files (llvmpipe). Every row m
 native verdict; figures are printed beside native's (the largest difference per case), and the
 times of both. Writes page_report_CASE.json and native_report_CASE.json to --out and a
 summary (check_parity.json). Exit 77 (ctest: skipped) as web_browser.py does."""
-import argparse
 import json
 import pathlib
 import re
@@ -117,17 +116,13 @@ def check_case(driver, args, out, name, what, folder):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--site", required=True)
-    ap.add_argument("--shadowlab", required=True)
-    ap.add_argument("--out", required=True)
+    ap = web_browser.site_arguments()
     ap.add_argument("--seed", type=int, default=4242)
     ap.add_argument("--students", default="", help="only the corpus cases this regex finds")
     ap.add_argument("--no-ours", action="store_true", help="skip the check of our shaders")
     ap.add_argument("--per-verdict", type=int, default=0,
                     help="only the first N cases of each stage and expected verdict (0: all)")
     args = ap.parse_args()
-    page = pathlib.Path(args.site, "index.html").resolve()
     if not pathlib.Path(args.site, "shadowlab.js").exists():
         web_browser.skip(f"no browser build in {args.site} (bash scripts/web.sh builds it)")
     out = pathlib.Path(args.out)
@@ -136,12 +131,7 @@ def main():
     driver.set_script_timeout(1800)
     failures, summary = [], {}
     try:
-        driver.get(page.as_uri())
-        for _ in range(300):
-            if driver.execute_script("return window.shadowlab && window.shadowlab.ready"):
-                break
-            time.sleep(0.1)
-        else:
+        if not web_browser.open_page(driver, args.site):
             print("web: FAILED: the page never became ready")
             return 1
         runs = set(driver.execute_script(
