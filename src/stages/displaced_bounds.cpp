@@ -1,8 +1,6 @@
 #include "stages/displaced_bounds.h"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "io/data_paths.h"
 #include "stages/expectations.h"
@@ -15,13 +13,9 @@ using Table = std::map<std::string, DisplacedFigures>;  // by "stage/tree/lesson
 
 Table readTable() {
     const std::string path = displacedBoundsPath();
-    std::ifstream in(path);
-    if (!in) throw ExpectationError(path + ": cannot be read (set SHADOWLAB_DATA_DIR?)");
-    std::stringstream text;
-    text << in.rdbuf();
     Table table;
     try {
-        nlohmann::json doc = nlohmann::json::parse(text.str());
+        nlohmann::json doc = nlohmann::json::parse(readStageData(path));
         for (const auto& [key, figures] : doc.at("lessons").items())
             for (const auto& [figure, range] : figures.items())
                 table[key][figure] = {range.at(0).get<double>(), range.at(1).get<double>()};

@@ -1,8 +1,6 @@
 #include "stages/drawn_figures.h"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "io/data_paths.h"
 #include "stages/expectations.h"
@@ -23,13 +21,9 @@ std::string keyOf(const std::string& stage, const std::string& tree, const std::
 
 Table readTable() {
     const std::string path = drawnFiguresPath();
-    std::ifstream in(path);
-    if (!in) throw ExpectationError(path + ": cannot be read (set SHADOWLAB_DATA_DIR?)");
-    std::stringstream text;
-    text << in.rdbuf();
     Table table;
     try {
-        nlohmann::json doc = nlohmann::json::parse(text.str());
+        nlohmann::json doc = nlohmann::json::parse(readStageData(path));
         for (const auto& s : doc.at("seeds")) table.seeds.push_back(s.get<std::uint64_t>());
         for (const auto& [row, bySeed] : doc.at("rows").items())
             for (const auto& [seed, entry] : bySeed.items()) {

@@ -133,16 +133,15 @@ std::optional<glm::vec3> vec3Of(const json& view, const char* key, const std::st
     return glm::vec3(v[0].get<float>(), v[1].get<float>(), v[2].get<float>());
 }
 
-std::string readExpectationsText() {
-    std::ifstream in(expectationsPath());
-    if (!in)
-        throw ExpectationError(expectationsPath() + ": cannot be read (set SHADOWLAB_DATA_DIR?)");
+}  // namespace
+
+std::string readStageData(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw ExpectationError(path + ": cannot be read (set SHADOWLAB_DATA_DIR?)");
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
 }
-
-}  // namespace
 
 std::string defaultSceneOf(const std::string& stage) {
     const StageInfo* info = findStage(stage);
@@ -195,7 +194,9 @@ const std::vector<GradingView>& gradingViews(const std::string& scene) {
     static std::map<std::string, std::vector<GradingView>> cache;
     auto found = cache.find(scene);
     if (found == cache.end())
-        found = cache.emplace(scene, parseViews(readExpectationsText(), expectationsPath(), scene))
+        found = cache
+                    .emplace(scene, parseViews(readStageData(expectationsPath()),
+                                               expectationsPath(), scene))
                     .first;
     return found->second;
 }
@@ -266,7 +267,7 @@ std::string expectationsPath() {
 
 const std::vector<Expectation>& expectations() {
     static const std::vector<Expectation> book =
-        parseExpectations(readExpectationsText(), expectationsPath());
+        parseExpectations(readStageData(expectationsPath()), expectationsPath());
     return book;
 }
 

@@ -23,6 +23,10 @@ class ExpectationError : public std::invalid_argument {
     using std::invalid_argument::invalid_argument;
 };
 
+// The text of one of the stages' data files (expectations.json, displaced_bounds.json,
+// drawn_figures.json); throws ExpectationError naming it when it cannot be read.
+std::string readStageData(const std::string& path);
+
 // A bound on one figure (names as in the check report: false_shadow_pct, mirror_psnr_db, ...).
 // NaN = no bound on that side.
 struct Limit {
