@@ -22,7 +22,6 @@ FramebufferTarget createFramebufferTarget(int width, int height, const char* wha
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                               t.depthStencil.id());
     std::string incomplete = checkFramebufferComplete(what);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (!incomplete.empty()) throw std::runtime_error(incomplete);
     return t;
 }

@@ -11,7 +11,8 @@ struct FramebufferTarget {
     Framebuffer fbo;
 };
 
-// Makes the target in the current context; throws std::runtime_error naming `what` when the
+// Makes the target in the current context and leaves it bound (a new context draws into its
+// target, as OSMesa's does into its buffer); throws std::runtime_error naming `what` when the
 // framebuffer is incomplete.
 FramebufferTarget createFramebufferTarget(int width, int height, const char* what);
 
