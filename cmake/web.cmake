@@ -62,51 +62,76 @@ list(FILTER SL_WEB_SOURCES EXCLUDE REGEX
      "/(io/png|gl/glsl_for_desktop|gl/loader|metrics/callgrind|metrics/timing)\\.cpp$")
 list(APPEND SL_WEB_SOURCES ${SL_WEB_GLSLANG_SOURCE}/StandAlone/ResourceLimits.cpp)
 
-set(SL_WEB_DATA ${CMAKE_BINARY_DIR}/data)
 file(GLOB_RECURSE SL_WEB_SHADERS CONFIGURE_DEPENDS shaders_core/* scenes/* slides_examples/*)
-# The stages' data: the lessons' bounds (expectations.json), the displaced views' (check's).
+# The stages' data: the lessons' bounds (expectations.json), the displaced views' and the drawn
+# rows' figures of our shaders (check's; a student edition judges by them).
 file(GLOB SL_WEB_STAGE_DATA CONFIGURE_DEPENDS src/stages/*.json)
-add_custom_command(
-  OUTPUT ${SL_WEB_DATA}/shaders_core.stamp
-  COMMAND ${CMAKE_COMMAND} -E rm -rf ${SL_WEB_DATA}
-  COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/shaders_core
-          ${SL_WEB_DATA}/shaders_core
-  COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/scenes ${SL_WEB_DATA}/scenes
-  COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/slides_examples
-          ${SL_WEB_DATA}/slides_examples
-  COMMAND ${CMAKE_COMMAND} -E make_directory ${SL_WEB_DATA}/src/stages
-  COMMAND ${CMAKE_COMMAND} -E copy ${SL_WEB_STAGE_DATA} ${SL_WEB_DATA}/src/stages/
-  COMMAND ${CMAKE_COMMAND} -E touch ${SL_WEB_DATA}/shaders_core.stamp
-  DEPENDS ${SL_WEB_SHADERS} ${SL_WEB_STAGE_DATA}
-  COMMENT "The page's data: shaders_core (translated in the page), scenes, lessons, bounds"
-  VERBATIM)
-add_custom_target(web_data DEPENDS ${SL_WEB_DATA}/shaders_core.stamp)
 
-add_executable(shadowlab_web ${SL_WEB_SOURCES})
-add_dependencies(shadowlab_web web_data)
-# Embedded at link time (--embed-file below): a changed shader, scene or bound relinks the page.
-set_property(TARGET shadowlab_web APPEND PROPERTY LINK_DEPENDS ${SL_WEB_DATA}/shaders_core.stamp)
-target_include_directories(shadowlab_web PRIVATE src)
-target_include_directories(shadowlab_web SYSTEM PRIVATE ${SL_WEB_INCLUDE})  # Debian's headers
-target_compile_definitions(shadowlab_web PRIVATE GLM_FORCE_CTOR_INIT
+# The page's objects, compiled once for both sites (below), which differ only in the data
+# embedded when they are linked.
+add_library(shadowlab_web_objects OBJECT ${SL_WEB_SOURCES})
+target_include_directories(shadowlab_web_objects PRIVATE src)
+target_include_directories(shadowlab_web_objects SYSTEM PRIVATE ${SL_WEB_INCLUDE}  # Debian's
+                           ${SL_WEB_GLSLANG_SOURCE} ${SL_WEB_SPIRV_CROSS_SOURCE})
+target_compile_definitions(shadowlab_web_objects PRIVATE GLM_FORCE_CTOR_INIT
                            SHADOWLAB_GLSLANG_RESOURCES_HEADER=1)
-target_link_libraries(shadowlab_web PRIVATE glslang SPIRV spirv-cross-glsl)
-target_include_directories(shadowlab_web SYSTEM PRIVATE ${SL_WEB_GLSLANG_SOURCE}
-                           ${SL_WEB_SPIRV_CROSS_SOURCE})
+target_link_libraries(shadowlab_web_objects PRIVATE glslang SPIRV spirv-cross-glsl)
 set_property(SOURCE src/io/data_paths.cpp APPEND PROPERTY  # the embedded data (web_main.cpp)
              COMPILE_DEFINITIONS SHADOWLAB_SOURCE_DIR="/data")
-target_compile_options(shadowlab_web PRIVATE -Wall -Wextra -Wno-unused-parameter -fexceptions)
-set_target_properties(shadowlab_web PROPERTIES OUTPUT_NAME shadowlab SUFFIX .js
-                      RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/site)
-target_link_options(shadowlab_web PRIVATE
-  -fexceptions -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sSINGLE_FILE=1
-  -sALLOW_MEMORY_GROWTH=1 -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,FS
-  "SHELL:--embed-file ${SL_WEB_DATA}@/data")
-# The page: copied whenever it changes (not only when the program relinks).
-add_custom_command(
-  OUTPUT ${CMAKE_BINARY_DIR}/site/index.html
-  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/src/web/index.html
-          ${CMAKE_BINARY_DIR}/site/index.html
-  DEPENDS ${CMAKE_SOURCE_DIR}/src/web/index.html
-  VERBATIM)
-add_custom_target(web_page ALL DEPENDS ${CMAKE_BINARY_DIR}/site/index.html)
+target_compile_options(shadowlab_web_objects PRIVATE -Wall -Wextra -Wno-unused-parameter
+                       -fexceptions)
+
+# One site: SITE/index.html and SITE/shadowlab.js with DATA embedded (our shaders from SHADERS,
+# scenes, lessons, bounds). PREPARE: commands that write SHADERS first; DEPENDS: what they read.
+function(sl_web_site target site data shaders)
+  cmake_parse_arguments(SITE "" "" "PREPARE;DEPENDS" ${ARGN})
+  add_custom_command(
+    OUTPUT ${data}/shaders_core.stamp
+    COMMAND ${CMAKE_COMMAND} -E rm -rf ${data}
+    ${SITE_PREPARE}
+    COMMAND ${CMAKE_COMMAND} -E copy_directory ${shaders} ${data}/shaders_core
+    COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/scenes ${data}/scenes
+    COMMAND ${CMAKE_COMMAND} -E copy_directory ${CMAKE_SOURCE_DIR}/slides_examples
+            ${data}/slides_examples
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${data}/src/stages
+    COMMAND ${CMAKE_COMMAND} -E copy ${SL_WEB_STAGE_DATA} ${data}/src/stages/
+    COMMAND ${CMAKE_COMMAND} -E touch ${data}/shaders_core.stamp
+    DEPENDS ${SL_WEB_SHADERS} ${SL_WEB_STAGE_DATA} ${SITE_DEPENDS}
+    COMMENT "${target}'s data: our shaders (translated in the page), scenes, lessons, bounds"
+    VERBATIM)
+  add_custom_target(${target}_data DEPENDS ${data}/shaders_core.stamp)
+  add_executable(${target} $<TARGET_OBJECTS:shadowlab_web_objects>)
+  add_dependencies(${target} ${target}_data)
+  # Embedded at link time (--embed-file below): a changed shader, scene or bound relinks it.
+  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${data}/shaders_core.stamp)
+  target_link_libraries(${target} PRIVATE glslang SPIRV spirv-cross-glsl)
+  set_target_properties(${target} PROPERTIES OUTPUT_NAME shadowlab SUFFIX .js
+                        RUNTIME_OUTPUT_DIRECTORY ${site})
+  target_link_options(${target} PRIVATE
+    -fexceptions -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sSINGLE_FILE=1
+    -sALLOW_MEMORY_GROWTH=1 -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,FS
+    "SHELL:--embed-file ${data}@/data")
+  # The page: copied whenever it changes (not only when the program relinks).
+  add_custom_command(
+    OUTPUT ${site}/index.html
+    COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/src/web/index.html ${site}/index.html
+    DEPENDS ${CMAKE_SOURCE_DIR}/src/web/index.html
+    VERBATIM)
+  add_custom_target(${target}_page ALL DEPENDS ${site}/index.html)
+endfunction()
+
+# The lecturer's site: our shaders as the source tree holds them, solutions included.
+sl_web_site(shadowlab_web ${CMAKE_BINARY_DIR}/site ${CMAKE_BINARY_DIR}/data
+            ${CMAKE_SOURCE_DIR}/shaders_core)
+# The student edition's site (what a course publishes for its students): every marked region
+# stubbed, as `release --student-edition` writes them, by the native program built beside
+# (scripts/web.sh passes it); its check judges as the native student edition does.
+set(SHADOWLAB_NATIVE "" CACHE FILEPATH "the native shadowlab that writes the student edition")
+if(SHADOWLAB_NATIVE)
+  set(SL_WEB_TREES ${CMAKE_BINARY_DIR}/student-trees)
+  sl_web_site(shadowlab_web_student ${CMAKE_BINARY_DIR}/site-student
+              ${CMAKE_BINARY_DIR}/data-student ${SL_WEB_TREES}/shaders_core
+              PREPARE COMMAND ${CMAKE_COMMAND} -E rm -rf ${SL_WEB_TREES}
+                      COMMAND ${SHADOWLAB_NATIVE} release --student-edition --out ${SL_WEB_TREES}
+              DEPENDS ${SHADOWLAB_NATIVE})
+endif()

@@ -23,3 +23,14 @@ add_test(NAME web_check
                  --out ${CMAKE_BINARY_DIR}/web_check --students . --per-verdict 1)
 set_tests_properties(web_check PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 600
                      RUN_SERIAL TRUE)
+# The student edition's site (build-web/site-student, what a course publishes for its
+# students): no line of a solution region in it, our stubbed shaders score 0 there, and at the
+# last seed whose drawn figures it ships, margin's hand-ins (the first of each expected verdict)
+# get native's verdicts row for row.
+add_test(NAME web_student_edition
+         COMMAND ${SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/web/web_check.py
+                 --site ${SL_WEB_SITE}-student --shadowlab $<TARGET_FILE:shadowlab>
+                 --out ${CMAKE_BINARY_DIR}/web_student_edition --student-edition
+                 --students "^margin_(.*)$" --per-verdict 1 --no-ours)
+set_tests_properties(web_student_edition PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 300
+                     RUN_SERIAL TRUE)

@@ -320,7 +320,9 @@ Judgement judgeDrawnCase(const RenderRequest& request, const CheckResult& r, con
                          const std::map<std::string, double>* shipped) {
     const std::map<std::string, double> theirs = r.figureMap();
     const std::string values = drawnValues(row, r.parameters);
-    if (shipped || request.overlay.empty() || !isStudentEdition(request.tree))
+    // Our figures: rendered beside theirs, or theirs when they are ours (no folder laid over);
+    // a student edition's own shaders are stubs, never a measure (the data below, folder or not).
+    if (shipped || !isStudentEdition(request.tree))
         return judgeDrawn(row, values, theirs, shipped ? *shipped : theirs);
     const std::uint64_t seed = *request.displaceSeed;
     const ShippedDrawn* data = shippedDrawnAt(row, r.tree, seed, r.parameters);
@@ -349,10 +351,12 @@ Judgement judgeCase(const RenderRequest& request, const CheckResult& r,
     if (drawn) return judgeDrawnCase(request, r, *drawn, shipped);
     const Expectation& lesson = *r.expectation.entry;
     const std::map<std::string, double> theirs = r.figureMap();
+    // Ours in a displaced view: theirs when they are ours, never a student edition's stubs.
+    const bool theirsAreOurs = request.overlay.empty() && !isStudentEdition(request.tree);
     Judgement j =
         request.displaceSeed
             ? judgeDisplaced(lesson, theirs, displacedFiguresOf(r.stage, r.tree, lesson.label()),
-                             request.overlay.empty() ? &theirs : shipped)
+                             theirsAreOurs ? &theirs : shipped)
             : judge(lesson, theirs);
     if (!r.expectation.exact)
         j.message += " [no entry for these settings: judged by the defaults' lesson]";

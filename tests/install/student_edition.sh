@@ -83,6 +83,20 @@ corpus_check() {  # corpus_check LABEL [SEED]: each hand-in checked into $tmp/LA
   done
 }
 corpus_check home
+# The installed tree itself checked (no folder laid over) is the starter: its displaced and drawn
+# rows are judged by the solution's data too, never against its own stubs (it has no drawn rows:
+# those draw a folder's values against ours).
+set +e
+run check --stage margin --seed "$seed" --time-limit 300 --report "$tmp/home-installed.json" \
+  >/dev/null 2>"$tmp/home-installed.err"
+set -e
+python3 -c 'import json, sys
+rows = lambda p: {(st["stage"], st["tree"], x["view"], x["lesson"]): x["verdict"]
+                  for st in json.load(open(p))["stages"] for x in st["rows"]}
+a, b = rows(sys.argv[1]), rows(sys.argv[2])
+assert a and all(b[k] == v for k, v in a.items()), [(k, v, b.get(k)) for k, v in a.items() if b.get(k) != v]' \
+  "$tmp/home-installed.json" "$tmp/home-starter.json" ||
+  fail "the installed student edition checked as it is is not judged as its starter: $(tail -2 "$tmp/home-installed.err")"
 # A run's seed the data does not ship: the drawn rows are drawn at a shipped one, and say so.
 all=$corpus; corpus=constant; corpus_check other 4242; corpus=$all
 # Nothing to release from: the edition has no solution regions.

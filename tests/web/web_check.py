@@ -5,7 +5,11 @@ runs) and over hand-ins of the student corpus (tests/students, the core tree), e
 same seed as a native `check --report` of the same files (llvmpipe). Every row must have the
 native verdict; figures are printed beside native's (the largest difference per case), and the
 times of both. Writes page_report_CASE.json and native_report_CASE.json to --out and a
-summary (check_parity.json). Exit 77 (ctest: skipped) as web_browser.py does."""
+summary (check_parity.json). With --student-edition the site is the student edition's
+(site-student): no line of a solution region may be in it, our stubbed shaders score 0, and at a
+seed whose drawn figures it ships its verdicts are still native's (the instructor's).
+Exit 77 (ctest: skipped) as web_browser.py does."""
+import base64
 import json
 import pathlib
 import re
@@ -115,14 +119,65 @@ def check_case(driver, args, out, name, what, folder):
                       "figure_gap": worst[0], "gap_figure": worst[1], "same": not failures}
 
 
+def solution_lines(repo):
+    """The lines of every marked solution region of our core tree (the code a student edition
+    must not ship), those long enough to mean something."""
+    lines = set()
+    for path in pathlib.Path(repo, "shaders_core").rglob("*"):
+        inside = False
+        for line in path.read_text(errors="replace").splitlines() if path.is_file() else []:
+            if "END SOLUTION" in line:
+                inside = False
+            elif inside and len(line.strip()) >= 16 and not line.strip().startswith("//"):
+                lines.add(line.strip())
+            elif "BEGIN SOLUTION" in line:
+                inside = True
+    return lines
+
+
+def leaked_solutions(site, repo):
+    """The solution lines found in the site's shadowlab.js (its embedded files are in the
+    WebAssembly, base64 inside the .js): none for a student edition."""
+    text = pathlib.Path(site, "shadowlab.js").read_text(errors="replace")
+    blobs = [text.encode()]
+    for b64 in re.findall(r"base64,([A-Za-z0-9+/=]{1000,})", text):
+        blobs.append(base64.b64decode(b64))
+    lines = solution_lines(repo)
+    return lines, sorted(line for line in lines if any(line.encode() in b for b in blobs))
+
+
+def student_edition(driver, args, out):
+    """The student edition's site: no solution line anywhere in it, and our (stubbed) shaders
+    checked in it score 0, as the native student edition's starter does."""
+    repo = pathlib.Path(__file__).resolve().parents[2]
+    lines, leaked = leaked_solutions(args.site, repo)
+    print(f"web: student edition: {len(leaked)} of {len(lines)} solution lines in shadowlab.js")
+    failures = [f"the student edition ships a solution line: {line!r}" for line in leaked[:5]]
+    driver.execute_script("shadowlab.takeFolder('', '')")
+    got = driver.execute_async_script(RUN, "margin", str(args.seed))
+    score = json.loads(got["report"])["score"] if got.get("report") else None
+    (out / "page_report_starter.json").write_text(got.get("report") or "")
+    print(f"web: student edition: the starter's margin check scores {score}")
+    if score != 0:
+        failures.append(f"the starter's margin check scores {score} ({got.get('error')})")
+    return failures
+
+
 def main():
     ap = web_browser.site_arguments()
-    ap.add_argument("--seed", type=int, default=4242)
+    ap.add_argument("--seed", type=int,
+                    help="the displaced views' seed (default 4242; a student edition's: the "
+                         "last seed whose drawn figures it ships)")
     ap.add_argument("--students", default="", help="only the corpus cases this regex finds")
     ap.add_argument("--no-ours", action="store_true", help="skip the check of our shaders")
+    ap.add_argument("--student-edition", action="store_true",
+                    help="the site is the student edition's: no solution in it, the starter 0")
     ap.add_argument("--per-verdict", type=int, default=0,
                     help="only the first N cases of each stage and expected verdict (0: all)")
     args = ap.parse_args()
+    if args.seed is None:
+        shipped = pathlib.Path(__file__).resolve().parents[2] / "src/stages/drawn_figures.json"
+        args.seed = json.loads(shipped.read_text())["seeds"][-1] if args.student_edition else 4242
     if not pathlib.Path(args.site, "shadowlab.js").exists():
         web_browser.skip(f"no browser build in {args.site} (bash scripts/web.sh builds it)")
     out = pathlib.Path(args.out)
@@ -136,6 +191,8 @@ def main():
             return 1
         runs = set(driver.execute_script(
             "return shadowlab.stages.filter(s => !s.nativeOnly).map(s => s.id)"))
+        if args.student_edition:
+            failures += student_edition(driver, args, out)
         cases = [] if args.no_ours else [("ours_all", "all", None)]
         corpus = pathlib.Path(__file__).resolve().parents[1] / "students"
         taken = []  # (stage, verdict) of the cases taken
