@@ -42,6 +42,7 @@ namespace sl::es3 {
 // one (gl_es3.cpp). docs/web.md.
 constexpr const char* kDepthReferenceRange = "sl_depthReference";
 void noteTexImage(GLenum target, GLint internal);
+void forgetProgram(GLuint program);  // what beforeDraw found in it (relinked, or a name reused)
 void beforeDraw();
 
 // ES 3.0 has no border clamp: the edge texel is read instead, which the shadow pass keeps at the
@@ -79,6 +80,10 @@ inline void depthRange(GLdouble nearValue, GLdouble farValue) {
 inline void clearDepth(GLdouble value) {
     glClearDepthf(static_cast<GLfloat>(value));
 }
+inline void linkProgram(GLuint program) {
+    forgetProgram(program);
+    glLinkProgram(program);
+}
 inline void drawArrays(GLenum mode, GLint first, GLsizei count) {
     beforeDraw();
     glDrawArrays(mode, first, count);
@@ -105,3 +110,4 @@ inline void getDoublev(GLenum name, GLdouble* out) {
 #define glGetDoublev sl::es3::getDoublev
 #define glDrawArrays sl::es3::drawArrays
 #define glDrawElements sl::es3::drawElements
+#define glLinkProgram sl::es3::linkProgram

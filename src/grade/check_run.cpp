@@ -327,11 +327,13 @@ Judgement judgeDrawnCase(const RenderRequest& request, const CheckResult& r, con
     const std::uint64_t seed = *request.displaceSeed;
     const ShippedDrawn* data = shippedDrawnAt(row, r.tree, seed, r.parameters);
     if (!data)
-        return {Status::Skip, "drawn " + values + " at seed " + std::to_string(seed) +
-                                  ": this student edition ships our figures only at the values "
-                                  "drawn at seeds " +
-                                  seedList(shippedDrawnSeeds()) + " (" + drawnFiguresPath() +
-                                  "); the grader judges it"};
+        return {Status::Skip,
+                "drawn " + values + " at seed " + std::to_string(seed) +
+                    ": this student edition ships our figures only at the values "
+                    "drawn at seeds " +
+                    seedList(shippedDrawnSeeds()) + " (" + drawnFiguresPath() +
+                    "); the grader judges it",
+                {}};
     Judgement j = judgeDrawn(row, values, theirs, data->figures);
     j.message += " [student edition: our figures shipped for seed " + std::to_string(seed) +
                  ", one of " + std::to_string(shippedDrawnSeeds().size()) +

@@ -13,6 +13,11 @@ struct PickedFolder {
 };
 PickedFolder pickedFolder();
 
+// The folder the intake read (`read`: the picked one's copy or a folder in it): its path inside
+// the copy ("" for the copy itself), and its name as the student picked it ("lab4/inner").
+std::string insidePicked(const PickedFolder& picked, const std::string& read);
+std::string shownAsPicked(const PickedFolder& picked, const std::string& read);
+
 // `text` with the copy's path named as the student picked it.
 std::string asPicked(const std::string& text);
 

@@ -97,9 +97,7 @@ sl::GradingPlan planFor(const std::string& what, std::uint64_t seed, sl::Student
         } catch (const sl::IntakeError& e) {
             throw sl::UsageError(sl::web::asPicked(e.what()));
         }
-        const std::string read =
-            submission.folder.substr(std::min(submission.folder.size(), picked.path.size() + 1));
-        c.shown = picked.name + (read.empty() ? "" : "/" + read);
+        c.shown = sl::web::shownAsPicked(picked, submission.folder);
         for (std::string& note : submission.notes) notes.push_back(note = sl::web::asPicked(note));
         for (sl::RenderRequest& r : requests) r.overlay = c.snapshot;
         work.name = picked.name;

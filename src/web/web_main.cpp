@@ -120,6 +120,15 @@ sl::web::PickedFolder sl::web::pickedFolder() {
     return {page().upload, page().uploadName};
 }
 
+std::string sl::web::insidePicked(const PickedFolder& picked, const std::string& read) {
+    return read.substr(std::min(read.size(), picked.path.size() + 1));
+}
+
+std::string sl::web::shownAsPicked(const PickedFolder& picked, const std::string& read) {
+    const std::string inside = insidePicked(picked, read);
+    return picked.name + (inside.empty() ? "" : "/" + inside);
+}
+
 std::string sl::web::asPicked(const std::string& text) {
     return page().upload.empty() ? text : ::asPicked(text, page().upload, page().uploadName);
 }
@@ -282,8 +291,8 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_student_folder(const char* folder, const
             sl::Submission taken =
                 sl::takeSubmission(folder, snapshot, sl::shippedTrees().both, {p.request.stage});
             // Messages name the student's own folder (its name as picked), never the copies.
-            read = taken.folder.substr(std::min(taken.folder.size(), std::strlen(folder) + 1));
-            shown = std::string(name) + (read.empty() ? "" : "/" + read);
+            read = sl::web::insidePicked({folder, name}, taken.folder);
+            shown = sl::web::shownAsPicked({folder, name}, taken.folder);
             sl::showFolderAs(taken.root, shown);
             for (auto& note : taken.notes) {
                 note = asPicked(note, folder, name);
