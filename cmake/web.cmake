@@ -47,7 +47,8 @@ add_subdirectory(${SL_WEB_GLSLANG_SOURCE} glslang EXCLUDE_FROM_ALL)
 add_subdirectory(${SL_WEB_SPIRV_CROSS_SOURCE} spirv-cross EXCLUDE_FROM_ALL)
 
 # What runs in the browser: the lecture (scene, renderer, stages, lessons) and `check` in the
-# page (the reference tracer, the figures, the plan, judge and record: grade/check_steps.h), drawn
+# page (the reference tracer, the figures, the plan, judge and record: grade/check_steps.h; an
+# assignment's plan: course/assignment.h, course/student_grade.h), drawn
 # into the page's WebGL context (platform/webgl_*); none of the desktop's sandbox, libpng (stb
 # writes the page's pictures: io/png_web.cpp), GL loader or OSMesa/EGL/X11 contexts.
 file(GLOB SL_WEB_SOURCES CONFIGURE_DEPENDS
@@ -57,7 +58,10 @@ file(GLOB SL_WEB_SOURCES CONFIGURE_DEPENDS
      src/platform/framebuffer_target.cpp src/window/lessons.cpp
      src/grade/intake.cpp src/grade/check_run.cpp src/grade/check_steps.cpp src/grade/check_plan.cpp
      src/grade/judge.cpp src/grade/status.cpp src/grade/bounds.cpp src/grade/record.cpp
-     src/grade/plan.cpp src/grade/reports.cpp src/web/*.cpp)
+     src/grade/plan.cpp src/grade/reports.cpp src/web/*.cpp
+     src/course/assignment.cpp src/course/assignment_meaning.cpp src/course/json_lines.cpp
+     src/course/student_grade.cpp src/gradebook/late_policy.cpp src/gradebook/csv.cpp
+     src/gradebook/iso_time.cpp)
 list(FILTER SL_WEB_SOURCES EXCLUDE REGEX
      "/(io/png|gl/glsl_for_desktop|gl/loader|metrics/callgrind|metrics/timing)\\.cpp$")
 list(APPEND SL_WEB_SOURCES ${SL_WEB_GLSLANG_SOURCE}/StandAlone/ResourceLimits.cpp)

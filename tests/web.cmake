@@ -23,6 +23,17 @@ add_test(NAME web_check
                  --out ${CMAKE_BINARY_DIR}/web_check --students . --per-verdict 1)
 set_tests_properties(web_check PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 600
                      RUN_SERIAL TRUE)
+# "Everything due" in the page against native `check --assignment` (the shipped example
+# assignments/lab4.json, as a course publishes it beside the page): our shaders and margin's first
+# hand-in of each expected verdict, every row's verdict and the score equal. About 40 s here.
+add_test(NAME web_check_assignment
+         COMMAND ${SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/web/web_check.py
+                 --site ${SL_WEB_SITE} --shadowlab $<TARGET_FILE:shadowlab>
+                 --out ${CMAKE_BINARY_DIR}/web_check_assignment
+                 --assignment ${CMAKE_SOURCE_DIR}/assignments/lab4.json
+                 --students "^margin_" --per-verdict 1)
+set_tests_properties(web_check_assignment PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 300
+                     RUN_SERIAL TRUE)
 # The student edition's site (build-web/site-student, what a course publishes for its
 # students): no line of a solution region in it, our stubbed shaders score 0 there, and at the
 # last seed whose drawn figures it ships, margin's hand-ins (the first of each expected verdict)

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "course/archive.h"
+#include "course/student_grade.h"
 #include "grade/intake.h"
 #include "io/files.h"
 
@@ -176,6 +177,16 @@ StudentWork intakeSubmission(const std::string& path, const std::string& workDir
         s.platformFailure = true;
         return s;
     }
+}
+
+StudentWork intakeForAssignment(const Assignment& a, const std::string& path,
+                                const std::string& workDir) {
+    std::set<std::string> listed;
+    for (const AssignmentStage* st : a.due()) listed.insert(st->files.begin(), st->files.end());
+    StudentWork s = intakeSubmission(path, workDir, dueStageNames(a), listed);
+    std::vector<std::string> more = unlistedFileNotes(a, s);
+    s.notes.insert(s.notes.end(), more.begin(), more.end());
+    return s;
 }
 
 }  // namespace sl

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "course/assignment.h"
 #include "grade/plan.h"
 
 namespace sl {
@@ -21,6 +22,11 @@ namespace sl {
 StudentWork intakeSubmission(const std::string& path, const std::string& workDir,
                              const std::vector<std::string>& stages = {},
                              const std::set<std::string>& listed = {});
+
+// The hand-in at `path` read for `a`: near misses suggest only its due stages, and unlisted files
+// of their folders are noted (course/student_grade.h unlistedFileNotes).
+StudentWork intakeForAssignment(const Assignment& a, const std::string& path,
+                                const std::string& workDir);
 
 // The student's name for an entry of a class folder: its base name, without ".zip".
 std::string submissionName(const std::string& path);

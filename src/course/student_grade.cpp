@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <set>
 
-#include "course/intake_adapter.h"
 #include "grade/bounds.h"
 
 namespace sl {
@@ -59,16 +58,6 @@ std::vector<std::string> unlistedFileNotes(const Assignment& a, const StudentWor
                       " not graded: this assignment grades only " + wanted + " of " + stage + "/");
     }
     return out;
-}
-
-StudentWork intakeForAssignment(const Assignment& a, const std::string& path,
-                                const std::string& workDir) {
-    std::set<std::string> listed;
-    for (const AssignmentStage* st : a.due()) listed.insert(st->files.begin(), st->files.end());
-    StudentWork s = intakeSubmission(path, workDir, dueStageNames(a), listed);
-    std::vector<std::string> more = unlistedFileNotes(a, s);
-    s.notes.insert(s.notes.end(), more.begin(), more.end());
-    return s;
 }
 
 }  // namespace sl

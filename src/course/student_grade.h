@@ -19,9 +19,5 @@ std::vector<std::string> dueStageNames(const Assignment& a);
 // the student should know. Files another note already names (a near miss) are left out.
 std::vector<std::string> unlistedFileNotes(const Assignment& a, const StudentWork& s);
 
-// The hand-in at `path` read for `a` (course/intake_adapter.h): near misses suggest only its due
-// stages, and unlisted files of their folders are noted.
-StudentWork intakeForAssignment(const Assignment& a, const std::string& path,
-                                const std::string& workDir);
 
 }  // namespace sl

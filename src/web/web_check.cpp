@@ -5,11 +5,15 @@
 #include <emscripten/emscripten.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 
+#include "course/assignment.h"
+#include "course/student_grade.h"
 #include "gl/gl.h"
 #include "grade/check_plan.h"
 #include "grade/check_steps.h"
@@ -24,10 +28,13 @@
 namespace {
 
 constexpr const char* kPictures = "/check";  // the rows' pictures, in the page's memory
+// The assignment file the page found beside it or the student picked (index.html writes it).
+constexpr const char* kAssignment = "/assignment/assignment.json";
 
 struct PageCheck {
     std::unique_ptr<sl::CheckSteps> steps;
     std::string snapshot, shown;  // the checked folder's snapshot, named as picked
+    bool namesRelative = false;  // an assignment's check names files as in the hand-in, as natively
     int snapshots = 0;
     std::string text;
 };
@@ -61,8 +68,36 @@ nlohmann::json stageJson(const sl::StageRecord& st) {
             {"rows", rows}};
 }
 
-// The plan `check --stage STAGE` (or `--all`) grades over the folder last picked, taken again by
-// the intake for the stages checked, as `check --shaders` takes it (a refusal is its UsageError).
+// The folder last picked, taken again by the intake for `stages` (and an assignment's `listed`
+// files), as `check --shaders` takes it, into `work` (our shaders when none is picked). Returns
+// whether one was; a refusal throws IntakeError naming the folder as picked.
+bool takePicked(const std::vector<std::string>& stages, const std::set<std::string>& listed,
+                sl::StudentWork& work, sl::Submission& submission) {
+    PageCheck& c = pageCheck();
+    const sl::web::PickedFolder picked = sl::web::pickedFolder();
+    work.name = "shipped shaders";
+    if (picked.path.empty()) return false;
+    if (!c.snapshot.empty()) std::filesystem::remove_all(c.snapshot);
+    c.snapshot = "/student/check-" + std::to_string(++c.snapshots);
+    std::filesystem::create_directories(c.snapshot);
+    work.name = picked.name;
+    try {
+        submission =
+            sl::takeSubmission(picked.path, c.snapshot, sl::shippedTrees().both, stages, listed);
+    } catch (const sl::IntakeError& e) {
+        throw sl::IntakeError(sl::web::asPicked(e.what()));
+    }
+    c.shown = sl::web::shownAsPicked(picked, submission.folder);
+    for (std::string& note : submission.notes) note = sl::web::asPicked(note);
+    work.overlay = c.snapshot;
+    work.files = submission.files;
+    work.notes = submission.notes;
+    work.hash = submission.hash;
+    return true;
+}
+
+// The plan `check --stage STAGE` (or `--all`) grades over the folder last picked (a refusal is
+// its UsageError).
 sl::GradingPlan planFor(const std::string& what, std::uint64_t seed, sl::StudentWork& work,
                         std::vector<std::string>& notes) {
     sl::StageCheckArgs args;
@@ -83,35 +118,48 @@ sl::GradingPlan planFor(const std::string& what, std::uint64_t seed, sl::Student
         stages.push_back(r.stage);
     }
     if (requests.empty()) throw sl::UsageError("stage " + what + ": nothing the browser can check");
-    PageCheck& c = pageCheck();
-    const sl::web::PickedFolder picked = sl::web::pickedFolder();
     sl::Submission submission;
-    work.name = "shipped shaders";
-    if (!picked.path.empty()) {
-        if (!c.snapshot.empty()) std::filesystem::remove_all(c.snapshot);
-        c.snapshot = "/student/check-" + std::to_string(++c.snapshots);
-        std::filesystem::create_directories(c.snapshot);
-        try {
-            submission =
-                sl::takeSubmission(picked.path, c.snapshot, sl::shippedTrees().both, stages);
-        } catch (const sl::IntakeError& e) {
-            throw sl::UsageError(sl::web::asPicked(e.what()));
-        }
-        c.shown = sl::web::shownAsPicked(picked, submission.folder);
-        for (std::string& note : submission.notes) notes.push_back(note = sl::web::asPicked(note));
-        for (sl::RenderRequest& r : requests) r.overlay = c.snapshot;
-        work.name = picked.name;
-        work.overlay = c.snapshot;
-        work.files = submission.files;
-        work.notes = submission.notes;
-        work.hash = submission.hash;
+    bool picked = false;
+    try {
+        picked = takePicked(stages, {}, work, submission);
+    } catch (const sl::IntakeError& e) {
+        throw sl::UsageError(e.what());
     }
-    sl::GradingPlan plan =
-        sl::defaultPlan(args, requests, picked.path.empty() ? nullptr : &submission);
-    // A row that does not pass keeps its render, truth and difference for the page to show.
-    for (sl::StagePlan& st : plan.stages)
-        for (sl::RowPlan& row : st.rows) row.check.pictures = sl::RowPictures::AllUnlessPassing;
-    return plan;
+    notes.insert(notes.end(), work.notes.begin(), work.notes.end());
+    for (sl::RenderRequest& r : requests) r.overlay = work.overlay;
+    return sl::defaultPlan(args, requests, picked ? &submission : nullptr);
+}
+
+// The plan `check --assignment A.json --shaders FOLDER` grades: the assignment's due stages, its
+// points and views (the file the course publishes beside the page, kAssignment). A stage due in
+// the legacy tree is the native program's: left out, and the notes say so. A folder that replaces
+// no shipped file is every stage MISSING, as natively.
+sl::GradingPlan assignmentPlan(std::uint64_t seed, sl::StudentWork& work,
+                               std::vector<std::string>& notes) {
+    sl::Assignment a = sl::loadAssignment(kAssignment);
+    for (sl::AssignmentStage& st : a.stages) {
+        const sl::StageInfo* info = sl::findStage(st.stage);
+        if (!st.due || (st.tree != "legacy" && !(info && info->legacyOnly))) continue;
+        st.due = false;
+        char points[32];
+        std::snprintf(points, sizeof points, "%g", st.points);
+        notes.push_back("stage " + st.stage + " (" + st.tree + " tree, " + points +
+                        " points) is checked by the native program only: not in this total");
+    }
+    if (a.due().empty()) throw sl::UsageError(a.name + ": nothing due that the browser can check");
+    std::set<std::string> listed;
+    for (const sl::AssignmentStage* st : a.due()) listed.insert(st->files.begin(), st->files.end());
+    sl::Submission submission;
+    try {
+        if (!takePicked(sl::dueStageNames(a), listed, work, submission))
+            throw sl::UsageError("check by " + a.name + ": pick your folder first (as --shaders)");
+    } catch (const sl::IntakeError& e) {
+        work.error = e.what();  // every due stage MISSING, as `check --assignment` grades it
+    }
+    for (const std::string& note : sl::unlistedFileNotes(a, work)) work.notes.push_back(note);
+    notes.insert(notes.end(), work.notes.begin(), work.notes.end());
+    if (!work.error.empty()) notes.push_back(work.error);
+    return sl::planStudent(a, work, seed);
 }
 
 }  // namespace
@@ -128,7 +176,12 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_check_begin(const char* what, const char
         std::uint64_t drawn = *seed ? std::stoull(seed) : sl::drawSeed();
         sl::StudentWork work;
         std::vector<std::string> notes;
-        sl::GradingPlan plan = planFor(what, drawn, work, notes);
+        c.namesRelative = std::string(what) == "assignment";
+        sl::GradingPlan plan = c.namesRelative ? assignmentPlan(drawn, work, notes)
+                                               : planFor(what, drawn, work, notes);
+        // A row that does not pass keeps its render, truth and difference for the page to show.
+        for (sl::StagePlan& st : plan.stages)
+            for (sl::RowPlan& row : st.rows) row.check.pictures = sl::RowPictures::AllUnlessPassing;
         std::filesystem::remove_all(kPictures);
         std::filesystem::create_directories(kPictures);
         auto row = std::make_shared<std::size_t>(0);
@@ -151,7 +204,10 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_check_step() {
     PageCheck& c = pageCheck();
     if (!c.steps) return handOver({{"error", "no check running"}});
     nlohmann::json made = nlohmann::json::array();
-    if (!c.snapshot.empty()) sl::showFolderAs(c.snapshot, c.shown);  // messages name its files
+    if (c.namesRelative)
+        sl::showFolderAs("", "");
+    else if (!c.snapshot.empty())
+        sl::showFolderAs(c.snapshot, c.shown);  // messages name its files
     for (const sl::StageRecord& st : c.steps->step()) made.push_back(stageJson(st));
     sl::web::nameDrawnFolder();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);  // the page's own picture is the canvas's

@@ -70,11 +70,15 @@ def compare(name, page, native, folder):
     return failures, worst
 
 
-def native_check(shadowlab, what, folder, seed, report):
-    """Native `check --report`: (its report, seconds, its last stderr line); the report is None
-    where it refused the run (exit 2: a folder the intake refuses)."""
-    command = [shadowlab, "check", "--glsl", "core", "--seed", str(seed), "--report", str(report)]
-    command += ["--all"] if what == "all" else ["--stage", what]
+def native_check(shadowlab, what, folder, seed, report, assignment=None):
+    """Native `check --report` (`--assignment` where `what` is "assignment"): (its report,
+    seconds, its last stderr line); the report is None where it refused the run (exit 2: a folder
+    the intake refuses)."""
+    command = [shadowlab, "check", "--seed", str(seed), "--report", str(report)]
+    if what == "assignment":
+        command += ["--assignment", str(assignment)]
+    else:
+        command += ["--glsl", "core"] + (["--all"] if what == "all" else ["--stage", what])
     if folder:
         command += ["--shaders", str(folder)]
     report.unlink(missing_ok=True)
@@ -92,7 +96,7 @@ def check_case(driver, args, out, name, what, folder):
         driver.execute_script("shadowlab.takeFolder('', '')")
     got = driver.execute_async_script(RUN, what, str(args.seed))
     native, native_s, said = native_check(args.shadowlab, what, folder, args.seed,
-                                          out / f"native_report_{name}.json")
+                                          out / f"native_report_{name}.json", args.assignment)
     if native is None:  # refused: the page must refuse with native's reason
         reason = said.split(f"{folder}: ", 1)[-1]
         same = bool(got.get("error")) and got["error"].endswith(reason)
@@ -104,6 +108,8 @@ def check_case(driver, args, out, name, what, folder):
     page = json.loads(got["report"])
     (out / f"page_report_{name}.json").write_text(got["report"])
     failures, worst = compare(name, page, native, folder)
+    if abs(page["score"] - native["score"]) > 1e-6:
+        failures.append(f"{name}: the page scores {page['score']}, native {native['score']}")
     shot = out / "page_check.png"  # the page after a check with a failing row (docs/web.md)
     if not shot.exists() and '"verdict": "FAIL"' in got["report"] and driver.execute_script(
             "const p = document.querySelector('#checkRows .picture');"
@@ -170,6 +176,8 @@ def main():
                          "last seed whose drawn figures it ships)")
     ap.add_argument("--students", default="", help="only the corpus cases this regex finds")
     ap.add_argument("--no-ours", action="store_true", help="skip the check of our shaders")
+    ap.add_argument("--assignment", help="check everything due by this assignment file (as "
+                    "`check --assignment`): the hand-ins of its due stages, against native's")
     ap.add_argument("--student-edition", action="store_true",
                     help="the site is the student edition's: no solution in it, the starter 0")
     ap.add_argument("--per-verdict", type=int, default=0,
@@ -193,7 +201,16 @@ def main():
             "return shadowlab.stages.filter(s => !s.nativeOnly).map(s => s.id)"))
         if args.student_edition:
             failures += student_edition(driver, args, out)
-        cases = [] if args.no_ours else [("ours_all", "all", None)]
+        what = "all"
+        if args.assignment:  # as the page takes the file the course publishes beside it
+            text = pathlib.Path(args.assignment).read_text()
+            driver.execute_script("shadowlab.takeAssignment(new TextEncoder().encode("
+                                  "arguments[0]), arguments[1])", text, pathlib.Path(args.assignment).name)
+            due = {st["stage"] for st in json.loads(text)["stages"] if st.get("due", True)}
+            runs &= due
+            what = "assignment"
+        ours = pathlib.Path(__file__).resolve().parents[2] / "shaders_core" if args.assignment else None
+        cases = [] if args.no_ours else [("ours_" + what, what, ours)]
         corpus = pathlib.Path(__file__).resolve().parents[1] / "students"
         taken = []  # (stage, verdict) of the cases taken
         for folder in sorted(p for p in corpus.iterdir() if (p / "case.json").is_file()):
@@ -203,7 +220,8 @@ def main():
                     args.students and re.search(args.students, folder.name) and \
                     (not args.per_verdict or taken.count(kind) < args.per_verdict):
                 taken.append(kind)
-                cases.append((folder.name, case["stage"], folder / case.get("submission", "")))
+                cases.append((folder.name, what if args.assignment else case["stage"],
+                              folder / case.get("submission", "")))
         for name, what, folder in cases:
             f, result = check_case(driver, args, out, name, what, folder)
             failures += f
