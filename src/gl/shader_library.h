@@ -101,6 +101,10 @@ class ShaderLibrary {
         mutable std::map<const void*, std::vector<std::string>> findings;
     };
     Entry build(const std::string& stage, const std::string& pass) const;
+    // Watches the uniforms our version of the pass declares that the student's own (changed)
+    // pass files drop (gl/shader_notes.cpp).
+    void watchOurUniforms(Program& program, const std::string& stage, const std::string& pass,
+                          const std::string& vertFile, const std::string& fragFile) const;
     // Expands the pass's two files into `vert` and `frag` and checks them by the standard.
     ProgramSource checkedSource(const std::string& stage, const std::string& pass, GlslSource& vert,
                                 GlslSource& frag) const;
