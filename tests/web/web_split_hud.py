@@ -10,6 +10,7 @@ In headless Chromium (SwiftShader's WebGL 2) the page is driven with the window'
   settings at the half's size (the field of view widened as the window widens it), as the
   window's own test holds its halves (tests/render/test_window_projector.cpp), and the two halves
   must differ from each other as the two native renders do.
+Saves the page with each split (page_split_STAGE.png: docs/images/web/ holds bias's).
 Exit 77 (ctest: skipped) as web_browser.py does."""
 import base64
 import concurrent.futures
@@ -194,6 +195,7 @@ def split_case(driver, body, args, out, stage_info, must_differ):
                         f"{native_share:.2%}")
     pathlib.Path(out, f"web_split_{stage}.png").write_bytes(base64.b64decode(
         web_browser.canvas_url(driver).split(",", 1)[1]))
+    driver.save_screenshot(str(out / f"page_split_{stage}.png"))  # with its HUD (docs/web.md)
     body.send_keys("s")  # split off again
     return failures
 
