@@ -14,13 +14,12 @@
 
 #include "grade/intake.h"
 #include "io/files.h"
-#include "lecture/hud_text.h"
 #include "lecture/lessons.h"
 #include "math/orbit.h"
-#include "platform/framebuffer_target.h"
 #include "platform/webgl_context.h"
 #include "stages/registry.h"
 #include "stages/request.h"
+#include "web/split_view.h"
 #include "web/taken_folder.h"
 
 namespace {
@@ -83,40 +82,6 @@ std::vector<sl::SplitHalf> splitHalves() {
     return sl::splitHalves(p.renderer->params(), stageLessons(p.request.stage), shownLesson());
 }
 
-// The split view as the window draws it (window/session_draw.cpp): each half with the
-// renderer's camera and light and its own settings, at the half's size (the field of view
-// widened so the scene's width fits), blitted side by side into the canvas.
-void drawHalves(const std::vector<sl::SplitHalf>& halves) {
-    sl::Renderer& r = *page().renderer;
-    const int width = page().request.width, height = page().request.height;
-    struct Restore {  // the values and camera on screen, whatever a half throws
-        sl::Renderer& r;
-        const sl::ParamSet params;
-        const sl::Camera camera;
-        ~Restore() {
-            r.params() = params;
-            r.camera = camera;
-            r.sceneChanged();
-        }
-    } restore{r, r.params(), r.camera};
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glClearColor(0, 0, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    for (std::size_t k = 0; k < halves.size() && k < 2; ++k) {
-        const int x = int(k) * (width / 2), w = k == 0 ? width / 2 : width - width / 2;
-        sl::FramebufferTarget target = sl::createFramebufferTarget(w, height, "a split half");
-        sl::applySets(r.params(), halves[k].sets);
-        r.sceneChanged();  // another shadow map: no cached one carries over
-        r.camera.fovyDegrees =
-            sl::fovyFittingWidth(restore.camera.fovyDegrees, float(w) / float(height));
-        r.render(target.fbo.id(), w, height);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo.id());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        glBlitFramebuffer(0, 0, w, height, x, 0, x + w, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
-}
-
 // Draws the current stage into the canvas (both halves in the split view); "" or what went
 // wrong (a GL error names its call).
 std::string drawFrame() {
@@ -126,7 +91,7 @@ std::string drawFrame() {
     const auto halves = p.split ? splitHalves() : std::vector<sl::SplitHalf>{};
     if (halves.empty()) p.split = false;
     if (p.split)
-        drawHalves(halves);
+        sl::web::drawSplitHalves(*p.renderer, p.request.width, p.request.height, halves);
     else
         p.renderer->render(0, p.request.width, p.request.height);
     GLenum error = glGetError();
@@ -269,40 +234,18 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_split() {
 // The split view's halves on screen, "NAME\tNAME=VALUE,NAME=VALUE" a half a line ("" when the
 // split is off): what each half draws with (the browser test renders the same natively).
 EMSCRIPTEN_KEEPALIVE const char* sl_web_split_sets() {
-    std::string text;
-    if (page().split)
-        for (const sl::SplitHalf& half : splitHalves()) {
-            text += half.name + "\t";
-            for (std::size_t k = 0; k < half.sets.size(); ++k)
-                text += (k ? "," : "") + half.sets[k].first + "=" + half.sets[k].second;
-            text += "\n";
-        }
-    return handOver(text);
+    return handOver(page().split ? sl::web::splitSetsText(splitHalves()) : "");
 }
 
-// The window's compact HUD for the picture on screen, from the window's own words
-// (lecture/hud_text.h, lecture/lessons.h), one a line, each "PLACE\tTEXT": "top" the title
-// (with parameter `selected`, the page's Tab) and the lesson line, "left" and "right" the split
-// view's labels, "bottom" the view's legend.
+// The window's compact HUD for the picture on screen (web/split_view.h: "PLACE\tTEXT" a line),
+// with parameter `selected` (the page's Tab).
 EMSCRIPTEN_KEEPALIVE const char* sl_web_hud(int selected) {
     Page& p = page();
     if (!p.renderer) return handOver("");
-    sl::Renderer& r = *p.renderer;
-    std::string text = "top\t" +
-                       sl::compactTitle(r, r.params(), std::size_t(std::max(0, selected)),
-                                        {p.overlay.empty() ? "" : p.overlayShown}) +
-                       "\n";
-    const std::string lesson = sl::lessonLine(stageLessons(p.request.stage), shownLesson());
-    if (!lesson.empty()) text += "top\t" + lesson + "\n";
-    if (p.split) {
-        const auto halves = splitHalves();
-        for (std::size_t k = 0; k < halves.size() && k < 2; ++k)
-            text +=
-                std::string(k == 0 ? "left" : "right") + "\t" + sl::splitLabel(k, halves[k]) + "\n";
-    }
-    const std::string legend = sl::viewLegend(r.stage(), r.view);
-    if (!legend.empty()) text += "bottom\t" + legend + "\n";
-    return handOver(text);
+    return handOver(sl::web::hudText(*p.renderer, std::size_t(std::max(0, selected)),
+                                     {p.overlay.empty() ? "" : p.overlayShown},
+                                     sl::lessonLine(stageLessons(p.request.stage), shownLesson()),
+                                     p.split ? splitHalves() : std::vector<sl::SplitHalf>{}));
 }
 
 // The window's 'v': the stage's next view (final, shadow map, light, ...), as the stage lists;
