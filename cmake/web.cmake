@@ -46,16 +46,16 @@ set(SPIRV_CROSS_SKIP_INSTALL ON CACHE BOOL "" FORCE)
 add_subdirectory(${SL_WEB_GLSLANG_SOURCE} glslang EXCLUDE_FROM_ALL)
 add_subdirectory(${SL_WEB_SPIRV_CROSS_SOURCE} spirv-cross EXCLUDE_FROM_ALL)
 
-# What runs in the browser: the lecture (scene, renderer, stages, lessons) and `check` in the
-# page (the reference tracer, the figures, the plan, judge and record: grade/check_steps.h; an
-# assignment's plan: course/assignment.h, course/student_grade.h), drawn
+# What runs in the browser: the lecture (scene, renderer, stages, lecture/: lessons, split, HUD)
+# and `check` in the page (the reference tracer, the figures, the plan, judge and record:
+# grade/check_steps.h; an assignment's plan: course/assignment.h, course/student_grade.h), drawn
 # into the page's WebGL context (platform/webgl_*); none of the desktop's sandbox, libpng (stb
 # writes the page's pictures: io/png_web.cpp), GL loader or OSMesa/EGL/X11 contexts.
 file(GLOB SL_WEB_SOURCES CONFIGURE_DEPENDS
      src/io/*.cpp src/math/*.cpp src/scene/*.cpp src/gl/*.cpp src/render/*.cpp src/stages/*.cpp
      src/reference/*.cpp src/metrics/*.cpp src/eval/evaluator.cpp
      src/platform/webgl_context.cpp src/platform/webgl_headless.cpp src/platform/headless.cpp
-     src/platform/framebuffer_target.cpp src/window/lessons.cpp
+     src/platform/framebuffer_target.cpp src/lecture/*.cpp
      src/grade/intake.cpp src/grade/check_run.cpp src/grade/check_steps.cpp src/grade/check_plan.cpp
      src/grade/judge.cpp src/grade/status.cpp src/grade/bounds.cpp src/grade/record.cpp
      src/grade/plan.cpp src/grade/reports.cpp src/web/*.cpp

@@ -45,3 +45,12 @@ add_test(NAME web_student_edition
                  --students "^margin_(.*)$" --per-verdict 1 --no-ours)
 set_tests_properties(web_student_edition PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 300
                      RUN_SERIAL TRUE)
+# The page does what the window does (tests/web/web_split_hud.py): the HUD lines over the page's
+# picture are the native window's (run under Xvfb with the same keys), and `s` splits the canvas
+# into the halves the window draws, each the native render of its settings. 10 to 16 s here.
+add_test(NAME web_split_hud
+         COMMAND ${SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/web/web_split_hud.py
+                 --site ${SL_WEB_SITE} --shadowlab $<TARGET_FILE:shadowlab>
+                 --out ${CMAKE_BINARY_DIR}/web_split_hud)
+set_tests_properties(web_split_hud PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 300
+                     RUN_SERIAL TRUE)

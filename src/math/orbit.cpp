@@ -77,4 +77,10 @@ Camera zoomCamera(const Camera& c, float factor) {
     return out;
 }
 
+float fovyFittingWidth(float fovyDegrees, float aspect) {
+    if (!(aspect < kFramedAspect)) return fovyDegrees;
+    const float half = glm::radians(fovyDegrees) / 2;
+    return std::min(150.0f, glm::degrees(2 * std::atan(std::tan(half) * kFramedAspect / aspect)));
+}
+
 }  // namespace sl

@@ -1,5 +1,6 @@
 // The window's camera and light motion as plain functions: orbiting the camera around its
-// target without going under the floor, and turning the light at a speed in radians per second.
+// target without going under the floor, turning the light at a speed in radians per second, and
+// the field of view of a picture narrower than the scenes were framed for.
 #pragma once
 
 #include "scene/scene.h"
@@ -20,6 +21,12 @@ Camera orbitCamera(const Camera& c, float yaw, float pitch, float floorY, float 
 // Moves the eye along its line to `at`, its distance times `factor` (the mouse wheel), kept
 // between twice the near plane and half the far plane so the scene never leaves the frustum.
 Camera zoomCamera(const Camera& c, float factor);
+
+// The scenes' cameras are framed for 4:3 (the default 640x480). A picture narrower than that (a
+// split half, a tall window) gets a vertical field of view widened so that the scene's width
+// still fits, at most 150 degrees; a wider one keeps `fovyDegrees`. The window and the page.
+constexpr float kFramedAspect = 4.0f / 3.0f;
+float fovyFittingWidth(float fovyDegrees, float aspect);
 
 // The light on its circle around the y axis after `seconds` at `radiansPerSecond`, starting
 // from `start` (height and radius kept).

@@ -14,19 +14,21 @@
 
 #include "grade/intake.h"
 #include "io/files.h"
+#include "lecture/lessons.h"
 #include "math/orbit.h"
 #include "platform/webgl_context.h"
 #include "stages/registry.h"
 #include "stages/request.h"
+#include "web/split_view.h"
 #include "web/taken_folder.h"
-#include "window/window_args.h"
 
 namespace {
 
 struct Page {
     sl::RenderRequest request;
     std::unique_ptr<sl::Renderer> renderer;
-    int lesson = -1;           // the current stage's lesson on screen (-1: the defaults)
+    std::size_t lesson = 0;    // the stage's lesson `n` chose last (lecture/lessons.h)
+    bool split = false;        // `s`: the split view's two halves side by side
     std::string overlay;       // the student's snapshot (intake), laid over ours; "" for none
     int snapshots = 0;         // snapshots taken: each in a fresh folder
     std::string snapshotDir;   // the folder holding `overlay`
@@ -47,28 +49,11 @@ const char* handOver(std::string text) {
     return page().text.c_str();
 }
 
-// Draws the current stage into the canvas; "" or what went wrong (a GL error names its call).
-std::string drawFrame() {
-    Page& p = page();
-    if (!p.renderer) return "no stage selected";
-    p.renderer->render(0, p.request.width, p.request.height);
-    GLenum error = glGetError();
-    if (error == GL_NO_ERROR) return "";
-    char code[16];
-    std::snprintf(code, sizeof code, "0x%04X", error);
-    return std::string("WebGL error ") + code + " in the frame";
-}
-
-// The stage's lessons the core tree runs, in the window's order (window/lessons.cpp: the
-// entries of expectations.json, then the lecture figures of slides_examples/).
-std::vector<const sl::WindowLesson*> stageLessons(const std::string& stage) {
+// The stage's lessons the core tree runs, in the window's order (lecture/lessons.h: the entries
+// of expectations.json, then the lecture figures of slides_examples/), and the one `n` chose.
+sl::LessonChoice stageLessons(const std::string& stage) {
     static const std::vector<sl::WindowLesson> all = sl::windowLessons();
-    std::vector<const sl::WindowLesson*> found;
-    for (const auto& l : all)
-        if (l.stage == stage &&
-            (l.trees.empty() || std::find(l.trees.begin(), l.trees.end(), "core") != l.trees.end()))
-            found.push_back(&l);
-    return found;
+    return {sl::lessonsOf(all, stage, "core"), page().lesson};
 }
 
 // A request for `stage` at the canvas's size over the student's shaders, the rest defaults.
@@ -79,6 +64,41 @@ sl::RenderRequest baseRequest(const std::string& stage) {
     request.stage = stage;
     request.overlay = page().overlay;
     return request;
+}
+
+// The lesson whose settings are on screen (-1: none), as the window's HUD finds it.
+int shownLesson() {
+    Page& p = page();
+    if (!p.renderer) return -1;
+    const std::string stageScene = sl::effectiveScene(baseRequest(p.request.stage));
+    return sl::matchingLesson(
+        stageLessons(p.request.stage),
+        {&p.renderer->params(), sl::effectiveScene(p.request), stageScene, p.renderer->view});
+}
+
+std::vector<sl::SplitHalf> splitHalves() {
+    Page& p = page();
+    if (!p.renderer) return {};
+    return sl::splitHalves(p.renderer->params(), stageLessons(p.request.stage), shownLesson());
+}
+
+// Draws the current stage into the canvas (both halves in the split view); "" or what went
+// wrong (a GL error names its call).
+std::string drawFrame() {
+    Page& p = page();
+    if (!p.renderer) return "no stage selected";
+    // Another stage, or its only lesson: no pair to split, as in the window.
+    const auto halves = p.split ? splitHalves() : std::vector<sl::SplitHalf>{};
+    if (halves.empty()) p.split = false;
+    if (p.split)
+        sl::web::drawSplitHalves(*p.renderer, p.request.width, p.request.height, halves);
+    else
+        p.renderer->render(0, p.request.width, p.request.height);
+    GLenum error = glGetError();
+    if (error == GL_NO_ERROR) return "";
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04X", error);
+    return std::string("WebGL error ") + code + " in the frame";
 }
 
 // `text` with the page's copy of a student's folder named as the student picked it
@@ -166,42 +186,66 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_select(const char* id) {
                         "' needs desktop OpenGL's fixed function or GLSL 1.20, which WebGL lacks: "
                         "run the native program (shadowlab window --stage " +
                         info->id + ")");
-    p.lesson = -1;  // the stage's defaults: scene, camera, parameters, view
+    p.lesson = 0;  // the stage's defaults: scene, camera, parameters, view
     return handOver(show(baseRequest(id)));
 }
 
-// The window's 'n': the stage's next lesson with its settings (scene, values, view) applied,
-// after the last one the defaults again.
+// The window's 'n' (lecture/lessons.h, as the window steps): the lesson after the one on
+// screen with its settings (scene, values, view) applied, after the last the first.
 EMSCRIPTEN_KEEPALIVE const char* sl_web_next_lesson() {
     Page& p = page();
-    auto lessons = stageLessons(p.request.stage);
-    if (lessons.empty()) return handOver("");
-    p.lesson = p.lesson + 1 < static_cast<int>(lessons.size()) ? p.lesson + 1 : -1;
+    sl::LessonChoice lessons = stageLessons(p.request.stage);
+    if (lessons.list.empty()) return handOver("n: this stage has no lessons");
+    const std::size_t next = sl::nextLessonIndex(lessons, shownLesson());
+    const sl::WindowLesson& l = *lessons.list[next];
     sl::RenderRequest request = baseRequest(p.request.stage);
-    if (p.lesson >= 0) {
-        const sl::WindowLesson& l = *lessons[static_cast<std::size_t>(p.lesson)];
-        if (!l.scene.empty()) {
-            request.scene = l.scene;
-            request.sceneGiven = true;
-        }
-        request.sets = l.sets;
-        request.view = l.view;
+    if (!l.scene.empty()) {
+        request.scene = l.scene;
+        request.sceneGiven = true;
     }
-    int lesson = p.lesson;
-    std::string message = show(request);
-    p.lesson = lesson;
-    return handOver(message);
+    request.sets = l.sets;
+    request.view = l.view;
+    p.lesson = next;
+    return handOver(show(request));
 }
 
-// "lesson K/N: NAME\nLOOK" of the lesson on screen, or how many the stage has.
+// The HUD's lesson line (lecture/lessons.h): the lesson on screen and what to look for, or that
+// the settings are none of the stage's lessons; "" for a stage without lessons.
 EMSCRIPTEN_KEEPALIVE const char* sl_web_lesson_text() {
+    return handOver(sl::lessonLine(stageLessons(page().request.stage), shownLesson()));
+}
+
+// The window's 's': the split view on or off, and a redraw; "" or why not (no pair to show).
+EMSCRIPTEN_KEEPALIVE const char* sl_web_split() {
     Page& p = page();
-    auto lessons = stageLessons(p.request.stage);
-    if (p.lesson < 0)
-        return handOver(std::to_string(lessons.size()) + " lesson(s): n steps through them");
-    const sl::WindowLesson& l = *lessons[static_cast<std::size_t>(p.lesson)];
-    return handOver("lesson " + std::to_string(p.lesson + 1) + "/" +
-                    std::to_string(lessons.size()) + ": " + l.name + "\n" + l.look);
+    if (!p.renderer) return handOver("no stage selected");
+    p.split = !p.split;
+    if (p.split && splitHalves().empty()) {
+        p.split = false;
+        return handOver("s: this stage has no second lesson in this scene to show beside it");
+    }
+    try {
+        return handOver(drawFrame());
+    } catch (const std::exception& e) {
+        return handOver(e.what());
+    }
+}
+
+// The split view's halves on screen, "NAME\tNAME=VALUE,NAME=VALUE" a half a line ("" when the
+// split is off): what each half draws with (the browser test renders the same natively).
+EMSCRIPTEN_KEEPALIVE const char* sl_web_split_sets() {
+    return handOver(page().split ? sl::web::splitSetsText(splitHalves()) : "");
+}
+
+// The window's compact HUD for the picture on screen (web/split_view.h: "PLACE\tTEXT" a line),
+// with parameter `selected` (the page's Tab).
+EMSCRIPTEN_KEEPALIVE const char* sl_web_hud(int selected) {
+    Page& p = page();
+    if (!p.renderer) return handOver("");
+    return handOver(sl::web::hudText(*p.renderer, std::size_t(std::max(0, selected)),
+                                     {p.overlay.empty() ? "" : p.overlayShown},
+                                     sl::lessonLine(stageLessons(p.request.stage), shownLesson()),
+                                     p.split ? splitHalves() : std::vector<sl::SplitHalf>{}));
 }
 
 // The window's 'v': the stage's next view (final, shadow map, light, ...), as the stage lists;

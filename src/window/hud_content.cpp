@@ -3,6 +3,7 @@
 // message; full (`i`): everything, a page at a time; the keys (`h`) in the picture's place.
 #include <sstream>
 
+#include "lecture/hud_text.h"
 #include "window/session.h"
 #include "window/window_text.h"
 
@@ -20,23 +21,13 @@ const glm::vec4 kErrorPanel(0.25f, 0.02f, 0.02f, 0.92f);
 const char* const WindowSession::kTryingLine =
     "trying your shaders in a bounded worker first: a loop or a crash cannot freeze this window";
 
+// The title line and the marks are lecture/hud_text.h's (the page shows the same).
 std::string WindowSession::compactTitle(const ParamSet& values, std::size_t selected) const {
-    Renderer& r = renderer();
-    std::string line = title() + " | " + treeName(r.shaders().tree());
-    if (!request_.overlay.empty())
-        line += r.shaders().overlay().empty()
-                    ? " (your folder is " + std::string(treeName(request_.tree)) + ")"
-                    : ", " + request_.overlay + " over ours";
-    const auto& specs = values.specs();
-    if (!specs.empty()) {
-        const std::string& name = specs[selected % specs.size()].name;
-        line += " | " + name + " = " + values.text(name) + ignoredMark(name);
-    }
-    return line + " | h: keys";
+    return sl::compactTitle(renderer(), values, selected, {request_.overlay, request_.tree});
 }
 
 std::string WindowSession::title() const {
-    return std::to_string(renderer().stageIndex()) + " " + renderer().stage().id;
+    return stageTitle(renderer());
 }
 
 std::string WindowSession::treeText() const {
@@ -53,19 +44,8 @@ std::string WindowSession::folderText() const {
            " tree: ours here";
 }
 
-// A parameter's uniform is its name in camelCase (margin-kind: marginKind); a student's program
-// that does not read it gets the parameter marked, so a change that does nothing says why.
 std::string WindowSession::ignoredMark(const std::string& param) const {
-    std::string uniform;
-    for (std::size_t i = 0; i < param.size(); ++i)
-        if (param[i] == '-' && i + 1 < param.size())
-            uniform += char(std::toupper(static_cast<unsigned char>(param[++i])));
-        else
-            uniform += param[i];
-    Renderer& r = renderer();
-    return r.shaders().ignoredUniforms(r.stage().id).count(uniform)
-               ? " (your shader does not read it)"
-               : "";
+    return sl::ignoredMark(renderer(), param);
 }
 
 // What the values on screen (or the split view's halves) wait for: "" when they drew. It names
@@ -175,7 +155,7 @@ std::vector<HudBlock> WindowSession::hudBlocks() const {
             b.bottom = true;
             b.column = int(k);
             b.half = true;
-            b.lines = {{(k == 0 ? "left: " : "right: ") + halves[k].name, kWhite}};
+            b.lines = {{splitLabel(k, halves[k]), kWhite}};
             b.keepLines = 1000;  // whole: the band at the bottom keeps room for it
             blocks.push_back(b);
         }

@@ -141,18 +141,6 @@ bool WindowSession::selectStage(std::size_t index, GlslTree sessionTree) {
     return true;
 }
 
-Sets WindowSession::nonDefault(const ParamSet& params) {
-    Sets sets;
-    for (const ParamSpec& p : params.specs())
-        if (params.text(p.name) != p.defaultText()) sets.emplace_back(p.name, params.text(p.name));
-    return sets;
-}
-
-void WindowSession::applySets(ParamSet& params, const Sets& sets) {
-    for (const ParamSpec& p : params.specs()) params.set(p.name, p.defaultText());
-    for (const auto& [name, value] : sets) params.set(name, value);
-}
-
 Watchdog::OnScreen WindowSession::onScreen() const {
     Watchdog::OnScreen s;
     s.tree = shownTree();
@@ -160,7 +148,7 @@ Watchdog::OnScreen WindowSession::onScreen() const {
     s.scene = scene_;
     s.sets.push_back(nonDefault(renderer().params()));
     if (split_)
-        for (const Half& h : splitHalves()) {
+        for (const SplitHalf& h : splitHalves()) {
             ParamSet half = renderer().params();
             applySets(half, h.sets);
             s.sets.push_back(nonDefault(half));

@@ -85,8 +85,6 @@ class WindowSession {
     std::string refusalText(const Watchdog::Event& e) const;  // values refused: one HUD line
     std::string filesGone() const;  // the student files this batch stopped drawing from
     bool handleTrialEvents();       // true when something changed
-    static Sets nonDefault(const ParamSet& params);
-    static void applySets(ParamSet& params, const Sets& sets);  // defaults, then these
     static bool offers(const StageInfo& stage, ViewMode view);
     std::string stageScene(const StageInfo& stage);  // its scene, whatever the lesson
 
@@ -99,22 +97,17 @@ class WindowSession {
     Image readPixels() const;
 
     // session_lessons.cpp
-    std::vector<const WindowLesson*> lessons() const;
+    // The stage's lessons in the tree on screen, and the one `n` chose last.
+    LessonChoice lessons() const;
     // The lesson whose settings (values, scene, view) are those on screen: -1 if none.
     int matchingLesson() const;
     void nextLesson();
     std::string lessonLine() const;
-    std::string lessonText(std::size_t k, std::size_t of) const;  // lesson k of `of`, 0-based
-    static std::string noLessonText(std::size_t lessons);         // the settings are none
     // "lesson 2/4 of margin" for values that are a lesson's, else "margin (the values)".
     std::string valuesName(const Sets& sets) const;
-    struct Half {
-        std::string name;
-        Sets sets;
-    };
     // The split view's two halves: the lesson on screen and the next one in the same scene
     // (its failure and its fix), or the mirror's texture and stencil methods. Empty: no pair.
-    std::vector<Half> splitHalves() const;
+    std::vector<SplitHalf> splitHalves() const;
     const WindowLesson* topViewLesson() const;  // the lesson on screen, if it brings a top view
 
     // session_draw.cpp

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "io/png.h"
+#include "lecture/hud_text.h"
 #include "math/mirror_topview.h"
 #include "math/orbit.h"
 #include "window/session.h"
@@ -17,7 +18,6 @@ namespace sl {
 namespace {
 
 constexpr float kLightRadiansPerSecond = 0.6f;
-constexpr float kFramedAspect = 4.0f / 3.0f;
 constexpr float kFullPanelShare = 0.55f;  // the full HUD's two bands: the picture keeps 45 %
 constexpr float kFullBottom = 0.15f;
 constexpr HudRoom kCompactRoom{0.45f, 0.20f};  // the compact HUD's bands at most
@@ -70,7 +70,7 @@ std::pair<int, int> WindowSession::reservedBands(int width, int height) const {
         return n > 0 ? n * Hud::kLineHeight + 2 * Hud::kPad - 3 + kHudMargin : 0;
     };
     Renderer& r = renderer();
-    const auto list = lessons();
+    const auto list = lessons().list;
     std::set<ViewMode> views = {r.view};  // the one on screen and those its lessons show
     for (const WindowLesson* l : list) views.insert(l->view);
     int legend = 0;
@@ -80,8 +80,8 @@ std::pair<int, int> WindowSession::reservedBands(int width, int height) const {
     float bottom = legend > 0 ? kHudMargin + panel(legend) : 0;
     if (split_) {  // each half's label, wrapped to its half, under the legend's panel
         int label = 0;
-        for (const Half& half : splitHalves())
-            label = std::max(label, lines("right: " + half.name, w / 2 - inside));
+        for (const SplitHalf& half : splitHalves())
+            label = std::max(label, lines(splitLabel(1, half), w / 2 - inside));
         bottom += (legend > 0 ? 0 : kHudMargin) + panel(label);
     }
     bottom = std::min(bottom, h * room.bottom);
@@ -97,7 +97,9 @@ std::pair<int, int> WindowSession::reservedBands(int width, int height) const {
             if (k > 0) applySets(values, list[k - 1]->sets);
             for (std::size_t p = 0; p < params; ++p)
                 title = std::max(title, lines(compactTitle(values, p), w - inside));
-            if (k > 0) lesson = std::max(lesson, lines(lessonText(k - 1, list.size()), w - inside));
+            if (k > 0)
+                lesson = std::max(lesson,
+                                  lines(lessonText(*list[k - 1], k - 1, list.size()), w - inside));
         }
         if (!list.empty())  // the settings of no lesson
             lesson = std::max(lesson, lines(noLessonText(list.size()), w - inside));
@@ -267,16 +269,9 @@ std::string WindowSession::drawStageIn(const Rect& area, const Sets& sets, bool 
             applySets(r.params(), use);
             r.sceneChanged();  // another shadow map: no cached one carries over
         }
-        // A picture narrower than the scenes' cameras were framed for (4:3, the default
-        // 640x480: a split half, a tall window) widens its field of view so that the scene's
-        // width still fits.
-        const float framed = kFramedAspect;
-        const float aspect = float(area.width) / float(area.height);
-        if (aspect < framed) {
-            const float half = glm::radians(r.camera.fovyDegrees) / 2;
-            r.camera.fovyDegrees =
-                std::min(150.0f, glm::degrees(2 * std::atan(std::tan(half) * framed / aspect)));
-        }
+        // A split half or a tall window: the scene's width still fits (math/orbit.h).
+        r.camera.fovyDegrees =
+            fovyFittingWidth(r.camera.fovyDegrees, float(area.width) / float(area.height));
         const bool whole =
             area.x == 0 && area.y == 0 && area.width == width_ && area.height == height_;
         if (whole) {

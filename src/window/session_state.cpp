@@ -110,7 +110,7 @@ nlohmann::json WindowSession::state() const {
     j["eyeDistance"] = glm::length(r.camera.eye - r.camera.at);
     j["split"] = nlohmann::json::array();
     if (split_)
-        for (const Half& h : splitHalves()) j["split"].push_back(h.name);
+        for (const SplitHalf& h : splitHalves()) j["split"].push_back(h.name);
     for (const ParamSpec& p : specs) j["params"][p.name] = r.params().text(p.name);
     for (const ParamSpec& p : specs)
         if (!ignoredMark(p.name).empty()) j["ignored"].push_back(p.name);

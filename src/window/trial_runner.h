@@ -15,13 +15,12 @@
 #include <utility>
 #include <vector>
 
+#include "lecture/lessons.h"  // Sets
 #include "platform/headless.h"
 #include "sandbox/budget.h"
 #include "sandbox/worker.h"
 
 namespace sl {
-
-using Sets = std::vector<std::pair<std::string, std::string>>;
 
 // The window's floor: two seconds of CPU, against grading's 30 s: one interactive frame. Our
 // shipped shaders draw a stage's trial (a fresh context, its programs compiled, every view at

@@ -6,27 +6,12 @@
 #include <utility>
 #include <vector>
 
+#include "lecture/lessons.h"
 #include "platform/headless.h"
 #include "sandbox/budget.h"
 #include "stages/request.h"
 
 namespace sl {
-
-// A lesson the window steps through with `n`: an entry of expectations.json or a lecture figure
-// of slides_examples/, with its settings and what to look for on screen.
-struct WindowLesson {
-    std::string stage;
-    std::string scene;               // "": the stage's own
-    std::vector<std::string> trees;  // empty: every tree the stage runs in
-    std::vector<std::pair<std::string, std::string>> sets;
-    std::string name;  // "margin margin-kind=slope: almost no acne"
-    std::string look;  // what to look for, one short line
-    ViewMode view = ViewMode::Final;
-    // The lecture's mirror exercise drawn from above beside the picture (slides_examples'
-    // "figure": the mirror's ends p1, p2, the eye and at in the x-z plane).
-    bool topView = false;
-    glm::vec2 p1{0.0f}, p2{0.0f}, eye{0.0f}, at{0.0f};
-};
 
 struct WindowArgs {
     RenderRequest request;
@@ -46,9 +31,6 @@ struct WindowArgs {
     std::string shots = "shots";  // where `p` saves
     std::string stateFile;        // "": none; else the HUD's state as JSON, rewritten on change
 };
-
-// The lessons of expectations.json and slides_examples/, in that order per stage.
-std::vector<WindowLesson> windowLessons();
 
 // Opens the window and runs it, then ends the process with its exit code (returns only by
 // throwing, before the window opens or while it does).

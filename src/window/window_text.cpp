@@ -6,48 +6,6 @@
 
 namespace sl {
 
-namespace {
-bool isMirror(const StageInfo& s) {
-    return s.needsMirror;
-}
-// Phong draws no shadow map: its visibility view is white everywhere, and says why.
-bool offersShadowMap(const StageInfo& s) {
-    for (ViewMode v : s.views)
-        if (v == ViewMode::ShadowMap) return true;
-    return false;
-}
-}  // namespace
-
-std::string viewLabel(const StageInfo& stage, ViewMode view) {
-    if (isMirror(stage) && view == ViewMode::ShadowMap) return "mirror-texture";
-    return viewName(view);
-}
-
-std::string viewLegend(const StageInfo& stage, ViewMode view) {
-    switch (view) {
-        case ViewMode::Final:
-            return "";
-        case ViewMode::ShadowMap:
-            if (isMirror(stage))
-                return "mirror-texture: what the reflected camera rendered, flipped left-right as "
-                       "the "
-                       "mirror shows it";
-            return "shadow-map: depth seen from the light; black = near the light, white = far "
-                   "(or nothing drawn)";
-        case ViewMode::Light:
-            return "light: the scene as the light sees it (the shadow map's frustum)";
-        case ViewMode::Visibility:
-            if (!offersShadowMap(stage))
-                return "visibility: white = lit, black = in shadow; this stage has no shadow map, "
-                       "so "
-                       "all of it is white";
-            return "visibility: white = lit (the map sees this point), black = in shadow";
-        case ViewMode::LightDepth:
-            return "light-depth: each point's own depth from the light; black = near, white = far";
-    }
-    return "";
-}
-
 std::string shotFileName(const std::string& stage, const std::string& tree, const std::string& view,
                          std::time_t seconds, int millis) {
     std::tm local{};

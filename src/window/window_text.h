@@ -1,19 +1,15 @@
-// Words the window shows and writes: view names and legends per stage, shot file names, the
-// help. Plain functions, unit-tested without a window.
+// Words the window shows and writes: shot file names, the help, error lines (the views' names
+// and legends are lecture/hud_text.h's, the page's too). Plain functions, unit-tested without a
+// window.
 #pragma once
 
 #include <ctime>
 #include <string>
 #include <vector>
 
-#include "render/stage_interface.h"
+#include "lecture/hud_text.h"
 
 namespace sl {
-
-// The view's name as the HUD shows it: the mirror stage's `shadow-map` view is its texture.
-std::string viewLabel(const StageInfo& stage, ViewMode view);
-// One line saying how to read a debug view ("" for the final picture).
-std::string viewLegend(const StageInfo& stage, ViewMode view);
 
 // `<stage>-<tree>-<view>-<YYYYmmdd-HHMMSS-mmm>.png`, from local time `seconds` and `millis`.
 std::string shotFileName(const std::string& stage, const std::string& tree, const std::string& view,

@@ -68,20 +68,27 @@ img.src = nativeUrl;
 
 
 def lessons_and_views(driver, body, stage):
-    """Steps through the stage's lessons ('n') and views ('v'): each must draw without a message.
-    Returns the failures; prints what it reached."""
+    """Steps through the stage's lessons ('n', as the window steps: the one after the lesson on
+    screen) and views ('v'): each must draw without a message, and as many presses as the stage
+    has lessons must show each of them once. Returns the failures; prints what it reached."""
     failures = []
-    count = int(driver.execute_script("return document.getElementById('lesson').textContent")
-                .split()[0])
-    for k in range(1, count + 1):
+    lesson = lambda: driver.execute_script("return document.getElementById('lesson').textContent")
+    counted = re.search(r"lesson \d+/(\d+) \(n\)|none of the (\d+) lessons", lesson())
+    count = int(next(filter(None, counted.groups()))) if counted else 0
+    seen = set()
+    for _ in range(count):
         body.send_keys("n")
         text, message = driver.execute_script(
             "return [document.getElementById('lesson').textContent, shadowlab.lastMessage]")
-        name = text.splitlines()[0] if text else ""
-        if not name.startswith(f"lesson {k}/{count}:"):
-            failures.append(f"{stage} lesson {k}/{count}: the page shows {name!r}")
+        shown = re.match(rf"lesson (\d+)/{count} \(n\): ", text)
+        if not shown:
+            failures.append(f"{stage} lesson of {count}: the page shows {text!r}")
         elif message:
-            failures.append(f"{stage} {name}: {message!r}")
+            failures.append(f"{stage} {text}: {message!r}")
+        else:
+            seen.add(int(shown.group(1)))
+    if count and seen != set(range(1, count + 1)):
+        failures.append(f"{stage}: {count} presses of n showed lessons {sorted(seen)}")
     views = []
     for _ in range(6):
         body.send_keys("v")
