@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """A shader that loops never freezes the page (docs/web.md, "A shader that loops"): headless
-Chromium opens the built page, and a folder `looping/` is picked over the depth stage: the
+Chromium opens the built page; a corpus hand-in whose loops end (LOOPS_END) is drawn over the
+depth stage, with no note naming the budget's uniform; then a folder `looping/` is picked: the
 depth-stage lit.frag of tests/web/looping (a filter loop that never ends) beside the margin
 stage's file of a corpus hand-in (tests/students/MARGIN_CASE). The page must say, naming the
 file, that a loop ran past the loop budget, within --bound seconds, keep the last good picture,
-and still answer (the next view and another stage draw). Then the page's `check --all` over the
+and still answer (the next view, another stage, our peers stage's loops through the budget). Then the page's `check --all` over the
 folder: every depth row TIMEOUT naming the file (native `check` gives the stage TIMEOUT from its
 CPU-time budget; --native runs it and compares, about 3 minutes), the margin stage graded after
 it with the case's verdict. Prints the times. Exit 77 (ctest: skipped) as web_browser.py does."""
@@ -24,6 +25,7 @@ import web_check  # noqa: E402  (the page's check, native check and the row comp
 
 HERE = pathlib.Path(__file__).resolve().parent
 MARGIN_CASE = "margin_tan_clamp"  # a margin hand-in the corpus grades PASS
+LOOPS_END = "depth_pcf_loop"  # a depth hand-in filtering in two loops that end
 FILE = "looping/depth/lit.frag"  # as the student picked it
 SAID = re.compile(re.escape(FILE) + r": error: a loop ran past (\d+) iterations")
 
@@ -40,9 +42,15 @@ def hand_in(out):
 
 
 def lecture(driver, args, folder, out):
-    """The looping folder over the depth stage, then a lesson and another stage. Failures."""
+    """A hand-in whose loops end, then the looping folder over the depth stage (the last good
+    picture is the first's), then the next view, another stage, our peers stage. Failures."""
     failures = []
-    driver.execute_script("shadowlab.takeFolder('', ''); shadowlab.selectId('depth')")
+    # A hand-in whose loops end is drawn, and the probe's uniform is not called the student's.
+    driver.execute_script("shadowlab.selectId('depth')")
+    message, state, _, _ = web_browser.pick_folder(driver, HERE.parent / "students" / LOOPS_END)
+    print(f"web: loop: {LOOPS_END} (loops that end) drawn with message {message!r}")
+    if message or not state.startswith("your shaders") or "sl_" in state:
+        failures.append(f"{LOOPS_END}: the page says {message!r}, {state!r}")
     before = web_browser.canvas_url(driver)
     started = time.monotonic()
     message, state, shown, _ = web_browser.pick_folder(driver, folder)
@@ -68,6 +76,16 @@ def lecture(driver, args, folder, out):
               f"(message {message!r}, a new picture: {drawn})")
         if message or not drawn:
             failures.append(f"after the loop, {what} says {message!r}, a new picture: {drawn}")
+    # Our peers stage filters in loops: drawn through the budget, which "the ESSL WebGL runs"
+    # shows (that its picture is native's is web_browser.py's test).
+    message, essl = driver.execute_script(
+        "shadowlab.selectId('peers'); shadowlab.showTranslation();"
+        "return [shadowlab.lastMessage, document.getElementById('essl').textContent]")
+    steps = essl.count("if (sl_loopSpent()) break;")
+    print(f"web: loop: our peers stage drew (message {message!r}) with {steps} loop(s) "
+          f"counted in the ESSL the page shows")
+    if message or not steps:
+        failures.append(f"our peers stage says {message!r}; budget steps in its ESSL: {steps}")
     return failures
 
 
@@ -128,7 +146,7 @@ def watchdog(driver, seconds):
 def main():
     ap = web_browser.site_arguments()
     ap.add_argument("--seed", type=int, default=4242)
-    ap.add_argument("--bound", type=float, default=10.0,
+    ap.add_argument("--bound", type=float, default=15.0,
                     help="seconds the page may take to stop the loop and answer")
     ap.add_argument("--frozen", type=float, default=120.0,
                     help="seconds after which the page counts as frozen (the test takes ~25)")
