@@ -54,3 +54,12 @@ add_test(NAME web_split_hud
                  --out ${CMAKE_BINARY_DIR}/web_split_hud)
 set_tests_properties(web_split_hud PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 300
                      RUN_SERIAL TRUE)
+# A shader that loops never freezes the page (tests/web/web_loop.py, docs/web.md): a looping
+# depth hand-in stopped by the loop budget, named, the page still drawing; the page's check
+# --all over it: the depth rows TIMEOUT naming the file, every other stage graded. About 30 s.
+add_test(NAME web_loop
+         COMMAND ${SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/web/web_loop.py
+                 --site ${SL_WEB_SITE} --shadowlab $<TARGET_FILE:shadowlab>
+                 --out ${CMAKE_BINARY_DIR}/web_loop)
+set_tests_properties(web_loop PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 300
+                     RUN_SERIAL TRUE)

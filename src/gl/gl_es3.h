@@ -6,6 +6,7 @@
 
 #include <GLES3/gl3.h>
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -45,6 +46,15 @@ void noteTexImage(GLenum target, GLint internal);
 void forgetProgram(GLuint program);  // what beforeDraw found in it (relinked, or a name reused)
 void beforeDraw();
 
+// A loop that never ends (gl/loop_guard.h): before each draw whose fragment shader carries the
+// loop budget's probe, `draw` runs with the probe on into a target of its own, and a fragment
+// whose budget ran out throws LoopBudgetSpent naming the file, so a stopped loop costs the
+// budget once, not twice. noteLinked finds the probe and the file in a linked program
+// (gl_es3.cpp); docs/web.md.
+void noteLinked(GLuint program);
+bool drawsGuardedLoops();
+void probeLoops(const std::function<void()>& draw);
+
 // ES 3.0 has no border clamp: the edge texel is read instead, which the shadow pass keeps at the
 // border's value (kBorderClamp, render/shadow_map.cpp); docs/web.md.
 inline void texParameteri(GLenum target, GLenum name, GLint value) {
@@ -83,13 +93,16 @@ inline void clearDepth(GLdouble value) {
 inline void linkProgram(GLuint program) {
     forgetProgram(program);
     glLinkProgram(program);
+    noteLinked(program);
 }
 inline void drawArrays(GLenum mode, GLint first, GLsizei count) {
     beforeDraw();
+    if (drawsGuardedLoops()) probeLoops([=] { glDrawArrays(mode, first, count); });
     glDrawArrays(mode, first, count);
 }
 inline void drawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
     beforeDraw();
+    if (drawsGuardedLoops()) probeLoops([=] { glDrawElements(mode, count, type, indices); });
     glDrawElements(mode, count, type, indices);
 }
 inline void getDoublev(GLenum name, GLdouble* out) {

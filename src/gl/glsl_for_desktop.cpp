@@ -8,4 +8,8 @@ std::string glslForDriver(const GlslSource& source, ShaderKind) {
     return source.text;
 }
 
+bool addedByTranslation(const std::string&) {
+    return false;
+}
+
 }  // namespace sl

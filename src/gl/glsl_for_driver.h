@@ -16,4 +16,7 @@ enum class ShaderKind { Vertex, Fragment };
 // Throws ShaderError (naming the stage file) where the translation fails.
 std::string glslForDriver(const GlslSource& source, ShaderKind kind);
 
+// Whether the translation declared `uniform` itself (the GL layer sets it; no stage does).
+bool addedByTranslation(const std::string& uniform);
+
 }  // namespace sl

@@ -2,8 +2,9 @@
 // `glslangValidator -G --aml --amb` and `spirv-cross --es --version 300` do (the same sources,
 // Debian's, compiled to WebAssembly: scripts/web_sources.py). The translation keeps every name
 // and expression; only types gain precisions, vertex inputs lose the locations glslang gave them
-// (glBindAttribLocation decides them, as on the desktop) and a depth compare's reference is
-// clamped as the GL specification clamps it (EsslWriter below).
+// (glBindAttribLocation decides them, as on the desktop), a depth compare's reference is
+// clamped as the GL specification clamps it (EsslWriter below) and loops count into the page's
+// loop budget (gl/loop_guard.h).
 #include "gl/gl.h"
 
 #include <SPIRV/GlslangToSpv.h>
@@ -16,6 +17,7 @@
 
 #include "gl/glsl_for_driver.h"
 #include "gl/glsl_standard.h"
+#include "gl/loop_guard.h"
 #include "gl/shader_library.h"
 
 namespace sl {
@@ -108,7 +110,7 @@ std::string glslForDriver(const GlslSource& source, ShaderKind kind) {
         if (vertex)
             for (const auto& input : compiler.get_shader_resources().stage_inputs)
                 compiler.unset_decoration(input.id, spv::DecorationLocation);
-        std::string essl = compiler.compile();
+        std::string essl = guardLoops(compiler.compile(), !vertex, fileName(source));
         return compiler.clampsDepthReference() ? withDepthReferenceRange(std::move(essl)) : essl;
     } catch (const spirv_cross::CompilerError& e) {
         throw ShaderError(fileName(source) +
@@ -116,6 +118,10 @@ std::string glslForDriver(const GlslSource& source, ShaderKind kind) {
                           "3.00: " +
                           e.what());
     }
+}
+
+bool addedByTranslation(const std::string& uniform) {
+    return uniform == es3::kDepthReferenceRange || uniform == kLoopProbe;
 }
 
 }  // namespace sl

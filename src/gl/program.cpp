@@ -6,6 +6,7 @@
 #include <set>
 #include <vector>
 
+#include "gl/glsl_for_driver.h"
 #include "gl/shader_library.h"
 
 namespace sl {
@@ -201,7 +202,8 @@ std::vector<std::string> Program::uniformsNeverSet() {
     forEachActiveUniform(handle_.id(), [&](std::string name, GLenum) {
         if (name.size() > 3 && name.compare(name.size() - 3, 3, "[0]") == 0)
             name.resize(name.size() - 3);
-        if (name.rfind("gl_", 0) != 0 && !locations_.count(name) && !reportOnly_.count(name))
+        if (name.rfind("gl_", 0) != 0 && !locations_.count(name) && !reportOnly_.count(name) &&
+            !addedByTranslation(name))
             out.push_back(name);
     });
     return out;

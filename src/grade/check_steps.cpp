@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "gl/loop_guard.h"
+
 namespace sl {
 
 CheckSteps::CheckSteps(GradingPlan plan, StudentWork work, std::optional<std::uint64_t> seed,
@@ -48,6 +50,15 @@ std::vector<StageRecord> CheckSteps::step() {
     }
     try {
         lastRow_ = series_->next();
+    } catch (const LoopBudgetSpent& e) {
+        // The browser's loop budget stopped the student's loop: theirs, as native check's
+        // CPU-time budget makes it (TIMEOUT for every row of the stage; docs/web.md).
+        CheckResult r = unrenderedResult(p.rows[series_->results().size()].check.request);
+        r.status = Status::Timeout;
+        r.message = "stage " + p.stage + " (" + p.tree + "): " + e.what();
+        failed_ = {r};
+        lastRow_ = r;
+        rig_->reset();
     } catch (const std::exception& e) {
         // The browser's GL failed (a lost context, an out-of-memory): never the student's.
         CheckResult r = unrenderedResult(p.rows[series_->results().size()].check.request);

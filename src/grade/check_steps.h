@@ -1,9 +1,10 @@
 // One student's check graded in this process, a row at a time: the browser edition's `check`
 // (a page forks no workers and must draw between rows). The same plan (grade/check_plan.h),
 // cases, judge and record as the native check (gradeOneStudent): only where the rows run
-// differs. No budget bounds a row here: the page runs the student's shaders in the browser's
-// own GL sandbox, which loses a context that hangs the GPU (the row is then NOT GRADED: the
-// machine's, never the student's).
+// differs. No worker bounds a row here: the page's loop budget (gl/loop_guard.h) stops a loop
+// that does not end, and the stage's rows are TIMEOUT as native's CPU-time budget makes them; a
+// context the browser loses otherwise makes the row NOT GRADED (the machine's, never the
+// student's).
 #pragma once
 
 #include <chrono>
