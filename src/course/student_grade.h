@@ -19,5 +19,4 @@ std::vector<std::string> dueStageNames(const Assignment& a);
 // the student should know. Files another note already names (a near miss) are left out.
 std::vector<std::string> unlistedFileNotes(const Assignment& a, const StudentWork& s);
 
-
 }  // namespace sl
