@@ -30,6 +30,8 @@ float fovyFittingWidth(float fovyDegrees, float aspect);
 
 // The light on its circle around the y axis after `seconds` at `radiansPerSecond`, starting
 // from `start` (height and radius kept).
+// The lecture's circling light (the window's and the page's `l`), radians a second.
+constexpr float kLightRadiansPerSecond = 0.6f;
 glm::vec3 circlingLight(const glm::vec3& start, float radiansPerSecond, double seconds);
 
 }  // namespace sl

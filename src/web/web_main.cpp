@@ -36,7 +36,9 @@ struct Page {
     // The folder last picked as the page copied it (kept until the next one): what the page's
     // check takes again, as `check --shaders` takes the folder it is given.
     std::string upload, uploadName;
-    std::string text;  // the last string handed to the page
+    std::string text;       // the last string handed to the page
+    sl::Camera homeCamera;  // where the stage's renderer began: `c` goes back
+    glm::vec3 homeLight{0.0f};
 };
 
 Page& page() {
@@ -119,6 +121,8 @@ std::string show(const sl::RenderRequest& request) {
         sl::validateRequest(request);
         p.renderer = sl::makeRenderer(request);
         p.request = request;
+        p.homeCamera = p.renderer->camera;
+        p.homeLight = p.renderer->lightPosition;
         return drawFrame();
     } catch (const std::exception& e) {
         std::string message = e.what();
@@ -280,6 +284,25 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_orbit(float yaw, float pitch) {
     const sl::Scene& scene = p.renderer->scene();
     p.renderer->camera =
         sl::orbitCamera(p.renderer->camera, yaw, pitch, sl::sceneReceiverHeight(scene));
+    return sl_web_frame();
+}
+
+// The window's `l`, a step of it: the light circles the scene for `seconds` (at most one: a
+// longer gap is a pause, not a jump), and the stage redraws.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_turn_light(double seconds) {
+    Page& p = page();
+    if (!p.renderer) return handOver("no stage selected");
+    p.renderer->lightPosition = sl::circlingLight(
+        p.renderer->lightPosition, sl::kLightRadiansPerSecond, std::clamp(seconds, 0.0, 1.0));
+    return sl_web_frame();
+}
+
+// The window's `c`: camera and light back where the stage began.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_home() {
+    Page& p = page();
+    if (!p.renderer) return handOver("no stage selected");
+    p.renderer->camera = p.homeCamera;
+    p.renderer->lightPosition = p.homeLight;
     return sl_web_frame();
 }
 

@@ -17,7 +17,6 @@ namespace sl {
 
 namespace {
 
-constexpr float kLightRadiansPerSecond = 0.6f;
 constexpr float kFullPanelShare = 0.55f;  // the full HUD's two bands: the picture keeps 45 %
 constexpr float kFullBottom = 0.15f;
 constexpr HudRoom kCompactRoom{0.45f, 0.20f};  // the compact HUD's bands at most

@@ -9,7 +9,8 @@ In headless Chromium (SwiftShader's WebGL 2) the page is driven with the window'
 - after `s` each half of the canvas must be the native `shadowlab render` of that half's
   settings at the half's size (the field of view widened as the window widens it), as the
   window's own test holds its halves (tests/render/test_window_projector.cpp), and the two halves
-  must differ from each other as the two native renders do.
+  must differ from each other as the two native renders do;
+- `l` circles the light (the shadows move) until `l` again, and `c` brings back the first picture.
 Saves the page with each split (page_split_STAGE.png: docs/images/web/ holds bias's).
 Exit 77 (ctest: skipped) as web_browser.py does."""
 import base64
@@ -20,6 +21,7 @@ import pathlib
 import subprocess
 import sys
 import tempfile
+import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import web_browser  # noqa: E402  (the browser, the page, the skip rule)
@@ -221,6 +223,33 @@ def halves_differ(driver, a, b, args):
     return driver.execute_async_script(NATIVE_PAIR, url(a), url(b), args.channel_tolerance)
 
 
+def light_case(driver, body, args, stage="depth"):
+    """The window's `l` and `c` on the page: the light circling for about a second moves the
+    shadows (more than --pixel-tolerance of the canvas differs), `l` again stops it (two pictures
+    a moment apart are the same), and `c` brings back the stage's first picture."""
+    open_stage(driver, body, stage)
+    width = driver.execute_script("return document.getElementById('canvas').width")
+    share = lambda url: (lambda r: r.get("differ", 1) / max(r.get("total", 1), 1))(
+        driver.execute_async_script(COMPARE_COLUMNS, url, 0, width, 0, args.channel_tolerance))
+    first = web_browser.canvas_url(driver)
+    body.send_keys("l")
+    time.sleep(1.0)
+    body.send_keys("l")
+    stopped = web_browser.canvas_url(driver)
+    moved = share(first)
+    time.sleep(0.3)
+    still = share(stopped)
+    body.send_keys("c")
+    back = share(first)
+    message = driver.execute_script("return shadowlab.lastMessage")
+    ok = moved > args.pixel_tolerance and still == 0 and back <= args.pixel_tolerance and not message
+    print(f"web: light {stage}: `l` for 1 s moved {100 * moved:.2f} % of the pixels, stopped "
+          f"{100 * still:.2f} %, `c` back to the first picture {100 * back:.3f} %: "
+          f"{'as the window' if ok else 'WRONG'}")
+    return [] if ok else [f"light {stage}: moved {moved:.4f}, after stopping {still:.4f}, after "
+                          f"`c` {back:.4f} ({message!r})"]
+
+
 def main():
     ap = web_browser.site_arguments()
     ap.add_argument("--channel-tolerance", type=int, default=8)
@@ -244,6 +273,7 @@ def main():
             return 1
         body = driver.find_element("tag name", "body")
         failures += hud_cases(driver, body, args, out, pool)
+        failures += light_case(driver, body, args)
         for stage, must_differ in SPLIT_STAGES:
             failures += split_case(driver, body, args, out, stages[stage], must_differ)
     finally:
