@@ -287,6 +287,22 @@ def site_arguments():
     return ap
 
 
+def site_output(args):
+    """The built site must exist (else skipped, as skip says); returns the output folder, made."""
+    if not pathlib.Path(args.site, "shadowlab.js").exists():
+        skip(f"no browser build in {args.site} (bash scripts/web.sh builds it)")
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    return out
+
+
+def verdict(failures):
+    """Prints each failure on its line; the exit code (1 when any)."""
+    for f in failures:
+        print(f"web: FAILED: {f}")
+    return 1 if failures else 0
+
+
 def open_page(driver, site):
     """Opens the site's page from the disk and waits until it is ready (30 s at most); returns
     whether it became ready."""
@@ -305,10 +321,7 @@ def main():
     ap.add_argument("--students", default="", help="only the corpus cases this regex finds")
     ap.add_argument("--students-only", action="store_true", help="skip the stages' own tour")
     args = ap.parse_args()
-    if not pathlib.Path(args.site, "shadowlab.js").exists():
-        skip(f"no browser build in {args.site} (bash scripts/web.sh builds it)")
-    out = pathlib.Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = site_output(args)
     stages = json.loads(subprocess.run([args.shadowlab, "stages", "--json"], check=True,
                                        capture_output=True, text=True).stdout)
     stages = stages["stages"] if isinstance(stages, dict) else stages
@@ -373,9 +386,7 @@ def main():
     finally:
         pool.shutdown(cancel_futures=True)
         driver.quit()
-    for f in failures:
-        print(f"web: FAILED: {f}")
-    return 1 if failures else 0
+    return verdict(failures)
 
 
 if __name__ == "__main__":

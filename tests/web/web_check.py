@@ -70,6 +70,23 @@ def compare(name, page, native, folder):
     return failures, worst
 
 
+def same_fields(name, page, native):
+    """The downloaded report has the native report's fields: its own, each stage's and each
+    row's (rows paired in order, as compare pairs them), and its version."""
+    pairs = [("report", page, native)]
+    for ps, ns in zip(page.get("stages", []), native.get("stages", [])):
+        pairs.append((f"stage {ns.get('stage')}", ps, ns))
+        pairs += [(f"row {nr.get('lesson')!r} of {ns.get('stage')}", pr, nr)
+                  for pr, nr in zip(ps.get("rows", []), ns.get("rows", []))]
+    failures = [f"{name}: the page's {level} fields differ from native's: only the page's "
+                f"{sorted(set(p) - set(n))}, only native's {sorted(set(n) - set(p))}"
+                for level, p, n in pairs if set(p) != set(n)]
+    if page.get("report_version") != native.get("report_version"):
+        failures.append(f"{name}: report_version {page.get('report_version')} against "
+                        f"native's {native.get('report_version')}")
+    return failures[:5]
+
+
 def native_check(shadowlab, what, folder, seed, report, assignment=None):
     """Native `check --report` (`--assignment` where `what` is "assignment"): (its report,
     seconds, its last stderr line); the report is None where it refused the run (exit 2: a folder
@@ -110,6 +127,7 @@ def check_case(driver, args, out, name, what, folder):
     failures, worst = compare(name, page, native, folder)
     if abs(page["score"] - native["score"]) > 1e-6:
         failures.append(f"{name}: the page scores {page['score']}, native {native['score']}")
+    failures += same_fields(name, page, native)
     shot = out / "page_check.png"  # the page after a check with a failing row (docs/web.md)
     if not shot.exists() and '"verdict": "FAIL"' in got["report"] and driver.execute_script(
             "const p = document.querySelector('#checkRows .picture');"
@@ -186,10 +204,7 @@ def main():
     if args.seed is None:
         shipped = pathlib.Path(__file__).resolve().parents[2] / "src/stages/drawn_figures.json"
         args.seed = json.loads(shipped.read_text())["seeds"][-1] if args.student_edition else 4242
-    if not pathlib.Path(args.site, "shadowlab.js").exists():
-        web_browser.skip(f"no browser build in {args.site} (bash scripts/web.sh builds it)")
-    out = pathlib.Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = web_browser.site_output(args)
     driver = web_browser.browser()
     driver.set_script_timeout(1800)
     failures, summary = [], {}
@@ -230,9 +245,7 @@ def main():
     finally:
         driver.quit()
     (out / "check_parity.json").write_text(json.dumps(summary, indent=1) + "\n")
-    for f in failures:
-        print(f"web: FAILED: {f}")
-    return 1 if failures else 0
+    return web_browser.verdict(failures)
 
 
 if __name__ == "__main__":

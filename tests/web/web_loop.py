@@ -152,10 +152,7 @@ def main():
                     help="seconds after which the page counts as frozen (the test takes ~25)")
     ap.add_argument("--native", action="store_true", help="also native check (minutes)")
     args = ap.parse_args()
-    if not pathlib.Path(args.site, "shadowlab.js").exists():
-        web_browser.skip(f"no browser build in {args.site} (bash scripts/web.sh builds it)")
-    out = pathlib.Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = web_browser.site_output(args)
     driver = web_browser.browser()
     driver.set_script_timeout(600)
     timer = watchdog(driver, args.frozen + (300 if args.native else 0))
@@ -169,9 +166,7 @@ def main():
     finally:
         timer.cancel()
         driver.quit()
-    for f in failures:
-        print(f"web: FAILED: {f}")
-    return 1 if failures else 0
+    return web_browser.verdict(failures)
 
 
 if __name__ == "__main__":

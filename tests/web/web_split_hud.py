@@ -255,12 +255,9 @@ def main():
     ap.add_argument("--channel-tolerance", type=int, default=8)
     ap.add_argument("--pixel-tolerance", type=float, default=0.01)
     args = ap.parse_args()
-    if not pathlib.Path(args.site, "shadowlab.js").exists():
-        web_browser.skip(f"no browser build in {args.site} (bash scripts/web.sh builds it)")
     if subprocess.run(["sh", "-c", "command -v Xvfb"], capture_output=True).returncode != 0:
         web_browser.skip("Xvfb is not installed (the native window's text is read under it)")
-    out = pathlib.Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = web_browser.site_output(args)
     stages = json.loads(subprocess.run([args.shadowlab, "stages", "--json"], check=True,
                                        capture_output=True, text=True).stdout)
     stages = {s["id"]: s for s in (stages["stages"] if isinstance(stages, dict) else stages)}
@@ -279,9 +276,7 @@ def main():
     finally:
         pool.shutdown(cancel_futures=True)
         driver.quit()
-    for f in failures:
-        print(f"web: FAILED: {f}")
-    return 1 if failures else 0
+    return web_browser.verdict(failures)
 
 
 if __name__ == "__main__":
