@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -28,6 +29,14 @@
 #include "stages/stage.h"
 
 namespace sl {
+
+std::string rowSlug(const CheckCase& c) {
+    std::string slug =
+        c.request.stage + "-" + treeName(c.request.tree) + "-" + c.view + "-" + c.lesson;
+    for (char& ch : slug)
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '-') ch = '_';
+    return slug;
+}
 
 namespace {
 

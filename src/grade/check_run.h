@@ -98,6 +98,9 @@ struct CheckCase {
     RowPictures pictures = RowPictures::Difference;
 };
 
+// The file name of a row's images: "STAGE-TREE-VIEW-LESSON" with only [A-Za-z0-9._-].
+std::string rowSlug(const CheckCase& c);
+
 // What `check` runs for one stage and tree (`base`): every lesson entry of expectations.json
 // that applies, each under its own scene and settings, unless the user narrowed it (`--set`,
 // `--scene`: the base request alone); and each from every view of its scene, unless the user

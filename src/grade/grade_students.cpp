@@ -6,14 +6,6 @@
 
 namespace sl {
 
-std::string rowSlug(const CheckCase& c) {
-    std::string slug =
-        c.request.stage + "-" + treeName(c.request.tree) + "-" + c.view + "-" + c.lesson;
-    for (char& ch : slug)
-        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '-') ch = '_';
-    return slug;
-}
-
 std::size_t roundCount(std::size_t n) {
     return std::max<std::size_t>(std::min<std::size_t>(3, n), (n + 7) / 8);
 }

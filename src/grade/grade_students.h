@@ -53,7 +53,4 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
 std::size_t roundCount(std::size_t n);
 std::size_t roundOf(std::size_t k, std::size_t n);
 
-// The file name of a row's images: "STAGE-TREE-VIEW-LESSON" with only [A-Za-z0-9._-].
-std::string rowSlug(const CheckCase& c);
-
 }  // namespace sl

@@ -184,9 +184,9 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_check_begin(const char* what, const char
             for (sl::RowPlan& row : st.rows) row.check.pictures = sl::RowPictures::AllUnlessPassing;
         std::filesystem::remove_all(kPictures);
         std::filesystem::create_directories(kPictures);
-        auto row = std::make_shared<std::size_t>(0);
-        auto picture = [row](const sl::CheckCase&) {
-            return std::string(kPictures) + "/row-" + std::to_string((*row)++) + ".png";
+        // Named by what the row checks, as native `check --diff-dir` names them.
+        auto picture = [](const sl::CheckCase& c) {
+            return std::string(kPictures) + "/" + sl::rowSlug(c) + ".png";
         };
         c.steps = std::make_unique<sl::CheckSteps>(plan, work, drawn, picture);
         return handOver({{"rows", c.steps->rowCount()},

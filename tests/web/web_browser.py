@@ -296,7 +296,7 @@ def site_output(args):
     return out
 
 
-def verdict(failures):
+def exit_code(failures):
     """Prints each failure on its line; the exit code (1 when any)."""
     for f in failures:
         print(f"web: FAILED: {f}")
@@ -386,7 +386,7 @@ def main():
     finally:
         pool.shutdown(cancel_futures=True)
         driver.quit()
-    return verdict(failures)
+    return exit_code(failures)
 
 
 if __name__ == "__main__":

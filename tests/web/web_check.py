@@ -245,7 +245,7 @@ def main():
     finally:
         driver.quit()
     (out / "check_parity.json").write_text(json.dumps(summary, indent=1) + "\n")
-    return web_browser.verdict(failures)
+    return web_browser.exit_code(failures)
 
 
 if __name__ == "__main__":

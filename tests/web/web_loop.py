@@ -166,7 +166,7 @@ def main():
     finally:
         timer.cancel()
         driver.quit()
-    return web_browser.verdict(failures)
+    return web_browser.exit_code(failures)
 
 
 if __name__ == "__main__":

@@ -276,7 +276,7 @@ def main():
     finally:
         pool.shutdown(cancel_futures=True)
         driver.quit()
-    return web_browser.verdict(failures)
+    return web_browser.exit_code(failures)
 
 
 if __name__ == "__main__":
