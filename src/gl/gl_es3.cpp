@@ -20,33 +20,34 @@ std::map<GLuint, bool>& depthTextures() {
     return textures;
 }
 
-// Where a program takes its compare's reference range and its first 2D depth-compare sampler
-// (-1: none), found once a link (an active-uniform walk per draw cost the page's frames).
-struct CompareSlots {
+// What a draw needs of its program, found once when it links (an active-uniform walk per draw
+// cost the page's frames): where it takes its compare's reference range and its first 2D
+// depth-compare sampler (-1: none), and the loop probe's uniform with the file it names (-1 and
+// "": no probe in its fragment shader).
+struct LinkedProgram {
     GLint range = -1;
     GLint sampler = -1;
+    GLint probe = -1;
+    std::string file;
 };
 
-std::map<GLuint, CompareSlots>& linkedPrograms() {
-    static std::map<GLuint, CompareSlots> programs;
+std::map<GLuint, LinkedProgram>& linkedPrograms() {
+    static std::map<GLuint, LinkedProgram> programs;
     return programs;
 }
 
-CompareSlots compareSlotsOf(GLuint program) {
-    CompareSlots slots;
-    slots.range = glGetUniformLocation(program, kDepthReferenceRange);
+// The first 2D depth-compare sampler among the program's active uniforms (-1: none).
+GLint compareSampler(GLuint program) {
     GLint count = 0;
     glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
-    for (GLint i = 0; slots.range >= 0 && i < count; ++i) {
+    for (GLint i = 0; i < count; ++i) {
         char name[256];
         GLint size = 0;
         GLenum type = 0;
         glGetActiveUniform(program, GLuint(i), sizeof name, nullptr, &size, &type, name);
-        if (type != GL_SAMPLER_2D_SHADOW) continue;
-        slots.sampler = glGetUniformLocation(program, name);
-        break;
+        if (type == GL_SAMPLER_2D_SHADOW) return glGetUniformLocation(program, name);
     }
-    return slots;
+    return -1;
 }
 
 // The texture bound to the unit the sampler at `location` reads (its unit may change per draw).
@@ -58,16 +59,6 @@ GLuint textureOfSampler(GLuint program, GLint location) {
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
     glActiveTexture(GLenum(active));
     return GLuint(texture);
-}
-
-// Linked programs whose fragment shader answers the loop probe: its uniform and the file.
-struct Guarded {
-    GLint probe = -1;
-    std::string file;
-};
-std::map<GLuint, Guarded>& guardedPrograms() {
-    static std::map<GLuint, Guarded> programs;
-    return programs;
 }
 
 GLuint currentProgram() {
@@ -137,33 +128,22 @@ void bindProbeTarget(GLsizei width, GLsizei height) {
     }
 }
 
-}  // namespace
-
-void noteLinked(GLuint program) {
-    guardedPrograms().erase(program);
-    GLint linked = GL_FALSE;
-    glGetProgramiv(program, GL_LINK_STATUS, &linked);
-    const GLint probe = glGetUniformLocation(program, kLoopProbe);
-    if (!linked || probe < 0) return;
+// The file the fragment shader's translation names on its loop-budget line ("" when none).
+std::string fragmentFile(GLuint program) {
     GLuint shaders[2] = {};
     GLsizei count = 0;
     glGetAttachedShaders(program, 2, &count, shaders);
     for (GLsizei i = 0; i < count; ++i) {
         GLint type = 0;
         glGetShaderiv(shaders[i], GL_SHADER_TYPE, &type);
-        if (type == GL_FRAGMENT_SHADER)
-            guardedPrograms()[program] = {probe, guardedFile(shaders[i])};
+        if (type == GL_FRAGMENT_SHADER) return guardedFile(shaders[i]);
     }
-}
-
-bool drawsGuardedLoops() {
-    return !guardedPrograms().empty() && guardedPrograms().count(currentProgram());
+    return "";
 }
 
 // The draw, every test off, into the probe's target: only fragments whose budget ran out write
 // (the translation's probe), so one non-zero pixel is a loop the budget stopped.
-void probeLoops(const std::function<void()>& draw) {
-    const Guarded& guarded = guardedPrograms().at(currentProgram());
+void probeLoops(const LinkedProgram& linked, const std::function<void()>& draw) {
     const DrawState state;
     const GLint* v = state.viewport;
     bindProbeTarget(v[0] + v[2], v[1] + v[3]);
@@ -171,14 +151,42 @@ void probeLoops(const std::function<void()>& draw) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    glUniform1i(guarded.probe, 1);
+    glUniform1i(linked.probe, 1);
     draw();
-    glUniform1i(guarded.probe, 0);
+    glUniform1i(linked.probe, 0);
     std::vector<unsigned char> pixels(std::size_t(v[2]) * std::size_t(v[3]) * 4);
     glReadPixels(v[0], v[1], v[2], v[3], GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
     state.restore();
     for (std::size_t i = 0; i < pixels.size(); i += 4)
-        if (pixels[i]) throw LoopBudgetSpent(printableName(guarded.file));
+        if (pixels[i]) throw LoopBudgetSpent(printableName(linked.file));
+}
+
+// The compare's reference range for the texture the program compares with: [0, 1] for a
+// fixed-point depth texture, unbounded for a float one.
+void setReferenceRange(GLuint program, const LinkedProgram& linked) {
+    if (linked.range < 0) return;  // no depth compare in this program
+    const GLuint compared = linked.sampler < 0 ? 0 : textureOfSampler(program, linked.sampler);
+    auto depth = depthTextures().find(compared);
+    bool fixedPoint = depth == depthTextures().end() || depth->second;
+    if (fixedPoint)
+        glUniform2f(linked.range, 0.0f, 1.0f);
+    else
+        glUniform2f(linked.range, -FLT_MAX, FLT_MAX);
+}
+
+}  // namespace
+
+void noteLinked(GLuint program) {
+    linkedPrograms().erase(program);
+    GLint linked = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (!linked) return;
+    LinkedProgram record;
+    record.range = glGetUniformLocation(program, kDepthReferenceRange);
+    if (record.range >= 0) record.sampler = compareSampler(program);
+    record.probe = glGetUniformLocation(program, kLoopProbe);
+    if (record.probe >= 0) record.file = fragmentFile(program);
+    linkedPrograms()[program] = std::move(record);
 }
 
 void noteTexImage(GLenum target, GLint internal) {
@@ -190,27 +198,14 @@ void noteTexImage(GLenum target, GLint internal) {
                                      internal == GL_DEPTH24_STENCIL8;
 }
 
-void forgetProgram(GLuint program) {
-    linkedPrograms().erase(program);
-}
-
-void beforeDraw() {
-    GLint program = 0;
-    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
-    if (!program) return;
-    auto found = linkedPrograms().find(GLuint(program));
-    if (found == linkedPrograms().end())
-        found = linkedPrograms().emplace(GLuint(program), compareSlotsOf(GLuint(program))).first;
-    const CompareSlots& slots = found->second;
-    if (slots.range < 0) return;  // no depth compare in this program
-    const GLuint compared =
-        slots.sampler < 0 ? 0 : textureOfSampler(GLuint(program), slots.sampler);
-    auto depth = depthTextures().find(compared);
-    bool fixedPoint = depth == depthTextures().end() || depth->second;
-    if (fixedPoint)
-        glUniform2f(slots.range, 0.0f, 1.0f);
-    else
-        glUniform2f(slots.range, -FLT_MAX, FLT_MAX);
+void draw(const std::function<void()>& drawCall) {
+    const GLuint program = currentProgram();
+    auto found = linkedPrograms().find(program);
+    if (found != linkedPrograms().end()) {
+        setReferenceRange(program, found->second);
+        if (found->second.probe >= 0) probeLoops(found->second, drawCall);
+    }
+    drawCall();
 }
 
 }  // namespace sl::es3

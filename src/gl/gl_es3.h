@@ -43,17 +43,16 @@ namespace sl::es3 {
 // one (gl_es3.cpp). docs/web.md.
 constexpr const char* kDepthReferenceRange = "sl_depthReference";
 void noteTexImage(GLenum target, GLint internal);
-void forgetProgram(GLuint program);  // what beforeDraw found in it (relinked, or a name reused)
-void beforeDraw();
 
 // A loop that never ends (gl/loop_guard.h): before each draw whose fragment shader carries the
-// loop budget's probe, `draw` runs with the probe on into a target of its own, and a fragment
+// loop budget's probe, the draw runs with the probe on into a target of its own, and a fragment
 // whose budget ran out throws LoopBudgetSpent naming the file, so a stopped loop costs the
-// budget once, not twice. noteLinked finds the probe and the file in a linked program
-// (gl_es3.cpp); docs/web.md.
+// budget once, not twice; docs/web.md.
+//
+// noteLinked records what a draw needs of a program (the compare's range and sampler, the probe
+// and its file) once per link; draw sets the range, probes, then calls `drawCall` (gl_es3.cpp).
 void noteLinked(GLuint program);
-bool drawsGuardedLoops();
-void probeLoops(const std::function<void()>& draw);
+void draw(const std::function<void()>& drawCall);
 
 // ES 3.0 has no border clamp: the edge texel is read instead, which the shadow pass keeps at the
 // border's value (kBorderClamp, render/shadow_map.cpp); docs/web.md.
@@ -91,19 +90,14 @@ inline void clearDepth(GLdouble value) {
     glClearDepthf(static_cast<GLfloat>(value));
 }
 inline void linkProgram(GLuint program) {
-    forgetProgram(program);
     glLinkProgram(program);
     noteLinked(program);
 }
 inline void drawArrays(GLenum mode, GLint first, GLsizei count) {
-    beforeDraw();
-    if (drawsGuardedLoops()) probeLoops([=] { glDrawArrays(mode, first, count); });
-    glDrawArrays(mode, first, count);
+    draw([=] { glDrawArrays(mode, first, count); });
 }
 inline void drawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
-    beforeDraw();
-    if (drawsGuardedLoops()) probeLoops([=] { glDrawElements(mode, count, type, indices); });
-    glDrawElements(mode, count, type, indices);
+    draw([=] { glDrawElements(mode, count, type, indices); });
 }
 inline void getDoublev(GLenum name, GLdouble* out) {
     GLfloat values[16] = {};
