@@ -53,7 +53,7 @@ add_subdirectory(${SL_WEB_SPIRV_CROSS_SOURCE} spirv-cross EXCLUDE_FROM_ALL)
 # writes the page's pictures: io/png_web.cpp), GL loader or OSMesa/EGL/X11 contexts.
 file(GLOB SL_WEB_SOURCES CONFIGURE_DEPENDS
      src/io/*.cpp src/math/*.cpp src/scene/*.cpp src/gl/*.cpp src/render/*.cpp src/stages/*.cpp
-     src/reference/*.cpp src/metrics/*.cpp src/eval/evaluator.cpp
+     src/reference/*.cpp src/metrics/*.cpp src/eval/evaluator.cpp src/eval/trace_view.cpp
      src/platform/webgl_context.cpp src/platform/webgl_headless.cpp src/platform/headless.cpp
      src/platform/framebuffer_target.cpp src/lecture/*.cpp
      src/grade/intake.cpp src/grade/check_run.cpp src/grade/check_steps.cpp src/grade/check_plan.cpp
@@ -113,15 +113,18 @@ function(sl_web_site target site data shaders)
                         RUNTIME_OUTPUT_DIRECTORY ${site})
   target_link_options(${target} PRIVATE
     -fexceptions -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sSINGLE_FILE=1
-    -sALLOW_MEMORY_GROWTH=1 -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,FS
+    -sALLOW_MEMORY_GROWTH=1 -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,FS,HEAPU8
     "SHELL:--embed-file ${data}@/data")
-  # The page: copied whenever it changes (not only when the program relinks).
+  # The page and its tracer's worker script: copied whenever they change (not only when the
+  # program relinks).
   add_custom_command(
-    OUTPUT ${site}/index.html
+    OUTPUT ${site}/index.html ${site}/trace_worker.js
     COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/src/web/index.html ${site}/index.html
-    DEPENDS ${CMAKE_SOURCE_DIR}/src/web/index.html
+    COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/src/web/trace_worker.js
+            ${site}/trace_worker.js
+    DEPENDS ${CMAKE_SOURCE_DIR}/src/web/index.html ${CMAKE_SOURCE_DIR}/src/web/trace_worker.js
     VERBATIM)
-  add_custom_target(${target}_page ALL DEPENDS ${site}/index.html)
+  add_custom_target(${target}_page ALL DEPENDS ${site}/index.html ${site}/trace_worker.js)
 endfunction()
 
 # The lecturer's site: our shaders as the source tree holds them, solutions included.

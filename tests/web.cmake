@@ -16,11 +16,14 @@ set_tests_properties(web_browser PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEO
 # The page's check against native `check` (tests/web/web_check.py): our shaders' `check --all`
 # and the first hand-in of each stage and expected verdict of the corpus (21 of its 97 core
 # cases), the same seed on both sides: every row's verdict equal, an ERROR's line too. The whole
-# corpus (--per-verdict 0) is run by hand (docs/web.md). About 3 min here.
+# corpus (--per-verdict 0) is run by hand (docs/web.md). The site is served over HTTP, as a
+# course serves it: the page's Web Workers trace every reference (none on the page's thread);
+# the other check tests open it from the disk, where the page traces on its own thread. About
+# 3 min here.
 add_test(NAME web_check
          COMMAND ${SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/web/web_check.py
                  --site ${SL_WEB_SITE} --shadowlab $<TARGET_FILE:shadowlab>
-                 --out ${CMAKE_BINARY_DIR}/web_check --students . --per-verdict 1)
+                 --out ${CMAKE_BINARY_DIR}/web_check --students . --per-verdict 1 --serve)
 set_tests_properties(web_check PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 600
                      RUN_SERIAL TRUE)
 # "Everything due" in the page against native `check --assignment` (the shipped example

@@ -14,11 +14,8 @@ namespace sl {
 
 namespace {
 
-// A number as a key: every bit of it (two lights 1e-7 apart trace different references).
 std::string exact(double v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%a", v);
-    return text;
+    return exactText(v);
 }
 
 }  // namespace
@@ -59,8 +56,7 @@ Renderer& Evaluator::prepare(const RenderRequest& request) {
         overlay_ = r.overlay;
         sceneLight_ = renderer_->scene().light.position;
         key_ = key.str();
-        sceneKey_ = r.scene + "/" + std::to_string(r.width) + "x" + std::to_string(r.height) +
-                    "/displaced=" + (r.displaceSeed ? std::to_string(*r.displaceSeed) : "");
+        sceneView_ = TraceView{r.scene, r.displaceSeed, r.width, r.height, {}, {}};
     }
     renderer_->selectStage(r.stage);
     renderer_->params() = ParamSet(renderer_->stage().params);
@@ -95,24 +91,34 @@ void Evaluator::reset() {
     truth_.reset();
 }
 
+std::string Evaluator::currentTraceKey() const {
+    TraceView view = sceneView_;
+    view.camera = renderer_->camera;
+    view.light = renderer_->lightPosition;
+    return traceKey(view);
+}
+
 const ReferenceImage& Evaluator::reference() {
     Renderer& r = *renderer_;
-    std::ostringstream key;
-    auto put = [&](const glm::vec3& v) {
-        key << "/" << exact(v.x) << "," << exact(v.y) << "," << exact(v.z);
-    };
-    key << sceneKey_ << "/" << exact(r.camera.fovyDegrees);
-    for (const glm::vec3& v : {r.lightPosition, r.camera.eye, r.camera.at}) put(v);
-    if (!truth_ || key.str() != referenceKey_) {
-        referenceKey_ = key.str();
+    const std::string key = currentTraceKey();
+    if (!truth_ || key != referenceKey_) {
+        referenceKey_ = key;
         auto found = truths_.find(referenceKey_);
         if (found != truths_.end()) {
             truth_ = found->second;
+            keepReference(referenceKey_);
         } else {
             truth_ = std::make_shared<Truth>();
-            truth_->reference = traceReference(r.scene(), r.camera, r.lightPosition,
-                                               context_->width(), context_->height());
-            ++traced_;
+            auto given = given_.find(key);
+            if (given != given_.end()) {
+                truth_->reference = std::move(given->second);
+                given_.erase(given);
+                ++givenUsed_;
+            } else {
+                truth_->reference = traceReference(r.scene(), r.camera, r.lightPosition,
+                                                   context_->width(), context_->height());
+                ++traced_;
+            }
             while (truthOrder_.size() >= maxTruths(context_->width(), context_->height())) {
                 truths_.erase(truthOrder_.front());
                 truthOrder_.erase(truthOrder_.begin());
@@ -122,6 +128,20 @@ const ReferenceImage& Evaluator::reference() {
         }
     }
     return truth_->reference;
+}
+
+bool Evaluator::keepReference(const std::string& key) {
+    if (given_.count(key)) return true;
+    if (!truths_.count(key)) return false;
+    // The views seen least recently go first (truthOrder_ from the oldest).
+    truthOrder_.erase(std::find(truthOrder_.begin(), truthOrder_.end(), key));
+    truthOrder_.push_back(key);
+    return true;
+}
+
+void Evaluator::giveReference(const std::string& key, ReferenceImage reference) {
+    if (truths_.count(key)) return;
+    given_[key] = std::move(reference);
 }
 
 const ReferenceShades& Evaluator::shades() {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/trace_view.h"
 #include "metrics/figures.h"  // Accuracy
 #include "metrics/shadow_metrics.h"
 #include "metrics/shadow_truth.h"
@@ -65,6 +66,16 @@ class Evaluator {
     // How many references this evaluator traced (a class should trace each view once), and how
     // many times it drew our shipped shaders' pictures of a view (ids, lighting: once a view).
     int tracedCount() const { return traced_; }
+    // A reference traced elsewhere (the page's Web Workers: eval/trace_view.h), kept under its
+    // view's key until reference() needs it: then it is used instead of tracing here.
+    void giveReference(const std::string& key, ReferenceImage reference);
+    // The key reference() looks the current view up by (traceKey of its view).
+    std::string currentTraceKey() const;
+    int givenUsedCount() const { return givenUsed_; }
+    void dropGiven() { given_.clear(); }
+    // Whether the view under `key` is traced or given already; a traced one becomes the last
+    // the Evaluator lets go (a stage about to use it must not lose it to the views it is given).
+    bool keepReference(const std::string& key);
     int shippedViewCount() const { return shippedViews_; }
     // How many times accuracy() measured our own shaders (no overlay): once a configuration.
     int oursMeasuredCount() const { return oursMeasured_; }
@@ -131,12 +142,14 @@ class Evaluator {
     };
     static constexpr std::size_t kMaxTruths = 8;
     static std::size_t maxTruths(int width, int height);
-    std::string sceneKey_;  // scene and size of the current renderer
+    TraceView sceneView_;  // scene, seed and size of the current renderer (camera, light: later)
+    std::map<std::string, ReferenceImage> given_;  // giveReference's, not yet used
     std::map<std::string, std::shared_ptr<Truth>> truths_;
     std::vector<std::string> truthOrder_;
     std::string referenceKey_;
     std::shared_ptr<Truth> truth_;  // the current view's
     int traced_ = 0;
+    int givenUsed_ = 0;
     int shippedViews_ = 0;
     int oursMeasured_ = 0;
 };

@@ -34,7 +34,32 @@ void CheckSteps::finishStage(std::vector<StageRecord>& made) {
     rowsBefore_ += p.rows.size();
     series_.reset();
     failed_.clear();
+    rig_->dropGiven();
+    offered_.clear();  // a later stage may need a view again once the Evaluator let it go
     ++stage_;
+}
+
+std::vector<TraceView> CheckSteps::viewsToTrace() {
+    std::vector<TraceView> views;
+    if (series_) return views;
+    std::size_t next = stage_;
+    while (next < plan_.stages.size() && !plan_.stages[next].rendered()) ++next;
+    if (next == plan_.stages.size()) return views;
+    for (const RowPlan& row : plan_.stages[next].rows) {
+        try {
+            TraceView view = traceViewOf(row.check.request);
+            const std::string key = traceKey(view);
+            if (rig_->keepReference(key) || !offered_.insert(key).second) continue;
+            views.push_back(std::move(view));
+        } catch (const std::exception&) {
+            // A view that cannot be found here (a scene that does not load) fails in its row.
+        }
+    }
+    return views;
+}
+
+void CheckSteps::giveReference(const std::string& key, ReferenceImage reference) {
+    rig_->giveReference(key, std::move(reference));
 }
 
 std::vector<StageRecord> CheckSteps::step() {

@@ -12,9 +12,11 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "eval/trace_view.h"
 #include "grade/check_run.h"
 #include "grade/record.h"
 
@@ -37,6 +39,16 @@ class CheckSteps {
     // The record so far: every stage made until now (done(): the whole record).
     StudentRecord record() const;
 
+    // The page's Web Workers trace the references (eval/trace_view.h): before a stage's first
+    // row, the views its rows are traced from that the Evaluator does not hold and that were not
+    // offered for this stage yet (a view a worker could not trace is traced here when needed);
+    // none while a stage is under way. giveReference hands one back by its key; what a stage
+    // was given and did not use is dropped when it ends.
+    std::vector<TraceView> viewsToTrace();
+    void giveReference(const std::string& key, ReferenceImage reference);
+    int tracedHere() const { return rig_->tracedCount(); }
+    int givenUsed() const { return rig_->givenUsedCount(); }
+
   private:
     void finishStage(std::vector<StageRecord>& made);
     GradingPlan plan_;
@@ -49,6 +61,7 @@ class CheckSteps {
     std::vector<StageRecord> stages_;
     std::vector<CheckResult> failed_;  // a row that threw: the stage's one result
     std::optional<CheckResult> lastRow_;
+    std::set<std::string> offered_;  // viewsToTrace's keys
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 

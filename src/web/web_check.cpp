@@ -14,6 +14,7 @@
 
 #include "course/assignment.h"
 #include "course/student_grade.h"
+#include "eval/trace_view.h"
 #include "gl/gl.h"
 #include "grade/check_plan.h"
 #include "grade/check_steps.h"
@@ -33,7 +34,8 @@ constexpr const char* kAssignment = "/assignment/assignment.json";
 
 struct PageCheck {
     std::unique_ptr<sl::CheckSteps> steps;
-    std::string snapshot, shown;  // the checked folder's snapshot, named as picked
+    std::vector<unsigned char> given;  // a reference's bytes from a worker (sl_web_check_buffer)
+    std::string snapshot, shown;       // the checked folder's snapshot, named as picked
     bool namesRelative = false;  // an assignment's check names files as in the hand-in, as natively
     int snapshots = 0;
     std::string text;
@@ -214,10 +216,47 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_check_step() {
     const auto& row = c.steps->lastRow();
     return handOver({{"done", c.steps->rowsDone()},
                      {"rows", c.steps->rowCount()},
+                     {"traced_here", c.steps->tracedHere()},
+                     {"traced_by_workers", c.steps->givenUsed()},
                      {"row", row ? sl::checkJson(*row) : nlohmann::json()},
                      {"name", row ? sl::checkTestName(*row) : ""},
                      {"stages", made},
                      {"finished", c.steps->done()}});
+}
+
+// The views the next stage's references are traced from, for the page's Web Workers (before
+// that stage's first step; eval/trace_view.h): [{"key", "view"}], empty when there are none.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_check_views() {
+    PageCheck& c = pageCheck();
+    nlohmann::json views = nlohmann::json::array();
+    if (c.steps)
+        for (const sl::TraceView& v : c.steps->viewsToTrace())
+            views.push_back({{"key", sl::traceKey(v)}, {"view", sl::traceViewJson(v)}});
+    return handOver(views);
+}
+
+// Room for `bytes` of a reference a worker traced: the page copies them there, then gives them.
+EMSCRIPTEN_KEEPALIVE unsigned char* sl_web_check_buffer(int bytes) {
+    PageCheck& c = pageCheck();
+    c.given.assign(std::size_t(std::max(bytes, 0)), 0);
+    return c.given.data();
+}
+
+// The reference of the view `key` as a worker traced it (its bytes in sl_web_check_buffer's
+// room): {} when taken, else {"error"} (the row then traces it on the page's thread).
+EMSCRIPTEN_KEEPALIVE const char* sl_web_check_give(const char* key, int width, int height,
+                                                   int mirrorObjectId) {
+    PageCheck& c = pageCheck();
+    if (!c.steps) return handOver({{"error", "no check running"}});
+    try {
+        c.steps->giveReference(key, sl::referenceFromBytes(width, height, mirrorObjectId,
+                                                           c.given.data(), c.given.size()));
+        c.given.clear();
+        c.given.shrink_to_fit();
+        return handOver(nlohmann::json::object());
+    } catch (const std::exception& e) {
+        return handOver({{"error", e.what()}});
+    }
 }
 
 // The report `check --report` writes for the same run (its record and the expectations file),

@@ -277,33 +277,47 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_frame() {
     }
 }
 
-// Turns the camera around its target (radians), as the window's drag does, and redraws.
-EMSCRIPTEN_KEEPALIVE const char* sl_web_orbit(float yaw, float pitch) {
+}  // extern "C"
+
+namespace {
+
+// A camera or light change the page asked for (a drag, `l`, `c`), then the stage redrawn.
+template <class Change>
+const char* redrawAfter(Change change) {
     Page& p = page();
     if (!p.renderer) return handOver("no stage selected");
-    const sl::Scene& scene = p.renderer->scene();
-    p.renderer->camera =
-        sl::orbitCamera(p.renderer->camera, yaw, pitch, sl::sceneReceiverHeight(scene));
+    change(p);
     return sl_web_frame();
+}
+
+}  // namespace
+
+extern "C" {
+
+// Turns the camera around its target (radians), as the window's drag does, and redraws.
+EMSCRIPTEN_KEEPALIVE const char* sl_web_orbit(float yaw, float pitch) {
+    return redrawAfter([=](Page& p) {
+        const sl::Scene& scene = p.renderer->scene();
+        p.renderer->camera =
+            sl::orbitCamera(p.renderer->camera, yaw, pitch, sl::sceneReceiverHeight(scene));
+    });
 }
 
 // The window's `l`, a step of it: the light circles the scene for `seconds` (at most one: a
 // longer gap is a pause, not a jump), and the stage redraws.
 EMSCRIPTEN_KEEPALIVE const char* sl_web_turn_light(double seconds) {
-    Page& p = page();
-    if (!p.renderer) return handOver("no stage selected");
-    p.renderer->lightPosition = sl::circlingLight(
-        p.renderer->lightPosition, sl::kLightRadiansPerSecond, std::clamp(seconds, 0.0, 1.0));
-    return sl_web_frame();
+    return redrawAfter([=](Page& p) {
+        p.renderer->lightPosition = sl::circlingLight(
+            p.renderer->lightPosition, sl::kLightRadiansPerSecond, std::clamp(seconds, 0.0, 1.0));
+    });
 }
 
 // The window's `c`: camera and light back where the stage began.
 EMSCRIPTEN_KEEPALIVE const char* sl_web_home() {
-    Page& p = page();
-    if (!p.renderer) return handOver("no stage selected");
-    p.renderer->camera = p.homeCamera;
-    p.renderer->lightPosition = p.homeLight;
-    return sl_web_frame();
+    return redrawAfter([](Page& p) {
+        p.renderer->camera = p.homeCamera;
+        p.renderer->lightPosition = p.homeLight;
+    });
 }
 
 // The stage's declared parameters with their values: "name\tvalue\trange\thelp" a line.

@@ -11,6 +11,8 @@ unless SHADOWLAB_WEB_REQUIRED=1 (CI's web step, which built the site first)."""
 import argparse
 import base64
 import concurrent.futures
+import functools
+import http.server
 import json
 import os
 import pathlib
@@ -18,6 +20,7 @@ import re
 import shutil
 import subprocess
 import sys
+import threading
 import time
 
 SKIP = 77
@@ -303,10 +306,24 @@ def exit_code(failures):
     return 1 if failures else 0
 
 
-def open_page(driver, site):
-    """Opens the site's page from the disk and waits until it is ready (30 s at most); returns
-    whether it became ready."""
-    driver.get(pathlib.Path(site, "index.html").resolve().as_uri())
+def serve(site):
+    """Serves the site over HTTP on a free port of 127.0.0.1 (as a course's static host does), in
+    a thread of this process; returns the page's address."""
+    handler = functools.partial(QuietHandler, directory=str(site))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    return f"http://127.0.0.1:{server.server_address[1]}/index.html"
+
+
+class QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+
+def open_page(driver, site, address=None):
+    """Opens the site's page (from the disk, or at `address`) and waits until it is ready (30 s
+    at most); returns whether it became ready."""
+    driver.get(address or pathlib.Path(site, "index.html").resolve().as_uri())
     for _ in range(300):
         if driver.execute_script("return window.shadowlab && window.shadowlab.ready"):
             return True

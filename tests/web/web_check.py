@@ -20,13 +20,20 @@ import time
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import web_browser  # noqa: E402  (the browser, the folder picker, the skip rule)
 
+# The check as a student starts it; while it runs, a 20 ms timer measures the page's longest
+# pause (what a student's clicks wait for).
 RUN = """
 const [what, seed, done] = arguments;
 document.getElementById('seed').value = seed;
+let last = performance.now(), pause = 0;
+const beat = setInterval(() => { const now = performance.now();
+                                 pause = Math.max(pause, now - last); last = now; }, 20);
 shadowlab.startCheck(what);
 const wait = () => shadowlab.check.running ? setTimeout(wait, 100)
-  : done({report: shadowlab.check.report, error: shadowlab.check.error,
-          seconds: shadowlab.check.seconds, state: document.getElementById('checkState').textContent});
+  : (clearInterval(beat), done({report: shadowlab.check.report, error: shadowlab.check.error,
+          seconds: shadowlab.check.seconds, state: document.getElementById('checkState').textContent,
+          traced_here: shadowlab.check.tracedHere || 0,
+          traced_by_workers: shadowlab.check.tracedByWorkers || 0, longest_pause_ms: pause}));
 wait();
 """
 
@@ -134,13 +141,35 @@ def check_case(driver, args, out, name, what, folder):
             "if (p) p.click(); return !!p"):
         time.sleep(0.5)
         driver.save_screenshot(str(shot))
+    if args.serve and got["traced_here"]:
+        # Served, the workers trace every view: a row that traced on the page's thread looked up a
+        # key its view did not predict (eval/trace_view.h).
+        failures.append(f"{name}: {got['traced_here']} references traced on the page's thread, "
+                        f"{got['traced_by_workers']} by its workers")
     rows = sum(len(s["rows"]) for s in page["stages"])
     verdicts = " ".join(sorted({r["verdict"] for _, r in rows_of(page)}))
     print(f"web: check {name:34} {rows:3} rows ({verdicts}): "
           f"{'same verdicts' if not failures else 'DIFFER'}, largest figure gap {worst[0]:.3g} "
-          f"({worst[1]}); page {got['seconds']:.1f} s, native {native_s:.1f} s")
+          f"({worst[1]}); page {got['seconds']:.1f} s, native {native_s:.1f} s; traced by "
+          f"workers {got['traced_by_workers']}, on the page's thread {got['traced_here']}; "
+          f"longest pause {got['longest_pause_ms'] / 1000:.2f} s")
     return failures, {"rows": rows, "page_s": got["seconds"], "native_s": native_s,
-                      "figure_gap": worst[0], "gap_figure": worst[1], "same": not failures}
+                      "figure_gap": worst[0], "gap_figure": worst[1], "same": not failures,
+                      "traced_by_workers": got["traced_by_workers"],
+                      "traced_here": got["traced_here"],
+                      "longest_pause_s": got["longest_pause_ms"] / 1000}
+
+
+def wait_for_tracers(driver):
+    """Served, the page starts a tracer a core (at most 4): waits until they are up (60 s)."""
+    want = driver.execute_script("return Math.max(1, Math.min(4, navigator.hardwareConcurrency || 1))")
+    for _ in range(600):
+        if driver.execute_script("return shadowlab.tracers.ready.length") == want:
+            return True
+        if driver.execute_script("return shadowlab.tracers.failed"):
+            return False
+        time.sleep(0.1)
+    return False
 
 
 def solution_lines(repo):
@@ -200,6 +229,9 @@ def main():
                     help="the site is the student edition's: no solution in it, the starter 0")
     ap.add_argument("--per-verdict", type=int, default=0,
                     help="only the first N cases of each stage and expected verdict (0: all)")
+    ap.add_argument("--serve", action="store_true",
+                    help="serve the site over HTTP, as a course does: the page's Web Workers "
+                         "trace every reference (a page opened from the disk traces on its thread)")
     args = ap.parse_args()
     if args.seed is None:
         shipped = pathlib.Path(__file__).resolve().parents[2] / "src/stages/drawn_figures.json"
@@ -209,8 +241,13 @@ def main():
     driver.set_script_timeout(1800)
     failures, summary = [], {}
     try:
-        if not web_browser.open_page(driver, args.site):
+        address = web_browser.serve(args.site) if args.serve else None
+        if not web_browser.open_page(driver, args.site, address):
             print("web: FAILED: the page never became ready")
+            return 1
+        if args.serve and not wait_for_tracers(driver):
+            print("web: FAILED: the page's reference tracers never started "
+                  f"({driver.execute_script('return shadowlab.tracers.failed')!r})")
             return 1
         runs = set(driver.execute_script(
             "return shadowlab.stages.filter(s => !s.nativeOnly).map(s => s.id)"))
