@@ -115,8 +115,11 @@ StudentWork intakeOrThrow(const std::string& path, const std::string& workDir,
     std::string root;
     const std::string handedIn = printableName(fs::path(path).filename().string());
     std::vector<std::pair<std::string, std::string>> shownAs;  // inner zip first: longer path
+    UnpackLimits limits;
+    limits.asideName = ownReport;  // bounded by the intake's own limit for it, not a shader's
+    limits.asideBytes = kMaxSetAsideBytes;
     if (S_ISREG(st.st_mode) && endsWithZip(path)) {
-        std::string err = unpackZip(path, workDir + "/unpacked", {}, &s.notes);
+        std::string err = unpackZip(path, workDir + "/unpacked", limits, &s.notes);
         if (!err.empty()) {
             s.error = handedIn + " refused: " + err;
             return s;
@@ -132,7 +135,7 @@ StudentWork intakeOrThrow(const std::string& path, const std::string& workDir,
     if (std::string zip = innerZip(root); !zip.empty()) {
         // The inner zip as the student knows it: inside their own archive or folder.
         std::string inner = handedIn + zip.substr(root.size());
-        std::string err = unpackZip(zip, workDir + "/unpacked-inner", {}, &s.notes);
+        std::string err = unpackZip(zip, workDir + "/unpacked-inner", limits, &s.notes);
         if (!err.empty()) {
             s.error = printableName(inner) + " refused: " + err;
             return s;

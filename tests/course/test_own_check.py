@@ -7,6 +7,8 @@ shadow: rows that pass and rows that fail):
   doctored    a zip, in a wrapper folder, with that report edited: a FAIL row said PASS and the
               score set to the maximum: the grade unchanged, the row listed as a disagreement
   garbage     a report that is not JSON: a note naming the file, the grade unchanged
+  padded.zip  the honest report padded to 2 MiB (over a zip's 1 MB per shader): compared, agrees
+  huge.zip    a report of 5 MiB (over its 4 MiB): left out with a note, the hand-in still graded
 Every count comes from the report `check` wrote, none is pinned here.
 usage: test_own_check.py SHADOWLAB REPO WORKDIR"""
 import json, os, shutil, subprocess, sys, zipfile
@@ -68,10 +70,18 @@ with zipfile.ZipFile(os.path.join(klass, "doctored.zip"), "w") as z:
         z.write(os.path.join(hand, rel), "doctored_lab/" + rel)
     z.writestr("doctored_lab/" + REPORT, json.dumps(doctored))
 
+for name, size in [("padded", 2 << 20), ("huge", 5 << 20)]:
+    text = json.dumps(report)
+    with zipfile.ZipFile(os.path.join(klass, name + ".zip"), "w", zipfile.ZIP_DEFLATED) as z:
+        for rel in ["rgb/lit.frag", "depth/lit.frag"]:
+            z.write(os.path.join(hand, rel), rel)
+        z.writestr(REPORT, text + " " * (size - len(text)))
+
 out = os.path.join(work, "out")
 r = grade(exe, klass, lab, out, "--seed", SEED, "--time-limit", "300")
 expect(r.returncode == 0, "grade: exit %d" % r.returncode)
-rec = {n: json.load(open(os.path.join(out, "students", n + ".json"))) for n in ["honest", "doctored", "garbage"]}
+names = ["honest", "doctored", "garbage", "padded", "huge"]
+rec = {n: json.load(open(os.path.join(out, "students", n + ".json"))) for n in names}
 for name, rc in rec.items():
     # The report is never a score, never a shader, never a missing stage.
     expect(rc["score"] == report["score"], "%s: score %s, check said %s" % (name, rc["score"], report["score"]))
@@ -80,28 +90,33 @@ for name, rc in rec.items():
     expect(REPORT not in rc["files"], "%s: the report is listed as a hand-in file" % name)
     expect(not os.path.exists(os.path.join(out, "work", name, "snapshot", REPORT)),
            "%s: the report was copied into the snapshot" % name)
-    expect(rc["own_check"] is not None and rc["own_check"]["file"] == REPORT, "%s: own_check %s" % (name, rc["own_check"]))
+    if name != "huge":
+        expect(rc["own_check"] is not None and rc["own_check"]["file"] == REPORT, "%s: own_check %s" % (name, rc["own_check"]))
 
-honest = rec["honest"]["own_check"]
-expect(honest["problem"] is None and honest["compared"] == len(rows) and honest["agreed"] == len(rows)
-       and honest["disagreed"] == 0 and honest["unmatched"] == 0 and honest["not_comparable"] == 0,
-       "honest: %s" % honest)
-expect(honest["machine"] == report["machine"], "honest: machine %s" % honest["machine"])
-expect(not any(REPORT in n for n in rec["honest"]["notes"]), "honest: notes %s" % rec["honest"]["notes"])
-d = rec["doctored"]["own_check"]
-expect(d["problem"] is None and d["compared"] == len(rows) and d["agreed"] == len(rows) - 1
-       and d["disagreed"] == 1, "doctored: %s" % d)
-expect(d["disagreements"] == [{"stage": edited["stage"], "tree": edited["tree"], "row": edited["name"],
+for name in ["honest", "padded"]:
+    honest = rec[name]["own_check"] or {}
+    want = {"problem": None, "compared": len(rows), "agreed": len(rows), "disagreed": 0,
+            "unmatched": 0, "not_comparable": 0, "machine": report["machine"]}
+    expect(all(honest.get(k) == v for k, v in want.items()), "%s: %s" % (name, honest))
+    expect(not any(REPORT in n for n in rec[name]["notes"]), "%s: notes %s" % (name, rec[name]["notes"]))
+h = rec["huge"]
+expect(h["own_check"] is None and h["notes"] == ["'%s' unpacks to more than 4096 KB: left out" % REPORT],
+       "huge: %s, notes %s" % (h["own_check"], h["notes"]))
+d = rec["doctored"]["own_check"] or {}
+expect(d.get("problem", "") is None and d.get("compared") == len(rows) and d.get("agreed") == len(rows) - 1
+       and d.get("disagreed") == 1, "doctored: %s" % d)
+expect(d.get("disagreements") == [{"stage": edited["stage"], "tree": edited["tree"], "row": edited["name"],
                                "home": "PASS", "grade": "FAIL", "seen": True}],
        "doctored: disagreements %s" % d["disagreements"])
 g = rec["garbage"]
-expect(g["own_check"]["problem"] == "not JSON" and g["own_check"]["compared"] == 0, "garbage: %s" % g["own_check"])
+expect((g["own_check"] or {}).get("problem") == "not JSON" and g["own_check"]["compared"] == 0,
+       "garbage: %s" % g["own_check"])
 expect(g["notes"] == ["`%s` (your own check report) was not compared with the grade: not JSON" % REPORT],
        "garbage: notes %s" % g["notes"])
 
 page = lambda name: open(os.path.join(out, name), encoding="utf-8").read()
 klass_page = page("class.html")
-expect("3 students handed in their own check report; 1 agreed with the grade on every row compared"
+expect("4 students handed in their own check report; 2 agreed with the grade on every row compared"
        in klass_page, "class page: no own check summary")
 section = klass_page[klass_page.find("Own check reports"):]
 expect("%s: PASS at home, FAIL graded" % edited["name"] in section and "<td>1 of %d</td>" % len(rows) in section,
@@ -114,4 +129,5 @@ expect("agreed with the grade on %d of %d rows: it said PASS where the grade say
 expect("agreed with the grade on %d of %d rows." % (len(rows), len(rows)) in page("feedback/honest.html"),
        "honest's page: no line")
 expect("not compared with the grade: not JSON" in page("feedback/garbage.html"), "garbage's page: no note")
-finish("own check: honest agrees on %d rows, the doctored row found, garbage a note; grades unchanged" % len(rows))
+finish("own check: honest (folder and 2 MiB zip) agrees on %d rows, the doctored row found, garbage and "
+       "a 5 MiB report notes; grades unchanged" % len(rows))
