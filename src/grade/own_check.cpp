@@ -106,6 +106,9 @@ OwnCheck compareOwnCheck(const HandInFile& report, const StudentRecord& grade) {
     if (o.compared == 0 && o.notComparable == 0)
         o.problem =
             "none of its " + std::to_string(o.unmatched) + " rows is a row this assignment grades";
+    else if (o.compared == 0)  // nothing to agree on: said, not counted as agreeing
+        o.problem = "none of its rows could be compared (" + std::to_string(o.notComparable) +
+                    " at another displaced-view seed than the grade's, or not graded)";
     return o;
 }
 

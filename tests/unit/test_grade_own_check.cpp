@@ -149,6 +149,12 @@ TEST(OwnCheck, GarbageIsAProblemNamingTheFileNeverAnError) {
     j = nlohmann::json::parse(reportOf(graded()).text);
     for (auto& r : j["stages"][0]["rows"]) r["view"] = "nowhere";
     EXPECT_EQ(problemOf(j.dump()), "none of its 4 rows is a row this assignment grades");
+    j = nlohmann::json::parse(reportOf(graded()).text);
+    j["stages"][0]["rows"] = {j["stages"][0]["rows"][3]};  // the displaced row only
+    j["stages"][0]["rows"][0]["seed"] = 8;
+    EXPECT_EQ(problemOf(j.dump()),
+              "none of its rows could be compared (1 at another displaced-view seed than the "
+              "grade's, or not graded)");
     // What the intake could not read comes through as it said it.
     OwnCheck o =
         compareOwnCheck({"check-report.json", "", "it has more than 4194304 bytes"}, graded());
