@@ -82,3 +82,7 @@ set_tests_properties(course_student_page PROPERTIES LABELS course TIMEOUT 600)
 add_test(NAME course_names_disks
          COMMAND python3 ${SL_COURSE_PY}/test_names_disks.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/names-disks)
 set_tests_properties(course_names_disks PROPERTIES LABELS course TIMEOUT 300)
+# A student's own check report handed in: compared with the grade, never a score (issue 36).
+add_test(NAME course_own_check
+         COMMAND python3 ${SL_COURSE_PY}/test_own_check.py $<TARGET_FILE:shadowlab> ${CMAKE_SOURCE_DIR} ${SL_COURSE_DIR}/own-check)
+set_tests_properties(course_own_check PROPERTIES LABELS course TIMEOUT 300)

@@ -15,6 +15,10 @@ struct UnpackLimits {
     std::size_t maxFileBytes = 1u << 20;    // a shader is read up to 1 MB anyway
     std::size_t maxTotalBytes = 16u << 20;  // the whole submission
     std::size_t maxArchiveBytes = 16u << 20;
+    // Entries of this base name (a student's own check report, which the intake sets aside) may
+    // hold up to `asideBytes`; a larger one is left out with a note, never refusing the archive.
+    std::string asideName;
+    std::size_t asideBytes = 0;
 };
 
 // Unpacks `zip` into the folder `target` (created; must not exist). Returns "" or why the

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <set>
@@ -256,6 +257,23 @@ ExtraView readExtraView(const Reader& in, const json& j, const std::string& path
     return v;
 }
 
+// The file name of a student's own check report in a hand-in: a plain .json name at its top
+// (beside the stage folders), which the intake sets aside and never grades.
+std::string readOwnCheckReport(const Reader& in, const json& j) {
+    const std::string name = in.text(j, "/own_check_report");
+    const bool plain =
+        !name.empty() && name.size() <= 64 && std::all_of(name.begin(), name.end(), [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
+        });
+    if (!plain || name[0] == '.' || name.size() < 6 ||
+        name.compare(name.size() - 5, 5, ".json") != 0)
+        in.fail("/own_check_report",
+                "'" + printableName(name) +
+                    "' must be a file name ending in .json (letters, digits, '.', '_', '-'; at "
+                    "most 64), e.g. check-report.json");
+    return name;
+}
+
 }  // namespace
 
 std::vector<const AssignmentStage*> Assignment::due() const {
@@ -301,12 +319,16 @@ Assignment parseAssignment(const std::string& text, const std::string& origin) {
     Assignment a;
     a.lines = jsonValueLines(text);
     Reader in(origin, a.lines);
-    in.allowKeys(j, "", {"name", "due_date", "stages", "extra_views", "comment", "late"});
+    in.allowKeys(
+        j, "",
+        {"name", "due_date", "stages", "extra_views", "comment", "late", "own_check_report"});
     a.origin = origin;
     if (!j.contains("name")) in.fail("/name", "missing (the assignment's name)");
     a.name = in.text(j["name"], "/name");
     if (j.contains("due_date")) a.dueDate = in.text(j["due_date"], "/due_date");
     if (j.contains("late")) a.late = readLate(in, j["late"]);
+    if (j.contains("own_check_report"))
+        a.ownCheckReport = readOwnCheckReport(in, j["own_check_report"]);
     if (!j.contains("stages")) in.fail("/stages", "missing (the stages of the assignment)");
     if (!j["stages"].is_array() || j["stages"].empty() || j["stages"].size() > 64)
         in.fail("/stages", "must be an array of 1 to 64 stages");
@@ -365,6 +387,8 @@ Assignment parseAssignment(const std::string& text, const std::string& origin) {
                                           {"views", views},
                                           {"todo", s.todo}});
     }
+    // The student hands the report in by this name: they must read it.
+    if (!a.ownCheckReport.empty()) a.publicJson["own_check_report"] = a.ownCheckReport;
     checkAssignmentMeaning(a);
     return a;
 }

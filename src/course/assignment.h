@@ -50,6 +50,9 @@ struct Assignment {
     std::optional<LatePolicy> late;
     std::vector<AssignmentStage> stages;
     std::vector<ExtraView> extraViews;
+    // The file name a hand-in may carry at its top: the student's own `check --report`, compared
+    // with the grade, never trusted (grade/own_check.h). "" = none: such a file is any file.
+    std::string ownCheckReport;
     nlohmann::json publicJson;         // what a student may see: no extra views, no hidden weights
     std::map<std::string, int> lines;  // every value's JSON pointer -> its line in the file
     std::vector<const AssignmentStage*> due() const;

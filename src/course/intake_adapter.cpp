@@ -101,7 +101,7 @@ namespace {
 
 StudentWork intakeOrThrow(const std::string& path, const std::string& workDir,
                           const std::vector<std::string>& stages,
-                          const std::set<std::string>& listed) {
+                          const std::set<std::string>& listed, const std::string& ownReport) {
     StudentWork s;
     s.name = submissionName(path);
     std::error_code ec;
@@ -115,8 +115,11 @@ StudentWork intakeOrThrow(const std::string& path, const std::string& workDir,
     std::string root;
     const std::string handedIn = printableName(fs::path(path).filename().string());
     std::vector<std::pair<std::string, std::string>> shownAs;  // inner zip first: longer path
+    UnpackLimits limits;
+    limits.asideName = ownReport;  // bounded by the intake's own limit for it, not a shader's
+    limits.asideBytes = kMaxSetAsideBytes;
     if (S_ISREG(st.st_mode) && endsWithZip(path)) {
-        std::string err = unpackZip(path, workDir + "/unpacked", {}, &s.notes);
+        std::string err = unpackZip(path, workDir + "/unpacked", limits, &s.notes);
         if (!err.empty()) {
             s.error = handedIn + " refused: " + err;
             return s;
@@ -132,7 +135,7 @@ StudentWork intakeOrThrow(const std::string& path, const std::string& workDir,
     if (std::string zip = innerZip(root); !zip.empty()) {
         // The inner zip as the student knows it: inside their own archive or folder.
         std::string inner = handedIn + zip.substr(root.size());
-        std::string err = unpackZip(zip, workDir + "/unpacked-inner", {}, &s.notes);
+        std::string err = unpackZip(zip, workDir + "/unpacked-inner", limits, &s.notes);
         if (!err.empty()) {
             s.error = printableName(inner) + " refused: " + err;
             return s;
@@ -146,8 +149,10 @@ StudentWork intakeOrThrow(const std::string& path, const std::string& workDir,
     fs::permissions(snapshot, fs::perms::owner_all, ec);
     s.overlay = snapshot;
     try {
-        Submission sub = takeSubmission(root, snapshot, shippedTrees().both, stages, listed);
+        Submission sub =
+            takeSubmission(root, snapshot, shippedTrees().both, stages, listed, ownReport);
         s.files = sub.files;
+        s.ownReport = std::move(sub.setAside);
         for (const std::string& note : sub.notes) s.notes.push_back(namedAsHandedIn(note, shownAs));
     } catch (const NothingHandedIn& e) {
         s.notes.push_back(namedAsHandedIn(e.what(), shownAs));  // every due stage MISSING
@@ -163,9 +168,9 @@ StudentWork intakeOrThrow(const std::string& path, const std::string& workDir,
 
 StudentWork intakeSubmission(const std::string& path, const std::string& workDir,
                              const std::vector<std::string>& stages,
-                             const std::set<std::string>& listed) {
+                             const std::set<std::string>& listed, const std::string& ownReport) {
     try {
-        StudentWork s = intakeOrThrow(path, workDir, stages, listed);
+        StudentWork s = intakeOrThrow(path, workDir, stages, listed, ownReport);
         hideInstructorPaths(s, path, workDir);
         return s;
     } catch (const SnapshotWriteError& e) {  // a full disk: NOT GRADED, never a score
@@ -183,7 +188,7 @@ StudentWork intakeForAssignment(const Assignment& a, const std::string& path,
                                 const std::string& workDir) {
     std::set<std::string> listed;
     for (const AssignmentStage* st : a.due()) listed.insert(st->files.begin(), st->files.end());
-    StudentWork s = intakeSubmission(path, workDir, dueStageNames(a), listed);
+    StudentWork s = intakeSubmission(path, workDir, dueStageNames(a), listed, a.ownCheckReport);
     std::vector<std::string> more = unlistedFileNotes(a, s);
     s.notes.insert(s.notes.end(), more.begin(), more.end());
     return s;

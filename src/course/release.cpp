@@ -96,6 +96,14 @@ std::string studentReadme(const Assignment& a) {
     r << "\nA stage whose file is not in your hand-in is MISSING and gets no points. Files you "
          "did\n"
       << "not change may stay in the folder.\n";
+    if (!a.ownCheckReport.empty())
+        r << "\nYou may also hand in the report of your own check, named `" << a.ownCheckReport
+          << "`, at the top of\nthe folder beside the stage folders (`check` writes outputs "
+             "outside the folder it grades):\n\n```sh\n"
+          << "shadowlab check --assignment assignment.json --shaders shaders --report "
+          << a.ownCheckReport << "\ncp " << a.ownCheckReport << " shaders/\n```\n\n"
+          << "It earns nothing and changes nothing (every check is run again); your feedback "
+             "page\nsays where your machine's verdicts differ from the grader's.\n";
     return r.str();
 }
 

@@ -1,6 +1,7 @@
 #include "feedback/class_page.h"
 
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -90,6 +91,52 @@ std::string totalCells(const StudentRecord& r) {
            numText(r.total()) + " / " + numText(r.maxScore) + "</td>";
 }
 
+// The students' own check reports against their grades (grade/own_check.h), for the instructor:
+// who handed one in, whose disagreed (how many rows, on what machine, the first few) and whose
+// could not be compared. Never a score; a row that disagrees on an honest report points at a
+// driver difference.
+std::string ownChecksTable(const std::vector<StudentRecord>& records,
+                           const std::vector<std::string>& pages) {
+    constexpr std::size_t kNamed = 3;
+    std::ostringstream rows;
+    int handedIn = 0, allAgreed = 0;
+    for (std::size_t k = 0; k < records.size(); ++k) {
+        const std::optional<OwnCheck>& o = records[k].ownCheck;
+        if (!o) continue;
+        ++handedIn;
+        if (o->problem.empty() && o->disagreed == 0) {
+            ++allAgreed;
+            continue;
+        }
+        rows << "<tr><td><a href=\"" << esc(pages[k]) << "\">"
+             << esc(escapedName(records[k].student)) << "</a></td><td>"
+             << esc(o->machine.empty() ? o->backend : o->machine) << "</td>";
+        if (!o->problem.empty()) {
+            rows << "<td></td><td class=\"msg\">not compared: " << esc(o->problem)
+                 << "</td></tr>\n";
+            continue;
+        }
+        rows << "<td>" << o->disagreed << " of " << o->compared << "</td><td class=\"msg\">";
+        for (std::size_t i = 0; i < o->disagreements.size() && i < kNamed; ++i) {
+            const OwnCheckRow& d = o->disagreements[i];
+            rows << (i ? "; " : "") << esc(d.row) << ": " << esc(statusName(d.home)) << " at home, "
+                 << esc(statusName(d.grade)) << " graded";
+        }
+        if (o->disagreed > int(kNamed)) rows << "; and " << o->disagreed - int(kNamed) << " more";
+        rows << "</td></tr>\n";
+    }
+    if (handedIn == 0) return "";
+    std::ostringstream h;
+    h << "<h2>Own check reports (for the instructor: not a score)</h2>\n<p>" << handedIn
+      << (handedIn == 1 ? " student" : " students") << " handed in their own check report; "
+      << allAgreed << " agreed with the grade on every row compared.</p>\n";
+    if (!rows.str().empty())
+        h << "<table class=\"own-checks\"><tr><th>student</th><th>their machine</th><th>rows "
+             "that disagree</th><th>first rows (their verdict, the grade's)</th></tr>\n"
+          << rows.str() << "</table>\n";
+    return h.str();
+}
+
 }  // namespace
 
 std::string classPage(const std::string& assignment, const std::vector<StudentRecord>& records,
@@ -161,6 +208,7 @@ std::string classPage(const std::string& assignment, const std::vector<StudentRe
         h << "<h2>Notes from the source rules (for the instructor: not a score)</h2>\n"
              "<table><tr><th>student</th><th>stage</th><th>note</th></tr>\n"
           << notes.str() << "</table>\n";
+    h << ownChecksTable(records, pages);
     h << copiesTables(copies, records, pages);
     if (!skipped.empty()) {
         h << "<h2>Left out of the class folder (not hand-ins)</h2>\n<ul>\n";

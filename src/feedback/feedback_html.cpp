@@ -196,6 +196,33 @@ std::string sourceNotesOf(const StageRecord& st) {
            items.str() + "</ul>\n";
 }
 
+// The student's own check report against the grade (grade/own_check.h), counting only rows whose
+// grade they see, and the first few where their machine said otherwise. Nothing when it was not
+// compared: the record's notes say why.
+std::string ownCheckLine(const OwnCheck& o) {
+    constexpr int kNamed = 3;
+    if (!o.problem.empty() || o.seenCompared == 0) return "";
+    const std::string machine = o.machine.empty() ? o.backend : o.machine;
+    std::ostringstream h;
+    h << "<p class=\"own-check\">Your own check (" << esc(o.file)
+      << (machine.empty() ? "" : ", on " + esc(machine)) << ") agreed with the grade on "
+      << o.seenAgreed << " of " << o.seenCompared << (o.seenCompared == 1 ? " row" : " rows");
+    int named = 0;
+    for (const OwnCheckRow& d : o.disagreements) {
+        if (!d.seen || named == kNamed) continue;
+        h << (named++ ? "; " : ": ") << "it said " << esc(statusName(d.home))
+          << " where the grade says " << esc(statusName(d.grade)) << " on " << esc(d.row);
+    }
+    const int more = o.seenCompared - o.seenAgreed - named;
+    if (more > 0) h << "; and " << more << " more";
+    h << ".";
+    if (o.seenAgreed < o.seenCompared)
+        h << " The grade is what counts: every row was rendered again here. A row your machine "
+             "judged otherwise may be a driver difference; ask your instructor.";
+    h << "</p>\n";
+    return h.str();
+}
+
 std::string pointsOf(double points, double max, Status status) {
     return status == Status::NotGraded ? "not graded"
                                        : numText(points) + " of " + numText(max) + " points";
@@ -221,6 +248,7 @@ std::string studentPage(const StudentRecord& record) {
           << "</p>\n";
     if (!record.error.empty()) h << "<p class=\"ERROR\">" << esc(record.error) << "</p>\n";
     for (const std::string& n : record.notes) h << "<p>Note: " << esc(n) << "</p>\n";
+    if (record.ownCheck) h << ownCheckLine(*record.ownCheck);
     h << stagesSummary(record);
     int hiddenStages = 0;  // graded, but neither named nor shown: the student sees no result
     for (const StageRecord& st : record.stages) {

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <optional>
 
+#include "grade/own_check.h"
+
 namespace sl {
 
 std::size_t roundCount(std::size_t n) {
@@ -87,6 +89,8 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
             record = buildRecord(plans[k], s, stages, pending[k].seconds);
         }
         record.seed = settings.seed;
+        // The student's own check report: compared once the grade is made, never a score.
+        if (s.error.empty() && s.ownReport) attachOwnCheck(record, *s.ownReport);
         done(k, std::move(record));
     };
     // Students with nothing to render are done before any worker starts.

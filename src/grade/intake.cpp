@@ -81,6 +81,8 @@ struct Walk {
     int entries = 0;
     std::size_t bytes = 0;
     const std::set<std::string>* shipped = nullptr;
+    std::string setAside;  // a top-level name not copied (Submission::setAside)
+    bool setAsideSeen = false;
     std::vector<std::string> files, notes, skipped;
 };
 
@@ -97,6 +99,10 @@ void copyTree(Walk& w, int fd, const std::string& rel, int outFd, int depth) {
                           " deep");
     for (const std::string& name : listFolder(fd, w.entries, shown)) {
         std::string path = joinRel(rel, name);
+        if (rel.empty() && !w.setAside.empty() && name == w.setAside) {
+            w.setAsideSeen = true;  // read apart, bounded: never a shader, never in the snapshot
+            continue;
+        }
         int f = ::openat(fd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
         if (f < 0) {
             w.skipped.push_back("`" + printableName(path) + "` was not used: " +
@@ -322,7 +328,7 @@ const ShippedTrees& shippedTrees() {
 Submission takeSubmission(const std::string& folder, const std::string& privateDir,
                           const std::set<std::string>& shipped,
                           const std::vector<std::string>& stages,
-                          const std::set<std::string>& listed) {
+                          const std::set<std::string>& listed, const std::string& setAside) {
     Submission s;
     s.source = s.folder = folder;
     s.root = privateDir;
@@ -359,7 +365,13 @@ Submission takeSubmission(const std::string& folder, const std::string& privateD
     Walk w;
     w.shownRoot = s.folder;
     w.shipped = &shipped;
+    w.setAside = setAside;
     copyTree(w, reading.fd, "", out.fd, 0);
+    if (w.setAsideSeen) {
+        HandInFile f{setAside, "", ""};
+        f.problem = readRegularFile(joinRel(s.folder, setAside), kMaxSetAsideBytes, f.text, true);
+        s.setAside = std::move(f);
+    }
     std::sort(w.files.begin(), w.files.end());
     s.files = w.files;
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "gl/shader_library.h"
+#include "grade/plan.h"
 #include "sandbox/private_dir.h"
 
 namespace sl {
@@ -56,7 +57,13 @@ struct Submission {
     std::vector<std::string> files;  // every file copied, relative to root, sorted
     std::vector<std::string> notes;  // one line each: wrapper, near misses, links skipped
     std::string hash;                // io/content_hash.h of the snapshot: what is graded
+    // The file named `setAside` at the top of `folder`, when there: never in `files` or `root`.
+    std::optional<HandInFile> setAside;
 };
+
+// The most a set-aside file (a student's own check report) may hold: `check --all`'s report of
+// every stage in both trees is 1.1 MB.
+constexpr std::size_t kMaxSetAsideBytes = 4u << 20;
 
 // Editor and archive leftovers (`__MACOSX`, `.DS_Store` and other hidden names, `*~`, `#x#`,
 // `.swp`, `.bak`...): never a shader, never mentioned.
@@ -86,11 +93,15 @@ const ShippedTrees& shippedTrees();
 // stages being graded, the only ones a near miss suggests when given ("did you mean
 // `margin/lit.frag`?"); `listed`, when not empty: the files an assignment grades, the only ones
 // a top-level file's note suggests (mirror/lit.frag is mirror's, but an assignment may grade
-// only mirror/surface.frag). Throws IntakeError when nothing replaces a shipped file.
+// only mirror/surface.frag); `setAside`, when not empty: a file name at the top of the folder
+// read (below its wrappers) that is never a shader: not copied, not listed, read into
+// Submission::setAside within kMaxSetAsideBytes. Throws IntakeError when nothing replaces a
+// shipped file.
 Submission takeSubmission(const std::string& folder, const std::string& privateDir,
                           const std::set<std::string>& shipped,
                           const std::vector<std::string>& stages = {},
-                          const std::set<std::string>& listed = {});
+                          const std::set<std::string>& listed = {},
+                          const std::string& setAside = "");
 
 // The stage's own files (`<stage>/...`) that came from the student and replace one of
 // `shipped` (one tree's files): none means the stage is MISSING.

@@ -4,6 +4,7 @@
 // one (grade/check_session.h): one path grades both.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,14 @@ struct GradingPlan {
     std::vector<StagePlan> stages;
 };
 
+// A file a hand-in may carry at its top level beside the shaders and that is never graded (the
+// student's own check report, an assignment's "own_check_report"): set aside by the intake, not
+// copied into the snapshot, read with a bound. `text` is its bytes, or `problem` why they could
+// not be read ("it has more than N bytes").
+struct HandInFile {
+    std::string name, text, problem;
+};
+
 // A student's hand-in as it was taken in (grade/intake.h; course/intake_adapter.h for zips):
 // the private snapshot graded, its files, what the intake noticed.
 struct StudentWork {
@@ -45,6 +54,7 @@ struct StudentWork {
     std::string error;               // why the submission could not be read at all ("" = ok)
     bool platformFailure = false;    // `error` is the grading machine's (a full disk): NOT GRADED
     std::string hash;                // the content hash of the snapshot's files ("" = none)
+    std::optional<HandInFile> ownReport;  // the student's own check report, when handed in
     bool has(const std::string& rel) const;
 };
 

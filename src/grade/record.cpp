@@ -316,6 +316,55 @@ static json adjustmentsJson(const std::vector<Adjustment>& adjustments) {
     return out;
 }
 
+static json ownCheckJson(const std::optional<OwnCheck>& o) {
+    if (!o) return json();
+    json rows = json::array();
+    for (const OwnCheckRow& d : o->disagreements)
+        rows.push_back({{"stage", d.stage},
+                        {"tree", d.tree},
+                        {"row", d.row},
+                        {"home", statusName(d.home)},
+                        {"grade", statusName(d.grade)},
+                        {"seen", d.seen}});
+    return {{"file", o->file},
+            {"problem", o->problem.empty() ? json() : json(o->problem)},
+            {"machine", {{"backend", o->backend}, {"renderer", o->machine}}},
+            {"compared", o->compared},
+            {"agreed", o->agreed},
+            {"seen_compared", o->seenCompared},
+            {"seen_agreed", o->seenAgreed},
+            {"not_comparable", o->notComparable},
+            {"unmatched", o->unmatched},
+            {"disagreed", o->disagreed},
+            {"disagreements", rows}};
+}
+
+static OwnCheck ownCheckFromJson(const json& j) {
+    auto status = [](const json& name) {
+        std::optional<Status> s = statusFromName(name.get<std::string>());
+        if (!s) throw std::invalid_argument("own_check: a status is unknown");
+        return *s;
+    };
+    OwnCheck o;
+    o.file = j.at("file").get<std::string>();
+    if (j.at("problem").is_string()) o.problem = j["problem"].get<std::string>();
+    o.backend = j.at("machine").at("backend").get<std::string>();
+    o.machine = j.at("machine").at("renderer").get<std::string>();
+    o.compared = j.at("compared").get<int>();
+    o.agreed = j.at("agreed").get<int>();
+    o.seenCompared = j.at("seen_compared").get<int>();
+    o.seenAgreed = j.at("seen_agreed").get<int>();
+    o.notComparable = j.at("not_comparable").get<int>();
+    o.unmatched = j.at("unmatched").get<int>();
+    o.disagreed = j.at("disagreed").get<int>();
+    for (const json& d : j.at("disagreements"))
+        o.disagreements.push_back({d.at("stage").get<std::string>(),
+                                   d.at("tree").get<std::string>(), d.at("row").get<std::string>(),
+                                   status(d.at("home")), status(d.at("grade")),
+                                   d.at("seen").get<bool>()});
+    return o;
+}
+
 json recordJson(const StudentRecord& r) {
     json stages = json::array();
     for (const StageRecord& st : r.stages) {
@@ -362,6 +411,7 @@ json recordJson(const StudentRecord& r) {
             {"roster", roster},
             {"flags", r.flags},
             {"adjustments", adjustmentsJson(r.adjustments)},
+            {"own_check", ownCheckJson(r.ownCheck)},
             {"late", r.late ? json{{"handed_in", r.late->handedIn},
                                    {"source", r.late->source},
                                    {"minutes", rounded(r.late->minutes)},
@@ -414,6 +464,8 @@ StudentRecord recordFromJson(const json& j) {
                            l.at("minutes").get<double>(),        l.at("days").get<int>(),
                            l.at("penalty").get<double>(),        l.value("capped", false)};
         }
+        if (j.contains("own_check") && !j["own_check"].is_null())
+            r.ownCheck = ownCheckFromJson(j["own_check"]);
         if (j.contains("roster") && !j["roster"].is_null())
             r.roster = RosterInfo{j["roster"].at("id").get<std::string>(),
                                   j["roster"].at("name").get<std::string>(),

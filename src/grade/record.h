@@ -60,6 +60,30 @@ struct Adjustment {
     std::string reason;
 };
 
+// A row where the student's own check report (an assignment's "own_check_report") gave another
+// verdict than the grade: the grade's row name (grade/reports.h rowName) and both statuses.
+struct OwnCheckRow {
+    std::string stage, tree, row;
+    Status home = Status::Pass, grade = Status::Pass;
+    bool seen = true;  // the student sees the grade's verdict of it (seenByStudent)
+};
+
+// The student's own check report against the grade (grade/own_check.h): never a score, never
+// trusted; it shows where a student's machine and ours disagreed (driver differences, or a
+// report edited by hand).
+struct OwnCheck {
+    std::string file;              // its name in the hand-in
+    std::string problem;           // why nothing was compared ("" = compared)
+    std::string backend, machine;  // the report's own: where the student ran it
+    int compared = 0, agreed = 0;
+    int seenCompared = 0, seenAgreed = 0;  // of them, rows whose grade the student sees
+    int notComparable = 0;  // paired rows not compared: another seed, or NOT GRADED on a side
+    int unmatched = 0;      // the report's rows the grade has none like
+    int disagreed = 0;      // all of them; `disagreements` keeps the first kMaxOwnCheckRows
+    std::vector<OwnCheckRow> disagreements;
+};
+constexpr std::size_t kMaxOwnCheckRows = 20;
+
 struct StudentRecord {
     std::string tool = "shadowlab grade";
     std::string assignment, student;
@@ -79,6 +103,7 @@ struct StudentRecord {
     std::vector<std::string> flags;
     std::optional<LateRecord> late;  // when the assignment has a late policy
     std::vector<Adjustment> adjustments;
+    std::optional<OwnCheck> ownCheck;  // when the hand-in carried the student's own check report
     // The score with the adjustments and the late penalty, within [0, maxScore]: the one total
     // every output shows (pages, grades.csv, the LMS exports, results.json, progress lines).
     double total() const;

@@ -32,6 +32,13 @@ cases = [
     ('{"name": "x", "stages": [' + GOOD_STAGE + '],\n "extra_views": [{"name": "lecture", "eye": [1, 2, 3]}]}',
      "/extra_views/0/name (line 2): view 'lecture' is already defined"),
     ('{"name": "x", "stages": [' + GOOD_STAGE + '], "bonus": 3}', "/bonus (line 1): unknown field"),
+    # The student's own check report: a plain .json name at the top of the hand-in.
+    ('{"name": "x", "stages": [' + GOOD_STAGE + '],\n "own_check_report": "rgb/report.json"}',
+     "/own_check_report (line 2): 'rgb/report.json' must be a file name ending in .json"),
+    ('{"name": "x", "stages": [' + GOOD_STAGE + '],\n "own_check_report": "report.txt"}',
+     "/own_check_report (line 2): 'report.txt' must be a file name ending in .json"),
+    ('{"name": "x", "stages": [' + GOOD_STAGE + '],\n "own_check_report": 3}',
+     "/own_check_report (line 2): must be a string, got number"),
     ('{"name": "x",\n "stages": [' + GOOD_STAGE + ',]}', "line 2, column"),
     ('{"name": "x", "stages": [\n {"stage": "fixed", "tree": "core", "files": ["fixed/lit.frag"], "points": 1}]}',
      "/stages/0/tree (line 2): stage fixed runs in the legacy tree only"),
