@@ -101,7 +101,7 @@ def main():
                 problems.append(f"{name}: figures.{fig} missing")
         problems += reason_problems(name, r, figures)
         exp = r.get("expectation", {})
-        for key in ("entry", "matched", "outcome", "why", "limits"):
+        for key in ("id", "entry", "matched", "outcome", "why", "limits"):
             if key not in exp:
                 problems.append(f"{name}: expectation.{key} missing")
         if "diff" not in r:

@@ -109,14 +109,58 @@ TEST(CheckJson, AMalformedResultIsRefused) {
     badVerdict["verdict"] = "MAYBE";
     EXPECT_THROW(checkResultFromJson(badVerdict), std::invalid_argument);
     nlohmann::json badEntry = j;
-    badEntry["expectation"]["entry"] = "rgb margin=0.07";
+    badEntry["expectation"]["id"] = "margin-0-07";
     EXPECT_THROW(checkResultFromJson(badEntry), std::invalid_argument);
+    nlohmann::json noId = j;  // a row of an older shadowlab, named by its label alone
+    noId["expectation"].erase("id");
+    EXPECT_THROW(checkResultFromJson(noId), std::invalid_argument);
     nlohmann::json badSide = j;
     badSide["reasons"][0]["side"] = "in";
     EXPECT_THROW(checkResultFromJson(badSide), std::invalid_argument);
     nlohmann::json noValue = j;
     noValue["reasons"][0].erase("value");
     EXPECT_THROW(checkResultFromJson(noValue), std::invalid_argument);
+}
+
+// The shipped data with the entry `stage`/`id` given other settings (as an edit of
+// expectations.json would): its label changes, its id does not.
+std::vector<Expectation> bookWithSettings(const std::string& stage, const std::string& id,
+                                          const nlohmann::json& set) {
+    nlohmann::json data = nlohmann::json::parse(readStageData(expectationsPath()));
+    bool found = false;
+    for (auto& e : data["expectations"])
+        if (e["stage"] == stage && e["id"] == id) {
+            e["set"] = set;
+            found = true;
+        }
+    EXPECT_TRUE(found) << stage << "/" << id;
+    return parseExpectations(data.dump(), "a test copy of expectations.json");
+}
+
+// A row names its entry by id: an entry whose settings (its label) changed since the row was
+// written is found again, so a class's kept records stay valid (issue 34: by the label, renaming
+// a lesson silently regraded a class).
+TEST(CheckJson, ARowFindsItsEntryByIdAfterItsSettingsChanged) {
+    CheckResult r = judgedRgb();  // the entry "rgb margin=0.01", id "margin"
+    ASSERT_NE(r.expectation.entry, nullptr);
+    ASSERT_EQ(r.expectation.entry->id, "margin");
+    nlohmann::json j = checkJson(r);
+    EXPECT_EQ(j["expectation"]["id"], "margin");
+    EXPECT_EQ(j["expectation"]["entry"], "rgb margin=0.01");  // the label stays, for people
+    std::vector<Expectation> edited = bookWithSettings("rgb", "margin", {{"margin", "0.012"}});
+    CheckResult back = checkResultFromJson(nlohmann::json::parse(j.dump()), edited);
+    ASSERT_NE(back.expectation.entry, nullptr);
+    EXPECT_EQ(back.expectation.entry->id, "margin");
+    EXPECT_EQ(back.expectation.entry->label(), "rgb margin=0.012");
+    EXPECT_EQ(back.expectation.entry->outcome, r.expectation.entry->outcome);
+    EXPECT_TRUE(back.expectation.entry >= edited.data() &&
+                back.expectation.entry < edited.data() + edited.size());
+    EXPECT_TRUE(back.expectation.exact);
+    // Another stage's entry of the same id is not it: ids are unique within a stage only.
+    nlohmann::json depth = j;
+    depth["stage"] = "depth";
+    depth["parameters"] = nlohmann::json::object();
+    EXPECT_THROW(checkResultFromJson(depth, edited), std::invalid_argument);
 }
 
 // A row kept before `reasons` existed (last term's records, a resume or --regrade reading them)
