@@ -384,7 +384,8 @@ TEST(Record, RoundTripsThroughItsJson) {
     EXPECT_THROW(recordFromJson(nlohmann::json{{"report_version", 1}}), std::invalid_argument);
 }
 
-// Last term's kept record, whose rows have no `reasons`, still loads (a resume or a regrade).
+// A kept record whose rows have no `reasons` still loads (the row reader takes them as none). A
+// record kept before formats had names is refused as older() first (TheKeptRecordsReader...).
 TEST(Record, ARecordKeptBeforeReasonsLoads) {
     nlohmann::json j = keptRecordJson(twoStages());
     for (auto& st : j["stages"])
