@@ -50,15 +50,16 @@ constexpr int kJobDiskFull = 4;
 // (compact, keys sorted), so a record changed since it was written (a score raised by hand) is
 // told from one grade wrote. A change detector, not a signature: anyone may recompute it.
 std::string sealedRecordText(const StudentRecord& r) {
-    json j = recordJson(r);
+    json j = keptRecordJson(r);
     j["record_hash"] = fnv1aHex(j.dump(-1, ' ', false, json::error_handler_t::replace));
     return j.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 // The record kept at `path` for the student named exactly `student`, if it can be read as one
-// and its content hash matches; `changed` (when given) is set when it was edited since.
+// and its content hash matches; else, when given, `setAside` says why one there is not kept (a
+// record kept by an older shadowlab, or edited since it was written).
 std::optional<StudentRecord> keptRecord(const std::string& path, const std::string& student,
-                                        bool* changed = nullptr) {
+                                        std::string* setAside = nullptr) {
     std::string text;
     if (!readRegularFile(path, 64u << 20, text, true).empty()) return std::nullopt;
     try {
@@ -68,11 +69,14 @@ std::optional<StudentRecord> keptRecord(const std::string& path, const std::stri
         StudentRecord r = recordFromJson(j);
         if (r.student != student) return std::nullopt;  // another name's record: not theirs
         if (hash != fnv1aHex(j.dump(-1, ' ', false, json::error_handler_t::replace))) {
-            if (changed) *changed = true;  // edited by hand, or written before records had one
+            if (setAside) *setAside = "its record does not match its content hash (edited?)";
             return std::nullopt;
         }
         return r;
-    } catch (const std::exception&) {  // malformed, an older version, a lesson since renamed
+    } catch (const FormatError& e) {  // its rows may name lessons the way it did: grade again
+        if (setAside && e.older()) *setAside = "kept by an older shadowlab";
+        return std::nullopt;
+    } catch (const std::exception&) {  // malformed, or a lesson no longer in the data
         return std::nullopt;
     }
 }
@@ -95,11 +99,12 @@ std::string handInHash(const std::string& path) {
 }
 
 // Why a student is graded in this run: "" when their kept record stands, "new" when there is
-// none, else why it is set aside.
-std::string whyGrade(const std::optional<StudentRecord>& kept, const std::string& handIn,
-                     const std::string& assignment, std::uint64_t seed, bool asked) {
+// none, else why it is set aside (`setAside`: why keptRecord did not keep the one there).
+std::string whyGrade(const std::optional<StudentRecord>& kept, const std::string& setAside,
+                     const std::string& handIn, const std::string& assignment, std::uint64_t seed,
+                     bool asked) {
     if (asked) return "asked for (--regrade)";
-    if (!kept) return "new";
+    if (!kept) return setAside.empty() ? "new" : setAside;
     if (!kept->graded()) return "not graded last time";
     if (kept->assignmentHash != assignment) return "the assignment changed";
     if (kept->handInHash != handIn) return "the hand-in changed";
@@ -361,10 +366,10 @@ void ClassGrading::chooseStudents() {
         in_.hashes[k] = handInHash(in_.entries[k]);
         bool asked = args_.regradeAll || std::find(args_.regrade.begin(), args_.regrade.end(),
                                                    in_.names[k]) != args_.regrade.end();
-        bool edited = false;
-        std::optional<StudentRecord> kept = keptRecord(recordPath(k), in_.names[k], &edited);
-        std::string why = whyGrade(kept, in_.hashes[k], in_.assignmentHash, *settings_.seed, asked);
-        if (edited && !asked) why = "its record does not match its content hash (edited?)";
+        std::string setAside;
+        std::optional<StudentRecord> kept = keptRecord(recordPath(k), in_.names[k], &setAside);
+        std::string why =
+            whyGrade(kept, setAside, in_.hashes[k], in_.assignmentHash, *settings_.seed, asked);
         if (why.empty()) continue;
         todo_.push_back(k);
         ++reasons[why];

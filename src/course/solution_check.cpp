@@ -156,7 +156,7 @@ StudentRecord gradeSolution(const GradingPlan& plan, const StudentWork& solution
         part.stages.clear();
         for (std::size_t j = 0; j < plan.stages.size(); ++j)
             if (j % std::size_t(parts) == std::size_t(p)) part.stages.push_back(plan.stages[j]);
-        std::string text = recordJson(gradePart(part)).dump();
+        std::string text = keptRecordJson(gradePart(part)).dump();
         std::string err = writeFileAtomically(partPath(p), text.data(), text.size());
         if (!err.empty()) throw std::runtime_error(err);
         return 0;

@@ -480,7 +480,8 @@ nlohmann::json checkJson(const CheckResult& r) {
         nlohmann::json limits = nlohmann::json::object();
         for (const Limit& l : e.limits)
             limits[l.figure] = {{"min", number(l.min)}, {"max", number(l.max)}};
-        expectation = {{"entry", e.label()},
+        expectation = {{"id", e.id},
+                       {"entry", e.label()},
                        {"matched", r.expectation.exact ? "exact" : "defaults"},
                        {"outcome", e.outcome},
                        {"why", e.why},
@@ -529,15 +530,13 @@ std::string textOrEmpty(const nlohmann::json& v) {
     return v.is_null() ? std::string() : v.get<std::string>();
 }
 
-// The entry a report names: its label among the entries that apply to the tree.
-const Expectation* expectationByLabel(const std::string& label, const std::string& tree) {
-    for (const Expectation& e : expectations()) {
-        bool inTree =
-            e.trees.empty() || std::find(e.trees.begin(), e.trees.end(), tree) != e.trees.end();
-        if (inTree && e.label() == label) return &e;
-    }
-    throw std::invalid_argument("no entry '" + label + "' for the " + tree + " tree in " +
-                                expectationsPath());
+// The entry a row names: its stable id among the stage's entries that apply to the tree (its
+// label is for people: an entry's settings may change, its id does not).
+const Expectation* expectationOfRow(const std::vector<Expectation>& book, const std::string& stage,
+                                    const std::string& id, const std::string& tree) {
+    if (const Expectation* e = expectationById(book, stage, id, tree)) return e;
+    throw std::invalid_argument("no entry with the id '" + id + "' of stage " + stage +
+                                " for the " + tree + " tree in " + expectationsPath());
 }
 
 // A record kept before `reasons` existed has none: read as empty (its page shows the message).
@@ -556,7 +555,7 @@ std::vector<FigureReason> reasonsFrom(const nlohmann::json& j) {
 
 }  // namespace
 
-CheckResult checkResultFromJson(const nlohmann::json& j) {
+CheckResult checkResultFromJson(const nlohmann::json& j, const std::vector<Expectation>& book) {
     try {
         CheckResult r;
         r.stage = j.at("stage").get<std::string>();
@@ -594,7 +593,8 @@ CheckResult checkResultFromJson(const nlohmann::json& j) {
                                   o.at("shadow").get<long>(), o.at("false_lit").get<long>()}});
         const auto& e = j.at("expectation");
         if (!e.is_null()) {
-            r.expectation.entry = expectationByLabel(e.at("entry").get<std::string>(), r.tree);
+            r.expectation.entry =
+                expectationOfRow(book, r.stage, e.at("id").get<std::string>(), r.tree);
             r.expectation.exact = e.at("matched").get<std::string>() == "exact";
         }
         const std::string verdict = j.at("verdict").get<std::string>();

@@ -148,10 +148,12 @@ std::vector<CheckResult> runCheckCases(Evaluator& rig, const std::vector<CheckCa
 
 // A result in the report (fields documented in docs/check.md).
 nlohmann::json checkJson(const CheckResult& r);
-// The result checkJson described (a worker's results come back this way): checkJson of it is
-// the same JSON. The expectation is found again in expectations() by its label. backend and
+// The result checkJson described (a worker's rows and a kept record's come back this way):
+// checkJson of it is the same JSON. The expectation is found again in `book` by its stable id
+// (expectations.json "id"), so an entry whose settings changed since is still found. backend and
 // machine are not in the JSON and stay empty. Throws std::invalid_argument on a malformed one.
-CheckResult checkResultFromJson(const nlohmann::json& j);
+CheckResult checkResultFromJson(const nlohmann::json& j,
+                                const std::vector<Expectation>& book = expectations());
 
 // The same result with its message and note within kMaxRowMessage, its file list within
 // kMaxListedFiles and its reasons within kMaxReasons (src/grade/bounds.h): whatever a worker

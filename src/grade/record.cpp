@@ -393,7 +393,8 @@ json recordJson(const StudentRecord& r) {
     if (r.roster)
         roster = {{"id", r.roster->id}, {"name", r.roster->name}, {"email", r.roster->email}};
     return {{"tool", r.tool},
-            {"report_version", 2},
+            {"report_format", kReport.name},
+            {"report_version", kReport.version},
             {"assignment", r.assignment},
             {"student", validUtf8(r.student) == r.student ? r.student : escapedName(r.student)},
             {"student_bytes", validUtf8(r.student) == r.student ? json() : json(hexOf(r.student))},
@@ -432,10 +433,16 @@ json recordJson(const StudentRecord& r) {
             {"stages", stages}};
 }
 
+json keptRecordJson(const StudentRecord& r) {
+    json j = recordJson(r);
+    j["record_format"] = kKeptRecord.name;
+    j["record_version"] = kKeptRecord.version;
+    return j;
+}
+
 StudentRecord recordFromJson(const json& j) {
+    requireFormat(j, kKeptRecord, "record_format", "record_version", "a kept record");
     try {
-        if (!j.is_object() || j.value("report_version", 0) != 2)
-            throw std::invalid_argument("not a version 2 student record");
         StudentRecord r;
         r.tool = j.at("tool").get<std::string>();
         r.assignment = j.at("assignment").get<std::string>();

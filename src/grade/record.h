@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "grade/formats.h"
 #include "grade/plan.h"
 #include "grade/status.h"
 
@@ -139,8 +140,13 @@ StudentRecord buildRecord(const GradingPlan& plan, const StudentWork& s,
 // The record of a hand-in that could not be read (a refused zip): every due stage ERROR.
 StudentRecord unreadableRecord(const GradingPlan& plan, const StudentWork& s);
 
+// The public report (grade/formats.h: kReport): --report, the browser edition's report.
 nlohmann::json recordJson(const StudentRecord& r);
-// The record recordJson wrote; throws std::invalid_argument on anything else.
+// The record as kept (kKeptRecord): the report's fields plus its own name and version; what
+// `grade` keeps per student and the solution check's parts carry between processes.
+nlohmann::json keptRecordJson(const StudentRecord& r);
+// The record keptRecordJson wrote. Throws FormatError (grade/formats.h) on another format or
+// version, older() when an older shadowlab kept it; std::invalid_argument on a malformed one.
 StudentRecord recordFromJson(const nlohmann::json& j);
 
 // Counts over a record's rows, for summaries.

@@ -6,6 +6,7 @@
 #include "eval/evaluator.h"
 #include "eval/job_errors.h"
 #include "grade/bounds.h"
+#include "grade/formats.h"
 #include "io/data_paths.h"
 #include "io/files.h"
 #include "scene/scene_json.h"
@@ -26,7 +27,11 @@ nlohmann::json checkStageJob(Evaluator& rig, const std::vector<CheckCase>& cases
         backend = r.backend;
         machine = r.machine;
     }
-    return {{"results", list}, {"backend", backend}, {"machine", machine}};
+    return {{"format", kWorkerRows.name},
+            {"version", kWorkerRows.version},
+            {"rows", list},
+            {"backend", backend},
+            {"machine", machine}};
 }
 
 std::vector<CheckCase> withoutSubmission(std::vector<CheckCase> cases) {
@@ -205,7 +210,8 @@ void checkInWorkers(const std::vector<std::vector<CheckCase>>& plan,
 
 std::vector<CheckResult> workerResults(const WorkerOutcome& outcome) {
     std::vector<CheckResult> results;
-    for (const auto& j : outcome.value.at("results")) {
+    requireFormat(outcome.value, kWorkerRows, "format", "version", "a worker's rows");
+    for (const auto& j : outcome.value.at("rows")) {
         results.push_back(checkResultFromJson(j));
         boundResult(results.back());  // the worker caps its rows; the parent never trusts it to
         results.back().backend = outcome.value.at("backend");

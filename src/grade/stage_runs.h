@@ -39,9 +39,10 @@ class Calibration {
     std::map<std::string, Measured> cache_;
 };
 
-// The rows a worker sent back for a job (its "results", with the worker's backend and machine),
-// each bounded by boundResult: whatever a worker sends, the parent keeps rows of bounded size.
-// Throws std::invalid_argument (or nlohmann's exception) on a malformed reply.
+// The rows a worker sent back for a job (the format grade/formats.h names kWorkerRows: its
+// "rows", with the worker's backend and machine), each bounded by boundResult: whatever a worker
+// sends, the parent keeps rows of bounded size. Throws FormatError on another format or version,
+// std::invalid_argument (or nlohmann's exception) on a malformed reply.
 std::vector<CheckResult> workerResults(const WorkerOutcome& outcome);
 
 // Every job of `plan` (one stage and tree's cases each) evaluated in bounded workers: one worker

@@ -57,11 +57,33 @@ bool sameValues(const ParamSet& a, const ParamSet& b) {
     return true;
 }
 
+// "slope", "lab-factor-40": lower-case letters and digits, words joined by single '-'.
+bool isIdText(const std::string& id) {
+    if (id.empty() || id.front() == '-' || id.back() == '-') return false;
+    for (std::size_t k = 0; k < id.size(); ++k) {
+        const char c = id[k];
+        bool ok =
+            (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || (c == '-' && id[k - 1] != '-');
+        if (!ok) return false;
+    }
+    return true;
+}
+
+// Two entries of one stage with the same id: a kept record could not tell which it meant.
+void refuseDuplicateIds(const std::vector<Expectation>& book, const std::string& origin) {
+    for (std::size_t k = 0; k < book.size(); ++k)
+        for (std::size_t j = 0; j < k; ++j)
+            if (book[j].stage == book[k].stage && book[j].id == book[k].id)
+                throw ExpectationError(origin + ": expectations[" + std::to_string(k) +
+                                       "]: the id '" + book[k].id + "' of stage " + book[k].stage +
+                                       " is taken by expectations[" + std::to_string(j) + "]");
+}
+
 Expectation parseEntry(const json& j, const std::string& where) {
     auto fail = [&](const std::string& what) { throw ExpectationError(where + ": " + what); };
     if (!j.is_object()) fail("an entry must be an object");
-    static const std::vector<std::string> known = {"stage", "scene",  "trees",    "set", "outcome",
-                                                   "why",   "limits", "measured", "look"};
+    static const std::vector<std::string> known = {"stage",   "id",  "scene",  "trees",    "set",
+                                                   "outcome", "why", "limits", "measured", "look"};
     for (const auto& [key, value] : j.items()) {
         bool ok = false;
         for (const auto& k : known) ok = ok || k == key;
@@ -80,6 +102,9 @@ Expectation parseEntry(const json& j, const std::string& where) {
     e.stage = text("stage", true);
     const StageInfo* info = findStage(e.stage);
     if (!info) fail("unknown stage '" + e.stage + "'");
+    e.id = text("id", true);
+    if (!isIdText(e.id))
+        fail("\"id\": '" + e.id + "' must be lower-case letters and digits in words joined by '-'");
     e.scene = text("scene", false);
     e.outcome = text("outcome", true);
     e.why = text("why", true);
@@ -211,6 +236,13 @@ std::vector<const Expectation*> lessonsOf(const std::vector<Expectation>& book,
     return lessons;
 }
 
+const Expectation* expectationById(const std::vector<Expectation>& book, const std::string& stage,
+                                   const std::string& id, const std::string& tree) {
+    for (const auto& e : book)
+        if (e.stage == stage && e.id == id && coversTree(e, tree)) return &e;
+    return nullptr;
+}
+
 std::string Limit::bound() const {
     if (!std::isnan(min) && !std::isnan(max))
         return "in [" + number(min) + ", " + number(max) + "]";
@@ -247,6 +279,7 @@ std::vector<Expectation> parseExpectations(const std::string& text, const std::s
     for (std::size_t k = 0; k < doc["expectations"].size(); ++k)
         book.push_back(parseEntry(doc["expectations"][k],
                                   origin + ": expectations[" + std::to_string(k) + "]"));
+    refuseDuplicateIds(book, origin);
     for (const StageInfo& info : stageRegistry())
         for (const std::string& tree : treesOf(info)) {
             int defaults = 0;

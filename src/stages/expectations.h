@@ -37,6 +37,10 @@ struct Limit {
 
 struct Expectation {
     std::string stage;
+    // The entry's name for good, unique within its stage ("defaults", "slope", "lab-factor-40"):
+    // kept records and a worker's rows name their entry by it, so its settings (its label) and
+    // wording may change without a class being regraded.
+    std::string id;
     std::string scene;                                     // "" = the stage's own default scene
     std::vector<std::string> trees;                        // empty = every tree the stage runs in
     std::vector<std::pair<std::string, std::string>> set;  // the settings it is about
@@ -65,7 +69,8 @@ const std::vector<std::string>& figureNames();
 std::string defaultSceneOf(const std::string& stage);
 
 // Parses the data file's text; `origin` names it in errors. Checks every entry against the
-// stage registry (stage, scene, parameter names and values) and that each stage has exactly one
+// stage registry (stage, scene, parameter names and values), that each has an id (lower-case
+// words joined by '-') no other entry of its stage has, and that each stage has exactly one
 // defaults entry (no scene, no settings) per tree.
 std::vector<Expectation> parseExpectations(const std::string& text, const std::string& origin);
 // <data dir>/src/stages/expectations.json, loaded once.
@@ -76,6 +81,9 @@ const std::vector<Expectation>& expectations();
 std::vector<GradingView> parseViews(const std::string& text, const std::string& origin,
                                     const std::string& scene);
 const std::vector<GradingView>& gradingViews(const std::string& scene);
+// The entry of `stage` named `id` that applies to `tree`; nullptr when there is none.
+const Expectation* expectationById(const std::vector<Expectation>& book, const std::string& stage,
+                                   const std::string& id, const std::string& tree);
 // Every entry of `stage` for `tree`, the defaults' entry first, then in file order.
 std::vector<const Expectation*> lessonsOf(const std::vector<Expectation>& book,
                                           const std::string& stage, const std::string& tree);

@@ -69,9 +69,13 @@ def main():
     figures = figure_table(args[at + 1])
     del args[at:at + 2]
     problems = []
-    for key in ("tool", "report_version", "expectations", "machine", "summary", "stages"):
+    for key in ("tool", "report_format", "report_version", "expectations", "machine", "summary",
+                "stages"):
         if key not in report:
             problems.append(f"missing top-level '{key}'")
+    if report.get("report_format") != "shadowlab-report" or report.get("report_version") != 2:
+        problems.append(f"a report's format is shadowlab-report version 2, not "
+                        f"{report.get('report_format')!r} version {report.get('report_version')!r}")
     if problems:
         sys.exit("FAIL: " + "; ".join(problems))
     if not report["machine"].get("renderer"):
@@ -101,7 +105,7 @@ def main():
                 problems.append(f"{name}: figures.{fig} missing")
         problems += reason_problems(name, r, figures)
         exp = r.get("expectation", {})
-        for key in ("entry", "matched", "outcome", "why", "limits"):
+        for key in ("id", "entry", "matched", "outcome", "why", "limits"):
             if key not in exp:
                 problems.append(f"{name}: expectation.{key} missing")
         if "diff" not in r:

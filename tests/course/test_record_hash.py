@@ -3,7 +3,8 @@
 A class of two (ann correct, bob whose shader does not build) is graded; bob's record is edited
 (score and stage points raised to full), and the rerun must grade bob again with a line naming
 him and the reason, and grades.csv must give bob his real score; ann's untouched record is kept.
-A third run keeps both (the rewritten record carries a matching hash).
+A third run keeps both (the rewritten record carries a matching hash). A record in the shape an
+older shadowlab kept (issue 34) is graded again with the reason "kept by an older shadowlab".
 usage: test_record_hash.py SHADOWLAB REPO WORKDIR"""
 import csv, json, os, shutil, subprocess, sys
 
@@ -54,4 +55,26 @@ check("grades.csv gives bob his real score, not the edited one", scores() == rea
 r = grade()
 check("a third run keeps both records", r.returncode == 0 and "again:" not in r.stdout and
       "2 already graded, 0 to grade" in r.stdout, r.stdout[-800:])
+# A record kept by an older shadowlab (its shape before issue 34: the report's fields alone, no
+# name or version of its own, rows naming their lesson by its label) is not an error: the student
+# is graded again with the reason, and the record is written in today's format.
+path = out + "/students/ann.json"
+record = json.load(open(path))
+for key in ("record_format", "record_version", "report_format"):
+    record.pop(key)
+for st in record["stages"]:
+    for row in st["rows"]:
+        if row["expectation"]:
+            row["expectation"].pop("id")
+json.dump(record, open(path, "w"), indent=1)
+r = grade()
+check("an older shadowlab's record: the rerun exits 0", r.returncode == 0, r.stdout[-800:] + r.stderr[-800:])
+check("one line names ann and the older record",
+      "grading ann again: kept by an older shadowlab" in r.stdout, r.stdout[-800:])
+check("the header counts it", "1 already graded, 1 to grade (1 kept by an older shadowlab)" in r.stdout,
+      r.stdout[-800:])
+check("bob's record is kept", "grading bob again" not in r.stdout, r.stdout[-800:])
+check("the same scores", scores() == real, scores())
+check("ann's record is rewritten in today's format",
+      json.load(open(path)).get("record_format") == "shadowlab-kept-record", json.load(open(path)).keys())
 print("%d checks" % expect.checks)

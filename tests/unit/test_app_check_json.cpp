@@ -4,6 +4,7 @@
 
 #include "grade/bounds.h"
 #include "grade/check_run.h"
+#include "grade/formats.h"
 #include "grade/record.h"
 #include "grade/reports.h"
 #include "grade/stage_runs.h"
@@ -109,14 +110,58 @@ TEST(CheckJson, AMalformedResultIsRefused) {
     badVerdict["verdict"] = "MAYBE";
     EXPECT_THROW(checkResultFromJson(badVerdict), std::invalid_argument);
     nlohmann::json badEntry = j;
-    badEntry["expectation"]["entry"] = "rgb margin=0.07";
+    badEntry["expectation"]["id"] = "margin-0-07";
     EXPECT_THROW(checkResultFromJson(badEntry), std::invalid_argument);
+    nlohmann::json noId = j;  // a row of an older shadowlab, named by its label alone
+    noId["expectation"].erase("id");
+    EXPECT_THROW(checkResultFromJson(noId), std::invalid_argument);
     nlohmann::json badSide = j;
     badSide["reasons"][0]["side"] = "in";
     EXPECT_THROW(checkResultFromJson(badSide), std::invalid_argument);
     nlohmann::json noValue = j;
     noValue["reasons"][0].erase("value");
     EXPECT_THROW(checkResultFromJson(noValue), std::invalid_argument);
+}
+
+// The shipped data with the entry `stage`/`id` given other settings (as an edit of
+// expectations.json would): its label changes, its id does not.
+std::vector<Expectation> bookWithSettings(const std::string& stage, const std::string& id,
+                                          const nlohmann::json& set) {
+    nlohmann::json data = nlohmann::json::parse(readStageData(expectationsPath()));
+    bool found = false;
+    for (auto& e : data["expectations"])
+        if (e["stage"] == stage && e["id"] == id) {
+            e["set"] = set;
+            found = true;
+        }
+    EXPECT_TRUE(found) << stage << "/" << id;
+    return parseExpectations(data.dump(), "a test copy of expectations.json");
+}
+
+// A row names its entry by id: an entry whose settings (its label) changed since the row was
+// written is found again, so a class's kept records stay valid (issue 34: by the label, renaming
+// a lesson silently regraded a class).
+TEST(CheckJson, ARowFindsItsEntryByIdAfterItsSettingsChanged) {
+    CheckResult r = judgedRgb();  // the entry "rgb margin=0.01", id "margin"
+    ASSERT_NE(r.expectation.entry, nullptr);
+    ASSERT_EQ(r.expectation.entry->id, "margin");
+    nlohmann::json j = checkJson(r);
+    EXPECT_EQ(j["expectation"]["id"], "margin");
+    EXPECT_EQ(j["expectation"]["entry"], "rgb margin=0.01");  // the label stays, for people
+    std::vector<Expectation> edited = bookWithSettings("rgb", "margin", {{"margin", "0.012"}});
+    CheckResult back = checkResultFromJson(nlohmann::json::parse(j.dump()), edited);
+    ASSERT_NE(back.expectation.entry, nullptr);
+    EXPECT_EQ(back.expectation.entry->id, "margin");
+    EXPECT_EQ(back.expectation.entry->label(), "rgb margin=0.012");
+    EXPECT_EQ(back.expectation.entry->outcome, r.expectation.entry->outcome);
+    EXPECT_TRUE(back.expectation.entry >= edited.data() &&
+                back.expectation.entry < edited.data() + edited.size());
+    EXPECT_TRUE(back.expectation.exact);
+    // Another stage's entry of the same id is not it: ids are unique within a stage only.
+    nlohmann::json depth = j;
+    depth["stage"] = "depth";
+    depth["parameters"] = nlohmann::json::object();
+    EXPECT_THROW(checkResultFromJson(depth, edited), std::invalid_argument);
 }
 
 // A row kept before `reasons` existed (last term's records, a resume or --regrade reading them)
@@ -138,7 +183,11 @@ TEST(CheckJson, AWorkersRowOverTheBoundIsCut) {
     for (int k = 0; k < 100; ++k) r.studentFiles.push_back("shader" + std::to_string(k) + ".frag");
     r.reasons.assign(1000, {std::string(1000, 'f'), 1, FigureReason::Side::AtMost, 2, true});
     WorkerOutcome outcome;
-    outcome.value = {{"results", {checkJson(r)}}, {"backend", "EGL"}, {"machine", "box"}};
+    outcome.value = {{"format", kWorkerRows.name},
+                     {"version", kWorkerRows.version},
+                     {"rows", {checkJson(r)}},
+                     {"backend", "EGL"},
+                     {"machine", "box"}};
     std::vector<CheckResult> rows = workerResults(outcome);
     ASSERT_EQ(rows.size(), 1u);
     EXPECT_EQ(rows[0].message, capped(r.message, kMaxRowMessage));
@@ -244,14 +293,89 @@ TEST(CheckFormats, ANotGradedRecordHasNoScoreAnywhere) {
     EXPECT_NE(junit.find("<error type=\"NOT GRADED\""), std::string::npos);
 }
 
+// A worker's rows in another format, or another version of it, are refused with one line naming
+// what came and what the parent reads (never read as rows of some other shape).
+TEST(CheckJson, AWorkersRowsOfAnotherFormatAreRefused) {
+    const nlohmann::json row = checkJson(judgedRgb());
+    WorkerOutcome outcome;
+    outcome.value = {{"format", kWorkerRows.name},
+                     {"version", kWorkerRows.version},
+                     {"rows", {row}},
+                     {"backend", "EGL"},
+                     {"machine", "box"}};
+    ASSERT_EQ(workerResults(outcome).size(), 1u);
+    auto refusal = [&](const nlohmann::json& value) {
+        WorkerOutcome o = outcome;
+        o.value = value;
+        try {
+            workerResults(o);
+        } catch (const FormatError& e) {
+            return std::string(e.what());
+        }
+        return std::string("taken");
+    };
+    nlohmann::json newer = outcome.value;
+    newer["version"] = kWorkerRows.version + 1;
+    EXPECT_EQ(refusal(newer), "a worker's rows: got \"shadowlab-worker-rows\" version " +
+                                  std::to_string(kWorkerRows.version + 1) +
+                                  ", reads shadowlab-worker-rows version " +
+                                  std::to_string(kWorkerRows.version));
+    nlohmann::json other = outcome.value;
+    other["format"] = kReport.name;
+    EXPECT_NE(refusal(other).find("got \"shadowlab-report\""), std::string::npos);
+    // The shape before formats had names: {"results": [...]}.
+    nlohmann::json unnamed = {{"results", {row}}, {"backend", "EGL"}, {"machine", "box"}};
+    EXPECT_NE(refusal(unnamed).find("got no \"format\""), std::string::npos);
+}
+
+// The kept record's reader takes its own format and version only. A public report is not a kept
+// record, nor is a newer one; an older one (or one from before formats had names) is refused as
+// older(), which `grade` answers by grading the student again (class/class_grade.cpp).
+TEST(Record, TheKeptRecordsReaderRefusesAnotherFormat) {
+    const StudentRecord rec = twoStages();
+    const nlohmann::json kept = keptRecordJson(rec);
+    EXPECT_EQ(kept["record_format"], kKeptRecord.name);
+    EXPECT_EQ(kept["report_format"], kReport.name);
+    EXPECT_EQ(kept["report_version"], kReport.version);
+    EXPECT_EQ(recordFromJson(kept).student, rec.student);
+    auto refusal = [](const nlohmann::json& j, bool& older) {
+        try {
+            recordFromJson(j);
+        } catch (const FormatError& e) {
+            older = e.older();
+            return std::string(e.what());
+        }
+        return std::string("taken");
+    };
+    bool older = true;
+    const std::string reads =
+        ", reads shadowlab-kept-record version " + std::to_string(kKeptRecord.version);
+    EXPECT_EQ(refusal(recordJson(rec), older),
+              "a kept record: got no \"record_format\" (an older shadowlab's)" + reads);
+    EXPECT_TRUE(older);  // the report's fields alone: the kept record's shape before issue 34
+    nlohmann::json newer = kept;
+    newer["record_version"] = kKeptRecord.version + 1;
+    EXPECT_EQ(refusal(newer, older), "a kept record: got \"shadowlab-kept-record\" version " +
+                                         std::to_string(kKeptRecord.version + 1) + reads);
+    EXPECT_FALSE(older);
+    nlohmann::json lower = kept;
+    lower["record_version"] = kKeptRecord.version - 1;
+    refusal(lower, older);
+    EXPECT_TRUE(older);
+    nlohmann::json renamed = kept;
+    renamed["record_format"] = kWorkerRows.name;
+    EXPECT_NE(refusal(renamed, older).find("got \"shadowlab-worker-rows\""), std::string::npos);
+    EXPECT_FALSE(older);
+}
+
 TEST(Record, RoundTripsThroughItsJson) {
     StudentRecord rec = twoStages();
     rec.handInHash = "0123456789abcdef";
     rec.assignmentHash = "fedcba9876543210";
     rec.seed = 42;
-    nlohmann::json j = recordJson(rec);
+    nlohmann::json j = keptRecordJson(rec);
     StudentRecord back = recordFromJson(nlohmann::json::parse(j.dump()));
-    EXPECT_EQ(recordJson(back), j);
+    EXPECT_EQ(keptRecordJson(back), j);
     EXPECT_EQ(back.status(), Status::Timeout);
     EXPECT_EQ(j["exit_code"], 2);
     EXPECT_EQ(j["summary"]["passed"], 2);
@@ -260,9 +384,10 @@ TEST(Record, RoundTripsThroughItsJson) {
     EXPECT_THROW(recordFromJson(nlohmann::json{{"report_version", 1}}), std::invalid_argument);
 }
 
-// Last term's kept record, whose rows have no `reasons`, still loads (a resume or a regrade).
+// A kept record whose rows have no `reasons` still loads (the row reader takes them as none). A
+// record kept before formats had names is refused as older() first (TheKeptRecordsReader...).
 TEST(Record, ARecordKeptBeforeReasonsLoads) {
-    nlohmann::json j = recordJson(twoStages());
+    nlohmann::json j = keptRecordJson(twoStages());
     for (auto& st : j["stages"])
         for (auto& row : st["rows"]) row.erase("reasons");
     StudentRecord back = recordFromJson(nlohmann::json::parse(j.dump()));
@@ -279,7 +404,8 @@ TEST(Record, ANameThatIsNotUtf8RoundTrips) {
     nlohmann::json j = recordJson(rec);
     EXPECT_EQ(j["student"], "caf\\xE9 \\xFF");
     EXPECT_EQ(j["student_bytes"], "636166e920ff");
-    const std::string text = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::strict);
+    const std::string text =
+        keptRecordJson(rec).dump(-1, ' ', false, nlohmann::json::error_handler_t::strict);
     EXPECT_EQ(recordFromJson(nlohmann::json::parse(text)).student, rec.student);
     rec.student = "ann";
     EXPECT_TRUE(recordJson(rec)["student_bytes"].is_null());

@@ -11,18 +11,18 @@ namespace sl {
 namespace {
 
 const char* kMinimal = R"({"expectations": [
-  {"stage": "phong", "outcome": "no shadows", "why": "w", "limits": {"false_lit_pct": {"min": 99}}},
-  {"stage": "rgb", "outcome": "acne", "why": "w", "limits": {"false_shadow_pct": {"min": 20}}},
-  {"stage": "rgb", "set": {"margin": "0.010"}, "outcome": "no acne", "why": "w",
+  {"stage": "phong", "id": "defaults", "outcome": "no shadows", "why": "w", "limits": {"false_lit_pct": {"min": 99}}},
+  {"stage": "rgb", "id": "defaults", "outcome": "acne", "why": "w", "limits": {"false_shadow_pct": {"min": 20}}},
+  {"stage": "rgb", "id": "margin", "set": {"margin": "0.010"}, "outcome": "no acne", "why": "w",
    "limits": {"false_shadow_pct": {"max": 1}, "false_lit_pct": {"max": 2}}},
-  {"stage": "depth", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
-  {"stage": "bias", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
-  {"stage": "margin", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
-  {"stage": "hardware", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
-  {"stage": "hardware", "scene": "lab", "outcome": "lab", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
-  {"stage": "fixed", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
-  {"stage": "mirror", "outcome": "m", "why": "w", "limits": {"mirror_id_pct": {"min": 98}}},
-  {"stage": "peers", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}}
+  {"stage": "depth", "id": "defaults", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "bias", "id": "defaults", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "margin", "id": "defaults", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "hardware", "id": "defaults", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "hardware", "id": "lab", "scene": "lab", "outcome": "lab", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "fixed", "id": "defaults", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}},
+  {"stage": "mirror", "id": "defaults", "outcome": "m", "why": "w", "limits": {"mirror_id_pct": {"min": 98}}},
+  {"stage": "peers", "id": "defaults", "outcome": "c", "why": "w", "limits": {"false_lit_pct": {"max": 2}}}
 ]})";
 
 ParamSet values(const std::string& stage, std::vector<std::pair<std::string, std::string>> sets) {
@@ -82,12 +82,45 @@ TEST(Expectations, MistakesNameTheEntry) {
     expectError(replaced("false_shadow_pct\": {\"min\": 20}", "false_shade\": {\"min\": 20}"),
                 "unknown figure 'false_shade'");
     expectError(replaced("{\"stage\": \"depth\"", "{\"stage\": \"deep\""), "unknown stage 'deep'");
-    expectError(replaced("{\"stage\": \"fixed\", \"outcome\": \"c\", \"why\": \"w\", \"limits\": "
-                         "{\"false_lit_pct\": {\"max\": 2}}},",
+    expectError(replaced("{\"stage\": \"fixed\", \"id\": \"defaults\", \"outcome\": \"c\", "
+                         "\"why\": \"w\", \"limits\": {\"false_lit_pct\": {\"max\": 2}}},",
                          ""),
                 "stage fixed (legacy) needs one entry");
+    expectError(replaced("\"id\": \"lab\", ", ""), "expectations[7]: missing \"id\"");
+    expectError(replaced("\"id\": \"lab\"", "\"id\": \"Lab view\""),
+                "'Lab view' must be lower-case");
     expectError("{\"expectations\": 3}", "needs an \"expectations\" list");
     expectError("{", "not valid JSON");
+}
+
+// An entry's id is how a kept record finds it: two entries of one stage may not share one (the
+// record could not tell which it meant); entries of different stages may.
+TEST(Expectations, ADuplicateIdIsRefused) {
+    std::string text = kMinimal;
+    const std::string from = "\"id\": \"lab\"";
+    text.replace(text.find(from), from.size(), "\"id\": \"defaults\"");
+    try {
+        parseExpectations(text, "f.json");
+        ADD_FAILURE() << "two hardware entries named 'defaults' were taken";
+    } catch (const ExpectationError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "f.json: expectations[7]: the id 'defaults' of stage hardware is taken by "
+                  "expectations[6]");
+    }
+    std::vector<Expectation> book = parseExpectations(kMinimal, "f.json");  // "defaults" per stage
+    ASSERT_NE(expectationById(book, "hardware", "lab", "core"), nullptr);
+    EXPECT_EQ(expectationById(book, "hardware", "lab", "core")->scene, "lab");
+    EXPECT_EQ(expectationById(book, "hardware", "slope", "core"), nullptr);
+}
+
+// The shipped file: every entry has an id, unique in its stage (the loader's rule, here on the
+// data itself), and the stage's defaults entry is "defaults" (the scheme its comment states).
+TEST(Expectations, ShippedIdsFollowTheScheme) {
+    for (const Expectation& e : expectations()) {
+        EXPECT_FALSE(e.id.empty()) << e.label();
+        EXPECT_EQ(e.id == "defaults", e.scene.empty() && e.set.empty())
+            << e.label() << ": " << e.id;
+    }
 }
 
 // The displaced views' bounds are data measured on the solution (stages/displaced_bounds.h):
