@@ -46,7 +46,7 @@ std::string parseReport(const std::string& text, StudentRecord& out) {
         return "report_version " + capped(printable(version.dump()), 20) +
                "; this grader reads version 2 (check it again with this release)";
     try {
-        out = recordFromJson(j);
+        out = reportFromJson(j);
     } catch (const std::exception& e) {
         return "not a check report this grader reads (" +
                capped(printable(e.what()), kMaxProblemText) + ")";

@@ -440,8 +440,10 @@ json keptRecordJson(const StudentRecord& r) {
     return j;
 }
 
-StudentRecord recordFromJson(const json& j) {
-    requireFormat(j, kKeptRecord, "record_format", "record_version", "a kept record");
+namespace {
+
+// The record's fields, as the report and the kept record both hold them.
+StudentRecord recordFields(const json& j) {
     try {
         StudentRecord r;
         r.tool = j.at("tool").get<std::string>();
@@ -507,6 +509,18 @@ StudentRecord recordFromJson(const json& j) {
     } catch (const json::exception& e) {
         throw std::invalid_argument(std::string("a student record: ") + e.what());
     }
+}
+
+}  // namespace
+
+StudentRecord recordFromJson(const json& j) {
+    requireFormat(j, kKeptRecord, "record_format", "record_version", "a kept record");
+    return recordFields(j);
+}
+
+StudentRecord reportFromJson(const json& j) {
+    requireFormat(j, kReport, "report_format", "report_version", "a check report");
+    return recordFields(j);
 }
 
 }  // namespace sl

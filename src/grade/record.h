@@ -148,6 +148,10 @@ nlohmann::json keptRecordJson(const StudentRecord& r);
 // The record keptRecordJson wrote. Throws FormatError (grade/formats.h) on another format or
 // version, older() when an older shadowlab kept it; std::invalid_argument on a malformed one.
 StudentRecord recordFromJson(const nlohmann::json& j);
+// The record a public report holds (recordJson's: a student's own check handed in,
+// grade/own_check.h): the same fields, read under the report's name and version; throws as
+// recordFromJson does.
+StudentRecord reportFromJson(const nlohmann::json& j);
 
 // Counts over a record's rows, for summaries.
 struct RowCounts {

@@ -24,7 +24,7 @@ Traced& traced() {
 
 extern "C" {
 
-// Traces the view `viewJson` (traceViewJson's): {"width", "height", "mirror", "pointer",
+// Traces the view `viewJson` (traceViewJson's): {"width", "height", "mirror_id", "pointer",
 // "bytes"} (the reference's bytes at pointer, valid until the next call) or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* sl_web_trace(const char* viewJson) {
     Traced& t = traced();
@@ -35,7 +35,7 @@ EMSCRIPTEN_KEEPALIVE const char* sl_web_trace(const char* viewJson) {
         t.bytes = sl::referenceBytes(image);
         out = {{"width", image.width},
                {"height", image.height},
-               {"mirror", image.mirrorObjectId},
+               {"mirror_id", image.mirrorObjectId},
                {"pointer", reinterpret_cast<std::uintptr_t>(t.bytes.data())},
                {"bytes", t.bytes.size()}};
     } catch (const std::exception& e) {

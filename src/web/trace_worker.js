@@ -8,5 +8,5 @@ onmessage = event => {
   const out = JSON.parse(Module.ccall("sl_web_trace", "string", ["string"], [JSON.stringify(view)]));
   if (out.error) { postMessage({ key, error: out.error }); return; }
   const bytes = Module.HEAPU8.slice(out.pointer, out.pointer + out.bytes).buffer;
-  postMessage({ key, width: out.width, height: out.height, mirror: out.mirror, bytes }, [bytes]);
+  postMessage({ key, width: out.width, height: out.height, mirror_id: out.mirror_id, bytes }, [bytes]);
 };

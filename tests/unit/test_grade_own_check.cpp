@@ -174,7 +174,7 @@ TEST(OwnCheck, TheRecordKeepsItAndAnOldRecordReads) {
     home.stages[0].rows[1].result.status = Status::Pass;
     StudentRecord grade = graded();
     attachOwnCheck(grade, reportOf(home));
-    nlohmann::json j = recordJson(grade);
+    nlohmann::json j = keptRecordJson(grade);  // as `grade` keeps it
     EXPECT_EQ(j["own_check"]["disagreed"], 1);
     EXPECT_EQ(j["own_check"]["disagreements"][0]["home"], "PASS");
     StudentRecord back = recordFromJson(nlohmann::json::parse(j.dump()));
