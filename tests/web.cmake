@@ -66,3 +66,12 @@ add_test(NAME web_loop
                  --out ${CMAKE_BINARY_DIR}/web_loop)
 set_tests_properties(web_loop PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 300
                      RUN_SERIAL TRUE)
+# A WebGL context lost during the page's check (tests/web/web_lost_context.py, docs/web.md): the
+# check ends, the stages done before keep their verdicts, the rest are NOT GRADED naming the loss
+# (never FAIL or ERROR), exit 3; a reload recovers. About 15 s.
+add_test(NAME web_lost_context
+         COMMAND ${SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/web/web_lost_context.py
+                 --site ${SL_WEB_SITE} --shadowlab $<TARGET_FILE:shadowlab>
+                 --out ${CMAKE_BINARY_DIR}/web_lost_context)
+set_tests_properties(web_lost_context PROPERTIES LABELS web SKIP_RETURN_CODE 77 TIMEOUT 300
+                     RUN_SERIAL TRUE)

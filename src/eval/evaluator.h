@@ -52,6 +52,8 @@ class Evaluator {
     // Drops the context and renderers, e.g. after a shader error left the GL state unknown.
     void reset();
     HeadlessContext& context() { return *context_; }
+    // Whether the context it draws in was lost (the browser's WebGL: HeadlessContext::lost()).
+    bool contextLost() const { return context_ && context_->lost(); }
     Renderer& renderer() { return *renderer_; }
 
     // Renders the current configuration and compares it with the reference: the shadow stages'

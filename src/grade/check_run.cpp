@@ -374,7 +374,18 @@ Judgement judgeCase(const RenderRequest& request, const CheckResult& r,
     return j;
 }
 
+// The context lost under the row (the browser's WebGL: platform/headless.h lost()): the
+// platform's failure (NOT GRADED), whatever the row drew or failed to compile.
+void throwIfLost(Evaluator& rig, const std::string& stage) {
+    if (rig.contextLost()) throw std::runtime_error(contextLostMessage(stage));
+}
+
 }  // namespace
+
+std::string contextLostMessage(const std::string& stage) {
+    return "the WebGL context was lost during the check of stage " + stage +
+           " (the browser's, not your shaders': reload the page)";
+}
 
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
                      const std::map<std::string, double>* shipped, RowPictures pictures) {
@@ -409,9 +420,11 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
                 if (std::size_t(objectId(i)) < f.byObject.size())
                     r.objects.push_back({scene.objects[i].name, f.byObject[objectId(i)]});
         }
+        throwIfLost(rig, r.stage);
         // A GL error while a student's program drew is theirs (ERROR), else the platform's.
         throwGlFailure(!SL_CHECK_GL(), "the check of stage " + r.stage);
     } catch (const ShaderError& e) {
+        throwIfLost(rig, r.stage);  // a lost context fails every compile: not the student's
         std::string text = capped(e.what(), kMaxErrorText);
         std::cerr << "shadowlab: shader error: " << text << (text.back() == '\n' ? "" : "\n");
         r.studentFiles = renderer.shaders().overlayFiles(r.stage);

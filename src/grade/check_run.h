@@ -87,6 +87,9 @@ enum class RowPictures {
     AllUnlessPassing,  // the three for a row that does not pass, none for one that does: a page
                        // shows a stage's first failing row, else its first row (`grade`)
 };
+// What a row says when the browser lost its WebGL context under it (NOT GRADED: the platform's,
+// never the student's, whatever the row drew or failed to compile).
+std::string contextLostMessage(const std::string& stage);
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
                      const std::map<std::string, double>* shipped = nullptr,
                      RowPictures pictures = RowPictures::Difference);

@@ -88,7 +88,8 @@ std::vector<StageRecord> CheckSteps::step() {
         // The browser's GL failed (a lost context, an out-of-memory): never the student's.
         CheckResult r = unrenderedResult(p.rows[series_->results().size()].check.request);
         r.status = Status::NotGraded;
-        r.message = std::string("the browser could not finish this row: ") + e.what();
+        r.message = std::string("the browser could not finish this row: ") +
+                    (rig_->contextLost() ? contextLostMessage(p.stage) : e.what());
         failed_ = {r};
         lastRow_ = r;
         rig_->reset();

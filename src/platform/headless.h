@@ -20,6 +20,10 @@ class HeadlessContext {
     virtual const char* backendName() const = 0;
     // Makes this context current again (another one may have been since), and says whether it is.
     virtual bool makeCurrent() = 0;
+    // Whether the context is gone (the browser lost its WebGL context: every call since is a
+    // no-op, a compile fails without a log, a read gives zeros). What it drew since is nobody's
+    // work: never the student's. A desktop context is never lost.
+    virtual bool lost() const { return false; }
     int width() const { return width_; }
     int height() const { return height_; }
     // Reads the framebuffer back, row 0 at the top.

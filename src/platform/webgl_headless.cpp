@@ -25,6 +25,7 @@ class WebGlTarget : public HeadlessContext {
     bool makeCurrent() override {
         return emscripten_webgl_make_context_current(context_) == EMSCRIPTEN_RESULT_SUCCESS;
     }
+    bool lost() const override { return emscripten_is_webgl_context_lost(context_); }
 
   private:
     EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context_;
