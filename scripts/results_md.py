@@ -48,6 +48,30 @@ def verdict(r, target):
     return "met" if r["ratio_to_phong"] <= target else "missed"
 
 
+# The figures the page shows a column of (their headers: figure_headers).
+FIGURES_SHOWN = ("false_shadow_pct", "false_lit_pct", "edge_p95_px", "mirror_id_pct",
+                 "mirror_psnr_db")
+
+
+def figure_headers(bench):
+    """A column header per figure, from the figure table bench wrote into bench.json
+    (metrics/figures.h, `shadowlab stages --figures`): the name without its unit's suffix, in
+    words, then the unit (false_shadow_pct: "false shadow %"). A figure renamed there renames its
+    column here; one this page names but the table lacks stops it."""
+    if "figures" not in bench:
+        sys.exit("results_md: bench.json has no figure table (written by an older shadowlab: "
+                 "run scripts/results.sh)")
+    headers = {f["name"]: f"{f['name'].rsplit('_', 1)[0].replace('_', ' ')} {f['unit']}"
+               for f in bench["figures"]}
+
+    def header(name):
+        if name not in headers:
+            sys.exit(f"results_md: the figure {name!r} is not in bench.json's figure table "
+                     "(renamed in metrics/figures.h?)")
+        return headers[name]
+    return header
+
+
 def table(header, rows):
     out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     out += ["| " + " | ".join(f(c) for c in row) + " |" for row in rows]
@@ -169,6 +193,7 @@ def main():
     rel = os.path.relpath(root, "docs")
     bench = json.load(open(os.path.join(root, "bench", "bench.json")))
     rows = bench["rows"]
+    fig = figure_headers(bench)
     by = lambda **kw: [r for r in rows if all(r[k] == v for k, v in kw.items())]
     out = []
     out.append("# Results: speed against accuracy\n")
@@ -195,8 +220,9 @@ def main():
             rs.append([r["stage"], r["tree"], r["error_pct"], r["false_shadow_pct"], r["false_lit_pct"],
                        r["edge_p95_px"], r["mirror_id_pct"], r["frame_ms"], moving["frame_ms"],
                        ratio(r), ratio(moving)])
-    out.append(table(["stage", "tree", "error %", "false shadow %", "false lit %", "edge p95 px",
-                      "mirror id %", "still ms", "moving ms", "x phong still", "x phong moving"], rs))
+    out.append(table(["stage", "tree", "error %", fig("false_shadow_pct"), fig("false_lit_pct"),
+                      fig("edge_p95_px"), fig("mirror_id_pct"), "still ms", "moving ms",
+                      "x phong still", "x phong moving"], rs))
     counted = [r for r in rows if r.get("instructions_per_frame") is not None and r["group"] != "map-size"]
     if counted:
         out.append("\n**Instructions per frame** (`bench --instructions`: valgrind's callgrind, "
@@ -288,7 +314,7 @@ def main():
                   rq(e["ratio_moving"], e["ratio_moving_iqr"], e["ratio_moving_trusted"]),
                   "-" if e["instructions_moving"] is None else f"{e['instructions_moving'] / 1e6:.1f} M "
                   f"({e['instructions_ratio_moving']:.2f}x)"] for e in equal]
-        out.append(table(["method", "reached", "configuration", "edge p95 px", "error %", "x phong still",
+        out.append(table(["method", "reached", "configuration", fig("edge_p95_px"), "error %", "x phong still",
                           "x phong moving", "instr/frame moving"], erows))
         out.append("")
 
@@ -319,8 +345,8 @@ def main():
     frows = [[r["series"], r["settings"], r["frame_ms"], ratio(r), r["error_pct"], r["edge_p95_px"],
               r["mirror_psnr_db"]]
              for r in rows if r["group"] in ("format", "mirror") and r["light"] == "still"]
-    out.append(table(["configuration", "settings", "ms/frame", "x phong", "error %", "edge p95 px",
-                      "PSNR vs stencil dB"], frows))
+    out.append(table(["configuration", "settings", "ms/frame", "x phong", "error %",
+                      fig("edge_p95_px"), fig("mirror_psnr_db")], frows))
     out.append("")
 
     out.append("## Where each method breaks\n")
@@ -349,4 +375,5 @@ def main():
     sys.stdout.write("\n".join(out) + "\n")
 
 
-main()
+if __name__ == "__main__":
+    main()

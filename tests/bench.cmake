@@ -7,7 +7,7 @@ set(SL_EXPECT_RUN python3 ${CMAKE_CURRENT_SOURCE_DIR}/check/expect_run.py)
 # Every test deletes what it reads before the run that writes it: a file left by an earlier run
 # cannot pass.
 add_test(NAME bench_quick
-         COMMAND sh -c "rm -f ${SL_BENCH_DIR}/bench.csv ${SL_BENCH_DIR}/bench.json ${SL_BENCH_DIR}/error-vs-time.png && $<TARGET_FILE:shadowlab> bench --quick --frames 2 --out ${SL_BENCH_DIR} && python3 ${SL_CHECK_CSV} ${SL_BENCH_DIR}/bench.csv 60 frame_ms frame_iqr_ms shadow_ms lit_ms mirror_ms ratio_to_phong error_pct && test -s ${SL_BENCH_DIR}/bench.json && test -s ${SL_BENCH_DIR}/error-vs-time.png")
+         COMMAND sh -c "rm -f ${SL_BENCH_DIR}/bench.csv ${SL_BENCH_DIR}/bench.json ${SL_BENCH_DIR}/error-vs-time.png && $<TARGET_FILE:shadowlab> bench --quick --frames 2 --out ${SL_BENCH_DIR} && python3 ${SL_CHECK_CSV} ${SL_BENCH_DIR}/bench.csv 60 frame_ms frame_iqr_ms shadow_ms lit_ms mirror_ms ratio_to_phong error_pct && test -s ${SL_BENCH_DIR}/bench.json && test -s ${SL_BENCH_DIR}/error-vs-time.png && python3 ${CMAKE_CURRENT_SOURCE_DIR}/bench/check_figure_headers.py ${SL_BENCH_DIR}/bench.json")
 set_tests_properties(bench_quick PROPERTIES LABELS bench TIMEOUT 300)
 foreach(axis elevation margin offset near-far map-size)
   add_test(NAME sweep_${axis}

@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "io/usage_error.h"
 #include "metrics/figures.h"
+#include "metrics/figures_json.h"
 #include "stages/expectations.h"
 #include "stages/registry.h"
 
@@ -91,36 +92,16 @@ int listStages(bool json) {
     return kOk;
 }
 
-const char* kindName(FigureKind kind) {
-    switch (kind) {
-        case FigureKind::Shadow:
-            return "shadow";
-        case FigureKind::Look:
-            return "look";
-        case FigureKind::Mirror:
-            // not a stage id: the kind of figure (metrics/figures.h), the mirror's measures
-            return "mirror";
-    }
-    return "";
-}
-
 // Every figure a check measures, in the table's order (the order of reports and messages).
 int listFigures(bool json) {
-    nlohmann::json out = nlohmann::json::array();
-    for (const FigureInfo& f : figureTable()) {
-        const char* better = f.better == Better::Lower ? "lower" : "higher";
-        if (!json) {
-            std::cout << f.name << "  " << f.unit << "  " << better << " is better  (" << f.words
-                      << ")\n";
-            continue;
-        }
-        out.push_back({{"name", f.name},
-                       {"unit", f.unit},
-                       {"better", better},
-                       {"kind", kindName(f.kind)},
-                       {"words", f.words}});
+    if (json) {
+        std::cout << figureTableJson().dump(2) << "\n";
+        return kOk;
     }
-    if (json) std::cout << out.dump(2) << "\n";
+    for (const nlohmann::json& f : figureTableJson())
+        std::cout << f["name"].get<std::string>() << "  " << f["unit"].get<std::string>() << "  "
+                  << f["better"].get<std::string>() << " is better  ("
+                  << f["words"].get<std::string>() << ")\n";
     return kOk;
 }
 

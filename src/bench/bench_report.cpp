@@ -9,6 +9,7 @@
 #include "io/files.h"
 #include "io/usage_error.h"
 #include "metrics/figures.h"
+#include "metrics/figures_json.h"
 #include "metrics/pareto.h"
 #include "stages/registry.h"
 
@@ -229,8 +230,10 @@ BenchReport writeBenchReport(const std::string& dir, const std::string& machine,
                              const std::vector<Measured>& results) {
     Table table;
     table.columns = kColumns;
-    nlohmann::json json = {
-        {"machine", machine}, {"columns", kColumns}, {"rows", nlohmann::json::array()}};
+    nlohmann::json json = {{"machine", machine},
+                           {"columns", kColumns},
+                           {"rows", nlohmann::json::array()},
+                           {"figures", figureTableJson()}};  // the columns' names, units and words
     std::vector<Row> rows;
     for (const Measured& m : results)
         for (bool moving : {false, true}) {
