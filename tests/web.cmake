@@ -19,7 +19,7 @@ function(sl_web_test name script site out timeout)
 endfunction()
 sl_web_test(web_browser web_browser.py ${SL_WEB_SITE} web 420)
 # The page's check against native `check` (tests/web/web_check.py): our shaders' `check --all`
-# and the first hand-in of each stage and expected verdict of the corpus (21 of its 97 core
+# and the first hand-in of each stage and expected verdict of the corpus (21 of its 103 core
 # cases), the same seed on both sides: every row's verdict equal, an ERROR's line too. The whole
 # corpus (--per-verdict 0) is run by hand (docs/web.md). The site is served over HTTP, as a
 # course serves it: the page's Web Workers trace every reference (none on the page's thread);
