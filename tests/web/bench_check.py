@@ -4,7 +4,8 @@ core stage (`check --stage S`) and for `check --all --glsl core`, our shaders, t
 headless Chromium (SwiftShader) and native `check` (llvmpipe) run alternately --reps times on
 this machine. Prints each pair's ratio and the median with its spread, writes bench_check.json.
 A benchmark, not a test: it asserts nothing about time.
-usage: bench_check.py --site build-web/site --shadowlab build/shadowlab --out DIR [--reps 3]"""
+usage: bench_check.py --site build-web/site --shadowlab build/shadowlab --out DIR [--reps 3]
+[--serve]"""
 import json
 import pathlib
 import statistics
@@ -20,6 +21,8 @@ def main():
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--seed", type=int, default=4242)
     ap.add_argument("--only", default="", help="these runs only (comma-separated: margin,all)")
+    ap.add_argument("--serve", action="store_true",
+                    help="serve the site over HTTP: the page's Web Workers trace the references")
     args = ap.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -27,8 +30,10 @@ def main():
     driver.set_script_timeout(1800)
     results = {}
     try:
-        if not web_browser.open_page(driver, args.site):
-            print("bench: the page never became ready")
+        address = web_browser.serve(args.site) if args.serve else None
+        if not web_browser.open_page(driver, args.site, address) or (
+                args.serve and not web_check.wait_for_tracers(driver)):
+            print("bench: the page (or its tracers) never became ready")
             return 1
         runs = driver.execute_script(
             "return shadowlab.stages.filter(s => !s.nativeOnly).map(s => s.id)") + ["all"]
