@@ -202,10 +202,7 @@ void addRosterStudents(const Roster& roster, const Assignment& a,
 void sayStrangers(const Roster& roster, const std::vector<std::string>& names) {
     std::vector<std::string> strangers = handInsNotOnRoster(roster, names);
     if (strangers.empty()) return;
-    std::cout << strangers.size() << " hand-in" << (strangers.size() == 1 ? "" : "s")
-              << " not on the roster:";
-    for (const std::string& n : strangers) std::cout << " " << printableName(n);
-    std::cout << "\n";
+    std::cout << notOnRosterLine(strangers) << "\n";
 }
 
 // The class as found: its hand-ins in the listing's order, each with its gradebook name, its

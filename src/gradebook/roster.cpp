@@ -101,6 +101,13 @@ std::vector<std::string> handInsNotOnRoster(const Roster& roster,
     return out;
 }
 
+std::string notOnRosterLine(const std::vector<std::string>& strangers) {
+    std::string line = std::to_string(strangers.size()) + " hand-in" +
+                       (strangers.size() == 1 ? "" : "s") + " not on the roster:";
+    for (const std::string& n : strangers) line += " " + printableName(escapedName(n));
+    return line;
+}
+
 std::vector<const RosterEntry*> rosterWithoutHandIn(const Roster& roster,
                                                     const std::vector<std::string>& names) {
     std::vector<const RosterEntry*> out;
