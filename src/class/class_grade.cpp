@@ -353,16 +353,19 @@ bool ClassGrading::solutionPassedBefore(const std::string& checkKey) {
 // Who is graded in this run: the new, the changed and those asked for, each one graded again
 // with a line saying why; then the run's header line.
 void ClassGrading::chooseStudents() {
-    for (const std::string& wanted : args_.regrade)
-        if (std::find(in_.names.begin(), in_.names.end(), wanted) == in_.names.end())
+    std::set<std::string> regrade;  // the hand-ins --regrade names (exactly, or as shown)
+    for (const std::string& wanted : args_.regrade) {
+        const std::string* name = handInNamed(in_.names, wanted);
+        if (!name)
             throw UsageError("--regrade: no hand-in named '" + printableName(wanted) + "' in " +
                              printableName(args_.submissions));
+        regrade.insert(*name);
+    }
     const std::size_t n = in_.entries.size();
     std::map<std::string, int> reasons;  // why students are graded in this run
     for (std::size_t k = 0; k < n; ++k) {
         in_.hashes[k] = handInHash(in_.entries[k]);
-        bool asked = args_.regradeAll || std::find(args_.regrade.begin(), args_.regrade.end(),
-                                                   in_.names[k]) != args_.regrade.end();
+        const bool asked = args_.regradeAll || regrade.count(in_.names[k]);
         std::string setAside;
         std::optional<StudentRecord> kept = keptRecord(recordPath(k), in_.names[k], &setAside);
         std::string why =
