@@ -274,7 +274,12 @@ int ClassGrading::run() {
     trees_ = solutionTrees(args_.solutions);
     const std::string checkKey = solutionCheckKey(in_.assignmentHash, trees_, *settings_.seed);
     const bool checked = solutionPassedBefore(checkKey);
-    if (!checked) verifySolution(in_.a, trees_, settings_);
+    if (!checked)  // said once what the files alone show has passed (never before its refusal)
+        verifySolution(in_.a, trees_, settings_, [&] {
+            std::cout << "grading the solution (" << trees_.describe() << ") by "
+                      << printableName(args_.assignment) << " first\n"
+                      << std::flush;
+        });
     createOut(args_.out);
     OutLock lock(args_.out);
     makeOutFolders(args_.out);
@@ -336,18 +341,12 @@ void ClassGrading::readClass() {
     in_.hashes.resize(in_.entries.size());
 }
 
-// True when an earlier run passed the same solution check (its key in --out); else says that the
-// solution is graded first.
+// True when an earlier run passed the same solution check (its key in --out), and says so.
 bool ClassGrading::solutionPassedBefore(const std::string& checkKey) {
-    if (solutionCheckPassed(args_.out, checkKey)) {
-        std::cout << "the solution (" << trees_.describe() << ") passed "
-                  << printableName(args_.assignment) << " in an earlier run: not graded again\n";
-        return true;
-    }
-    std::cout << "grading the solution (" << trees_.describe() << ") by "
-              << printableName(args_.assignment) << " first\n"
-              << std::flush;
-    return false;
+    if (!solutionCheckPassed(args_.out, checkKey)) return false;
+    std::cout << "the solution (" << trees_.describe() << ") passed "
+              << printableName(args_.assignment) << " in an earlier run: not graded again\n";
+    return true;
 }
 
 // Who is graded in this run: the new, the changed and those asked for, each one graded again
