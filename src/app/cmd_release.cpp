@@ -46,10 +46,12 @@ int runRelease(ReleaseArgs& args) {
     args.settings.backend = toBackend(args.backend);
     args.settings.budget = args.limits.rule();
     args.settings.seed = drawSeed();
-    std::cout << "grading the solution (" << trees.describe() << ") by "
-              << printableName(args.assignment) << " first, displaced view seed "
-              << *args.settings.seed << "\n";
-    StudentRecord record = verifySolution(a, trees, args.settings);
+    StudentRecord record = verifySolution(a, trees, args.settings, [&] {
+        std::cout << "grading the solution (" << trees.describe() << ") by "
+                  << printableName(args.assignment) << " first, displaced view seed "
+                  << *args.settings.seed << "\n"
+                  << std::flush;
+    });
     std::cout << "the solution earns every point: " << record.score << " of " << record.maxScore
               << "\n";
     std::vector<std::string> written = writeRelease(a, shaders, args.out);

@@ -96,7 +96,10 @@ ClassAnnotations readAnnotations(const ClassGradeArgs& args, const Assignment& a
                                  const std::vector<std::string>& names) {
     ClassAnnotations c;
     c.roster = rosterOf(args);
-    c.times = timesOf(args, a);
+    for (auto& [given, time] : timesOf(args, a)) {  // a name as shown names its hand-in too
+        const std::string* name = handInNamed(names, given);
+        c.times[name ? *name : given] = time;
+    }
     // A time for a name the class does not hold is a typing error or a missing hand-in: said.
     const std::set<std::string> inClass(names.begin(), names.end());
     std::vector<std::string> unknown;

@@ -202,10 +202,7 @@ void addRosterStudents(const Roster& roster, const Assignment& a,
 void sayStrangers(const Roster& roster, const std::vector<std::string>& names) {
     std::vector<std::string> strangers = handInsNotOnRoster(roster, names);
     if (strangers.empty()) return;
-    std::cout << strangers.size() << " hand-in" << (strangers.size() == 1 ? "" : "s")
-              << " not on the roster:";
-    for (const std::string& n : strangers) std::cout << " " << printableName(n);
-    std::cout << "\n";
+    std::cout << notOnRosterLine(strangers) << "\n";
 }
 
 // The class as found: its hand-ins in the listing's order, each with its gradebook name, its
@@ -277,7 +274,12 @@ int ClassGrading::run() {
     trees_ = solutionTrees(args_.solutions);
     const std::string checkKey = solutionCheckKey(in_.assignmentHash, trees_, *settings_.seed);
     const bool checked = solutionPassedBefore(checkKey);
-    if (!checked) verifySolution(in_.a, trees_, settings_);
+    if (!checked)  // said once what the files alone show has passed (never before its refusal)
+        verifySolution(in_.a, trees_, settings_, [&] {
+            std::cout << "grading the solution (" << trees_.describe() << ") by "
+                      << printableName(args_.assignment) << " first\n"
+                      << std::flush;
+        });
     createOut(args_.out);
     OutLock lock(args_.out);
     makeOutFolders(args_.out);
@@ -339,33 +341,30 @@ void ClassGrading::readClass() {
     in_.hashes.resize(in_.entries.size());
 }
 
-// True when an earlier run passed the same solution check (its key in --out); else says that the
-// solution is graded first.
+// True when an earlier run passed the same solution check (its key in --out), and says so.
 bool ClassGrading::solutionPassedBefore(const std::string& checkKey) {
-    if (solutionCheckPassed(args_.out, checkKey)) {
-        std::cout << "the solution (" << trees_.describe() << ") passed "
-                  << printableName(args_.assignment) << " in an earlier run: not graded again\n";
-        return true;
-    }
-    std::cout << "grading the solution (" << trees_.describe() << ") by "
-              << printableName(args_.assignment) << " first\n"
-              << std::flush;
-    return false;
+    if (!solutionCheckPassed(args_.out, checkKey)) return false;
+    std::cout << "the solution (" << trees_.describe() << ") passed "
+              << printableName(args_.assignment) << " in an earlier run: not graded again\n";
+    return true;
 }
 
 // Who is graded in this run: the new, the changed and those asked for, each one graded again
 // with a line saying why; then the run's header line.
 void ClassGrading::chooseStudents() {
-    for (const std::string& wanted : args_.regrade)
-        if (std::find(in_.names.begin(), in_.names.end(), wanted) == in_.names.end())
+    std::set<std::string> regrade;  // the hand-ins --regrade names (exactly, or as shown)
+    for (const std::string& wanted : args_.regrade) {
+        const std::string* name = handInNamed(in_.names, wanted);
+        if (!name)
             throw UsageError("--regrade: no hand-in named '" + printableName(wanted) + "' in " +
                              printableName(args_.submissions));
+        regrade.insert(*name);
+    }
     const std::size_t n = in_.entries.size();
     std::map<std::string, int> reasons;  // why students are graded in this run
     for (std::size_t k = 0; k < n; ++k) {
         in_.hashes[k] = handInHash(in_.entries[k]);
-        bool asked = args_.regradeAll || std::find(args_.regrade.begin(), args_.regrade.end(),
-                                                   in_.names[k]) != args_.regrade.end();
+        const bool asked = args_.regradeAll || regrade.count(in_.names[k]);
         std::string setAside;
         std::optional<StudentRecord> kept = keptRecord(recordPath(k), in_.names[k], &setAside);
         std::string why =

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "class/copy_pairs.h"
+#include "io/files.h"
 
 namespace sl {
 
@@ -136,7 +137,7 @@ std::vector<CopyFlag> findCopies(const std::vector<HandInFiles>& handIns,
         std::sort(names.begin(), names.end());
         std::string list;
         for (std::size_t k = 0; k < names.size() && k < 5; ++k)
-            list += (list.empty() ? "" : ", ") + names[k];
+            list += (list.empty() ? "" : ", ") + escapedName(names[k]);  // as pages name them
         if (names.size() > 5) list += " and " + std::to_string(names.size() - 5) + " more";
         out.push_back({who.first, who.second, list});
     }

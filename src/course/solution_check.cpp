@@ -182,7 +182,8 @@ StudentRecord gradeSolution(const GradingPlan& plan, const StudentWork& solution
 }  // namespace
 
 StudentRecord verifySolution(const Assignment& a, const SolutionTrees& trees,
-                             const GradeSettings& settings) {
+                             const GradeSettings& settings,
+                             const std::function<void()>& gradingStarts) {
     PrivateDir dir("shadowlab-solution");
     StudentWork solution = solutionWork(a, trees, dir.path() + "/hand-in");
     GradeSettings quiet = settings;
@@ -191,6 +192,7 @@ StudentRecord verifySolution(const Assignment& a, const SolutionTrees& trees,
     quiet.rowImage = nullptr;
     const GradingPlan plan = planStudent(a, solution, quiet.seed);
     refuseUnlistedMarkedByPlan(a, trees, plan);
+    if (gradingStarts) gradingStarts();
     StudentRecord record = gradeSolution(plan, solution, quiet, dir.path());
     refuseUnlistedMarked(a, trees, record);
     double lost = 0;

@@ -5,6 +5,8 @@
 // every correct student those points.
 #pragma once
 
+#include <functional>
+
 #include "course/release.h"
 #include "grade/grade_students.h"
 
@@ -19,7 +21,10 @@ namespace sl {
 // only its stub).
 // Throws std::runtime_error (exit 3) when the grading itself failed (NOT GRADED: a GL or
 // platform failure; TIMEOUT or CRASH of our own solution: rerun).
+// `gradingStarts` is called once what the files alone show has passed, before any rendering
+// (where the caller says it grades the solution: never before such a refusal).
 StudentRecord verifySolution(const Assignment& a, const SolutionTrees& trees,
-                             const GradeSettings& settings);
+                             const GradeSettings& settings,
+                             const std::function<void()>& gradingStarts = {});
 
 }  // namespace sl

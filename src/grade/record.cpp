@@ -196,11 +196,18 @@ bool seenByStudent(const StageRecord& st, const RowRecord& row) {
     return st.visibility != "hidden" && row.visibility != "hidden";
 }
 
+// A kept record holds each row's points to 3 decimals and the stage's sum exactly (19 rows of
+// 20/19 add up to 20.007): the seen points are taken from the fewer rounded rows, the stage's
+// less its hidden rows or the seen rows added up, so a stage without hidden rows shows the
+// points grades.csv and the class page show.
 SeenStage seenStage(const StageRecord& st) {
     SeenStage out;
+    double hiddenPoints = 0, hiddenMax = 0;
     for (const RowRecord& row : st.rows) {
         if (!seenByStudent(st, row)) {
             ++out.hidden;
+            hiddenPoints += row.points;
+            hiddenMax += row.maxPoints;
             continue;
         }
         ++out.seen;
@@ -208,6 +215,10 @@ SeenStage seenStage(const StageRecord& st) {
         out.points += row.points;
         out.maxPoints += row.maxPoints;
         out.status = worst(out.status, row.status());
+    }
+    if (out.seen > 0 && out.hidden < out.seen) {
+        out.points = std::max(0.0, st.points - hiddenPoints);
+        out.maxPoints = std::max(0.0, st.maxPoints - hiddenMax);
     }
     return out;
 }

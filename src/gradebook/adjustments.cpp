@@ -26,9 +26,10 @@ std::map<std::string, std::vector<Adjustment>> parseAdjustments(
                     std::to_string(r.fields.size()) +
                         " fields, expected 4 (hand-in,stage,points,reason; quote a reason "
                         "holding a comma)");
-        const std::string& name = r.fields[0];
-        if (std::find(handIns.begin(), handIns.end(), name) == handIns.end())
-            csvFail(origin, r.line, "no hand-in named '" + printableName(name) + "' in the class");
+        const std::string* name = handInNamed(handIns, r.fields[0]);
+        if (!name)
+            csvFail(origin, r.line,
+                    "no hand-in named '" + printableName(r.fields[0]) + "' in the class");
         if (std::find(stages.begin(), stages.end(), r.fields[1]) == stages.end())
             csvFail(origin, r.line,
                     "'" + printableName(r.fields[1]) + "' is not a due stage of the assignment");
@@ -39,7 +40,7 @@ std::map<std::string, std::vector<Adjustment>> parseAdjustments(
                     "points '" + printableName(r.fields[2]) + "' is not a number like 2 or -1.5");
         if (r.fields[3].empty())
             csvFail(origin, r.line, "no reason (the student reads it on their page)");
-        out[name].push_back({r.fields[1], points, r.fields[3]});
+        out[*name].push_back({r.fields[1], points, r.fields[3]});
     }
     return out;
 }

@@ -30,6 +30,10 @@ std::string lowered(std::string s) {
 const RosterEntry* Roster::find(const std::string& name) const {
     for (const RosterEntry& e : entries)
         if (e.handIn == name) return &e;
+    const std::string shown = escapedName(name);  // a name that is not UTF-8, as outputs show it
+    if (shown != name)
+        for (const RosterEntry& e : entries)
+            if (e.handIn == shown) return &e;
     return nullptr;
 }
 
@@ -101,11 +105,18 @@ std::vector<std::string> handInsNotOnRoster(const Roster& roster,
     return out;
 }
 
+std::string notOnRosterLine(const std::vector<std::string>& strangers) {
+    std::string line = std::to_string(strangers.size()) + " hand-in" +
+                       (strangers.size() == 1 ? "" : "s") + " not on the roster:";
+    for (const std::string& n : strangers) line += " " + printableName(escapedName(n));
+    return line;
+}
+
 std::vector<const RosterEntry*> rosterWithoutHandIn(const Roster& roster,
                                                     const std::vector<std::string>& names) {
     std::vector<const RosterEntry*> out;
     for (const RosterEntry& e : roster.entries)
-        if (std::find(names.begin(), names.end(), e.handIn) == names.end()) out.push_back(&e);
+        if (!handInNamed(names, e.handIn)) out.push_back(&e);
     return out;
 }
 

@@ -39,6 +39,9 @@ bool attachRoster(const Roster& roster, const std::string& handIn, StudentRecord
 // hand-in is not in `names`.
 std::vector<std::string> handInsNotOnRoster(const Roster& roster,
                                             const std::vector<std::string>& names);
+// The line naming `strangers`, hand-ins the roster does not list ("1 hand-in not on the roster:
+// zed"), each as every output names a hand-in (a name that is not UTF-8 escaped byte by byte).
+std::string notOnRosterLine(const std::vector<std::string>& strangers);
 std::vector<const RosterEntry*> rosterWithoutHandIn(const Roster& roster,
                                                     const std::vector<std::string>& names);
 

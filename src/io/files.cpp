@@ -264,6 +264,14 @@ std::string escapedName(const std::string& name) {
     return keptUtf8(name, hexByte);
 }
 
+const std::string* handInNamed(const std::vector<std::string>& names, const std::string& given) {
+    for (const std::string& n : names)
+        if (n == given) return &n;
+    for (const std::string& n : names)
+        if (escapedName(n) != n && escapedName(n) == given) return &n;
+    return nullptr;
+}
+
 namespace {
 std::string& copyFolder() {
     static std::string folder;

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace sl {
 
@@ -62,6 +63,11 @@ std::string validUtf8(const std::string& text);
 // every other byte as \xNN ("caf\xE9" for Latin-1 "café"), so two names that differ in one
 // byte are told apart on a page or in a gradebook (which then treat it as any text).
 std::string escapedName(const std::string& name);
+
+// The name of `names` that `given` names, `given` as an instructor types it (--regrade, a hand-in
+// column of --times, --adjust or a roster, all UTF-8): the same bytes, else a name that is not
+// UTF-8 whose escaped form, as every output shows it, is `given` ("caf\xE9"); nullptr if none.
+const std::string* handInNamed(const std::vector<std::string>& names, const std::string& given);
 
 // A file name as a message shows it: valid UTF-8, every control character (newline and tab
 // included) as '?', so that a name from a student's folder keeps a message on one line.

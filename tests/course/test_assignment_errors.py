@@ -120,6 +120,10 @@ expect("unlisted", ["release", "--assignment", path, "--out", work + "/out"], pa
 took = time.monotonic() - start
 assert took < 3 and not os.path.exists(work + "/out"), ("found after %.1f s" % took)
 print("ok: the unlisted marked file found in %.2f s, before any rendering" % took)
+said = subprocess.run([exe, "release", "--assignment", path, "--out", work + "/out"],
+                      capture_output=True, text=True, timeout=120).stdout
+assert "grading the solution" not in said, "said it grades the solution before refusing: %r" % said
+print("ok: no 'grading the solution' line before a refusal seen from the files")
 expect("solutions", ["release", "--assignment", work + "/r0.json", "--out", work + "/out",
                      "--solutions", work + "/s"], "--solutions", "holds neither shaders_core/ nor shaders_legacy/")
 print("course_assignment_errors: ok")

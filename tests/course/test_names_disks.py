@@ -55,6 +55,33 @@ code, stdout, stderr = grade(out)
 check("a rerun finds its record again: nobody graded", code == 0 and "2 already graded, 0 to grade" in stdout,
       (code, stdout, stderr))
 
+# The name as every output shows it (caf\xE9, what a UTF-8 file or a command line can hold) names
+# that hand-in in --regrade, --adjust, --times and a roster's hand-in column.
+code, stdout, stderr = grade(out, "--regrade", "caf\\xE9")
+check("--regrade caf\\xE9 grades that hand-in again", code == 0 and "1 to grade" in stdout and
+      "grading caf\\xE9 again: asked for" in stdout, (code, stdout, stderr))
+open(work + "/adjust.csv", "w").write("hand-in,stage,points,reason\ncaf\\xE9,margin,+2,the write-up\n")
+open(work + "/roster.csv", "w", encoding="utf-8").write("id,name,email,hand-in\n7,Zo\u00e9 Caf\u00e9,z@example.edu,caf\\xE9\n"
+                                      "8,Ann,ann@example.edu,ann\n")
+code, stdout, stderr = grade(out, "--adjust", work + "/adjust.csv", "--roster", work + "/roster.csv")
+rows = {row["student"]: row for row in csv.DictReader(open(out + "/grades.csv", encoding="utf-8"))}
+check("--adjust and --roster name it escaped: its row has the adjustment and the roster's id, no "
+      "row 'no hand-in', no hand-in off the roster",
+      code == 0 and len(rows) == 2 and rows["caf\\xE9"]["adjustments"] == "2.000" and
+      rows["caf\\xE9"]["id"] == "7" and "not on the roster" not in stdout, (code, stdout, stderr, rows))
+late = dict(json.load(open(lab)), late={"deadline": "2030-01-01T00:00:00Z", "grace_minutes": 0,
+                                      "penalty_per_day": 10, "cap": 30})
+json.dump(late, open(work + "/late.json", "w"))
+open(work + "/times.csv", "w").write("hand-in,time\ncaf\\xE9,2030-01-02T12:00:00Z\n")
+r = subprocess.run([exe, "grade", cls, "--assignment", work + "/late.json", "--out", work + "/out-late",
+                    "--seed", "4242", "--times", work + "/times.csv"], capture_output=True, timeout=900)
+rec = [json.load(open(os.path.join(work, "out-late/students", f)))
+       for f in os.listdir(work + "/out-late/students")]
+late_of = {x["student"]: x.get("late") or {} for x in rec}
+check("--times names it escaped: its time from --times, no unused entry",
+      r.returncode == 0 and late_of["caf\\xE9"].get("source") == "--times" and
+      b"names no hand-in" not in r.stdout, (r.returncode, r.stdout[-800:], late_of))
+
 # ---- 2. a full disk (a tmpfs; root only)
 if os.geteuid() != 0:
     print("skipped: the full-disk case needs root (mount -t tmpfs); CI runs as root")

@@ -161,6 +161,23 @@ TEST(CopyPairs, OneFileInCommonStaysUnderTheThresholdAWholeCopyIsOver) {
     }
 }
 
+// A classmate whose hand-in's name is not UTF-8 is named in a flag as every output names them,
+// escaped byte by byte ("\xFE\xFFcd"), never as replacement characters that two names share.
+TEST(CopyFlags, AClassmateNamedInAnyBytesIsNamedEscaped) {
+    const std::string f = "f.frag", starter = "void main() { }";
+    const std::string copy = "void main() { float a = 1.0; gl_FragColor = vec4(a * 2.0); }";
+    const std::string one =
+                          "\xFE\xFF"
+                          "cd",
+                      two =
+                          "\xFF\xFE"
+                          "ab";
+    const std::vector<CopyFlag> flags =
+        findCopies({{one, {{f, copy}}}, {two, {{f, copy}}}}, {}, {{f, starter}});
+    EXPECT_EQ(flagsOf(flags, two), std::vector<std::string>{"\\xFE\\xFFcd"});
+    EXPECT_EQ(flagsOf(flags, one), std::vector<std::string>{"\\xFF\\xFEab"});
+}
+
 // Pairs are ranked by their share, largest first; a starter-only file is in no pair.
 TEST(CopyPairs, RankedByShareStarterNeverCounted) {
     const std::string f1 = "f1.frag", f2 = "f2.frag";

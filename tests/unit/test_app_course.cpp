@@ -489,6 +489,39 @@ TEST(StudentPage, HiddenRowsAreCountedNowhere) {
     EXPECT_NE(page.find("graded but hidden"), std::string::npos) << page;
 }
 
+// A kept record holds each row's points to 3 decimals and the stage's exactly: 19 rows of
+// 20/19 points add up to 20.007 there. The page's stage shows what grades.csv and the class page
+// show (20.00 of 20.00), not the rounded rows' sum (20.01), with and without a hidden row.
+TEST(StudentPage, AStagesPointsAreTheStagesNotItsRoundedRowsSum) {
+    for (const bool withHidden : {false, true}) {
+        StagePlan plan;
+        plan.stage = "rgb";
+        plan.tree = "core";
+        std::vector<CheckResult> results;
+        const int rows = withHidden ? 20 : 19;
+        for (int k = 0; k < rows; ++k) {
+            RowPlan row;
+            row.check.view = "view-" + std::to_string(k);
+            row.points = 20.0 / 19;
+            row.visibility = withHidden && k == rows - 1 ? "hidden" : "visible";
+            plan.rows.push_back(row);
+            CheckResult r;
+            r.stage = "rgb";
+            r.tree = "core";
+            r.status = Status::Pass;
+            results.push_back(r);
+        }
+        StudentRecord rec;
+        rec.student = "ann";
+        rec.stages = {stageRecord(plan, &results, "")};
+        const StudentRecord kept = recordFromJson(keptRecordJson(rec));
+        const SeenStage seen = seenStage(kept.stages[0]);
+        EXPECT_NEAR(seen.maxPoints, 20, 1e-9) << (withHidden ? "with a hidden row" : "");
+        EXPECT_NEAR(seen.points, 20, 1e-9) << (withHidden ? "with a hidden row" : "");
+        EXPECT_NE(studentPage(kept).find("rgb/core: 20.00 of 20.00 points"), std::string::npos);
+    }
+}
+
 // A failing row's page names each failing figure, its value and its bound as the record's
 // reasons hold them (grade/judge.h), in the figure table's words and units; the message is never
 // read: a reworded judge message changes nothing the page lists, the record's numbers do.

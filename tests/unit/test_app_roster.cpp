@@ -17,6 +17,18 @@ std::string errorOf(const std::string& text) {
     return "";
 }
 
+// Hand-ins the roster does not list are named as every other output names them (issue 39 item
+// 13): a name that is not UTF-8 escaped byte by byte, so two such names stay two, never '?'.
+TEST(Roster, HandInsNotOnItAreNamedEscaped) {
+    EXPECT_EQ(notOnRosterLine({"zed"}), "1 hand-in not on the roster: zed");
+    EXPECT_EQ(notOnRosterLine({"gus",
+                               "\xFE\xFF"
+                               "cd",
+                               "\xFF\xFE"
+                               "ab"}),
+              "3 hand-ins not on the roster: gus \\xFE\\xFFcd \\xFF\\xFEab");
+}
+
 TEST(Roster, QuotedFieldsBomAndLineEnds) {
     Roster r = parseRoster(
         "\xEF\xBB\xBFId,Name,E-mail,Hand-in\r\n"
