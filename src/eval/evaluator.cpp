@@ -12,30 +12,20 @@
 
 namespace sl {
 
-namespace {
-
-std::string exact(double v) {
-    return exactText(v);
-}
-
-}  // namespace
-
 Renderer& Evaluator::prepare(const RenderRequest& request) {
     validateRequest(request);
     RenderRequest r = request;
     r.scene = effectiveScene(request);
     r.sceneGiven = true;
     // The camera is part of the key: spheres are tessellated for the camera they are seen from.
-    auto vec = [](const std::optional<glm::vec3>& v) {
-        return v ? exact(v->x) + "," + exact(v->y) + "," + exact(v->z) : std::string();
-    };
+    auto vec = [](const std::optional<glm::vec3>& v) { return v ? exactText(*v) : std::string(); };
     // The context depends on the profile and size only: a new overlay or view builds a new
     // renderer in it (a context's start-up cost as much as a row's figures).
     const std::string contextKey = std::to_string(static_cast<int>(r.tree)) + "/" +
                                    std::to_string(r.width) + "x" + std::to_string(r.height);
     std::ostringstream key;
     key << contextKey << "/" << r.scene << "/overlay=" << r.overlay << "/eye=" << vec(r.eye)
-        << "/at=" << vec(r.at) << "/fovy=" << (r.fovy ? exact(*r.fovy) : "")
+        << "/at=" << vec(r.at) << "/fovy=" << (r.fovy ? exactText(*r.fovy) : "")
         << "/displaced=" << (r.displaceSeed ? std::to_string(*r.displaceSeed) : "");
     if (context_ && contextKey == contextKey_ && !context_->makeCurrent())
         throw std::runtime_error(std::string("could not make the ") + context_->backendName() +
@@ -187,16 +177,13 @@ Accuracy Evaluator::accuracy() {
     if (overlay_.empty()) {
         const Renderer& r = *renderer_;
         key = key_ + "/stage=" + r.stage().id + "/view=" + viewName(r.view) +
-              "/light=" + exact(r.lightPosition.x) + "," + exact(r.lightPosition.y) + "," +
-              exact(r.lightPosition.z) + "/eye=" + exact(r.camera.eye.x) + "," +
-              exact(r.camera.eye.y) + "," + exact(r.camera.eye.z) + "/at=" + exact(r.camera.at.x) +
-              "," + exact(r.camera.at.y) + "," + exact(r.camera.at.z) +
-              "/fovy=" + exact(r.camera.fovyDegrees);
+              "/light=" + exactText(r.lightPosition) + "/eye=" + exactText(r.camera.eye) +
+              "/at=" + exactText(r.camera.at) + "/fovy=" + exactText(r.camera.fovyDegrees);
         const ParamSet& params = renderer_->params();
         for (const ParamSpec& p : params.specs())
             key += "/" + p.name + "=" +
                    (p.kind == ParamKind::Choice ? params.choice(p.name)
-                                                : exact(params.number(p.name)));
+                                                : exactText(params.number(p.name)));
         auto found = ours_.find(key);
         if (found != ours_.end()) return found->second;
     }
@@ -265,7 +252,7 @@ const std::vector<float>& Evaluator::mapTexelBand() {
     reference();
     std::string key = std::to_string(r.stats.mapSize);
     for (int c = 0; c < 4; ++c)
-        for (int k = 0; k < 4; ++k) key += "," + exact(r.stats.lightViewProjection[c][k]);
+        for (int k = 0; k < 4; ++k) key += "," + exactText(r.stats.lightViewProjection[c][k]);
     auto found = truth_->bands.find(key);
     if (found != truth_->bands.end()) return found->second;
     if (truth_->bands.size() >= kMaxBands) truth_->bands.clear();

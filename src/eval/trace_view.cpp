@@ -2,9 +2,11 @@
 
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <stdexcept>
 #include <type_traits>
 
+#include "io/json_fields.h"
 #include "scene/mirror_displace.h"
 #include "scene/scene_json.h"
 
@@ -18,25 +20,9 @@ namespace {
 static_assert(std::is_standard_layout_v<ReferencePixel> && sizeof(glm::vec3) == 3 * sizeof(float),
               "a reference pixel must be plain data");
 
-std::string exact(double v) {
-    return exactText(v);
-}
-
-std::string exact(const glm::vec3& v) {
-    return exact(v.x) + "," + exact(v.y) + "," + exact(v.z);
-}
-
 Scene sceneOf(const std::string& name, const std::optional<std::uint64_t>& seed) {
     Scene scene = loadScene(name);
     return seed ? displacedViewOf(scene, *seed) : scene;
-}
-
-nlohmann::json vec(const glm::vec3& v) {
-    return {v.x, v.y, v.z};
-}
-
-glm::vec3 vecFrom(const nlohmann::json& v) {
-    return {v.at(0).get<float>(), v.at(1).get<float>(), v.at(2).get<float>()};
 }
 
 }  // namespace
@@ -47,13 +33,18 @@ std::string exactText(double v) {
     return text;
 }
 
-TraceView traceViewOf(const RenderRequest& request) {
+std::string exactText(const glm::vec3& v) {
+    return exactText(v.x) + "," + exactText(v.y) + "," + exactText(v.z);
+}
+
+namespace {
+
+TraceView viewIn(const RenderRequest& request, const std::string& sceneName, const Scene& scene) {
     TraceView v;
-    v.scene = effectiveScene(request);
+    v.scene = sceneName;
     v.displaceSeed = request.displaceSeed;
     v.width = request.width;
     v.height = request.height;
-    const Scene scene = sceneOf(v.scene, v.displaceSeed);
     v.camera = scene.camera;
     if (request.eye) v.camera.eye = *request.eye;
     if (request.at) v.camera.at = *request.at;
@@ -62,11 +53,37 @@ TraceView traceViewOf(const RenderRequest& request) {
     return v;
 }
 
+}  // namespace
+
+TraceView traceViewOf(const RenderRequest& request) {
+    const std::string name = effectiveScene(request);
+    return viewIn(request, name, sceneOf(name, request.displaceSeed));
+}
+
+std::vector<std::optional<TraceView>> traceViewsOf(
+    const std::vector<const RenderRequest*>& requests) {
+    std::map<std::pair<std::string, std::optional<std::uint64_t>>, std::optional<Scene>> scenes;
+    std::vector<std::optional<TraceView>> views(requests.size());
+    for (std::size_t k = 0; k < requests.size(); ++k) {
+        try {
+            const RenderRequest& request = *requests[k];
+            const std::string name = effectiveScene(request);
+            auto [at, added] = scenes.try_emplace({name, request.displaceSeed});
+            if (added) at->second = sceneOf(name, request.displaceSeed);
+            if (at->second) views[k] = viewIn(request, name, *at->second);
+        } catch (const std::exception&) {
+            // a scene that does not load: its row fails with the reason (and so do the next
+            // rows of that scene, whose cached entry stays empty)
+        }
+    }
+    return views;
+}
+
 std::string traceKey(const TraceView& v) {
     return v.scene + "/" + std::to_string(v.width) + "x" + std::to_string(v.height) +
            "/displaced=" + (v.displaceSeed ? std::to_string(*v.displaceSeed) : "") + "/" +
-           exact(v.camera.fovyDegrees) + "/" + exact(v.light) + "/" + exact(v.camera.eye) + "/" +
-           exact(v.camera.at);
+           exactText(v.camera.fovyDegrees) + "/" + exactText(v.light) + "/" +
+           exactText(v.camera.eye) + "/" + exactText(v.camera.at);
 }
 
 ReferenceImage traceView(const TraceView& v) {
@@ -83,10 +100,10 @@ nlohmann::json traceViewJson(const TraceView& v) {
             {"seed",
              v.displaceSeed ? nlohmann::json(std::to_string(*v.displaceSeed)) : nlohmann::json()},
             {"size", {v.width, v.height}},
-            {"eye", vec(v.camera.eye)},
-            {"at", vec(v.camera.at)},
+            {"eye", vec3Json(v.camera.eye)},
+            {"at", vec3Json(v.camera.at)},
             {"fovy", v.camera.fovyDegrees},
-            {"light", vec(v.light)}};
+            {"light", vec3Json(v.light)}};
 }
 
 TraceView traceViewFromJson(const nlohmann::json& j) {
@@ -96,10 +113,10 @@ TraceView traceViewFromJson(const nlohmann::json& j) {
         if (!j.at("seed").is_null()) v.displaceSeed = std::stoull(j["seed"].get<std::string>());
         v.width = j.at("size").at(0).get<int>();
         v.height = j.at("size").at(1).get<int>();
-        v.camera.eye = vecFrom(j.at("eye"));
-        v.camera.at = vecFrom(j.at("at"));
+        v.camera.eye = vec3FromJson(j.at("eye"));
+        v.camera.at = vec3FromJson(j.at("at"));
         v.camera.fovyDegrees = j.at("fovy").get<float>();
-        v.light = vecFrom(j.at("light"));
+        v.light = vec3FromJson(j.at("light"));
         if (v.width <= 0 || v.height <= 0 || v.width > 8192 || v.height > 8192)
             throw std::invalid_argument("a view's size is out of range");
         return v;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "reference/raytracer.h"
 #include "scene/scene.h"
@@ -28,9 +29,14 @@ struct TraceView {
 // The view the Evaluator traces for `request` (prepare, then applyRequest): the scene's camera
 // and light, the request's eye, at, fovy and light over them.
 TraceView traceViewOf(const RenderRequest& request);
+// The same for many requests (a stage's rows), each scene loaded and displaced once: the rows
+// share one or two. A request whose scene does not load has none (its row fails with the reason).
+std::vector<std::optional<TraceView>> traceViewsOf(
+    const std::vector<const RenderRequest*>& requests);
 
 // A number as a key: every bit of it (two lights 1e-7 apart trace different references).
 std::string exactText(double v);
+std::string exactText(const glm::vec3& v);  // "x,y,z", each exactly
 
 // Every bit of the scene, size, seed, camera and light: two views with one key trace the same
 // reference (the scene's near and far planes come with its name and seed).

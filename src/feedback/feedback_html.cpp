@@ -158,18 +158,24 @@ std::string lateLine(const LateRecord& late, const StudentRecord& r) {
         h << numText(late.minutes / 60.0, 1) << " hours late, " << late.days
           << (late.days == 1 ? " day" : " days")
           << " charged by the late policy: " << numText(late.penalty) << " points off"
-          << (late.capped ? " (the policy's cap: no more is taken however late)" : "") << ", "
-          << numText(r.total()) << " of " << numText(r.maxScore) << " points after the penalty.";
+          << (late.capped ? " (the policy's cap: no more is taken however late)" : "")
+          << (hidesPoints(r) ? "."
+                             : ", " + numText(r.total()) + " of " + numText(r.maxScore) +
+                                   " points after the penalty.");
     h << "</p>\n";
     return h.str();
 }
 
 // The head line's points: the total (StudentRecord::total(), as the class page and the
-// gradebook show it), and what took it from the graded points when anything did.
+// gradebook show it), and what took it from the graded points when anything did. Not while
+// checks are hidden from the student: the total less the stages they see would tell them.
 std::string totalLine(const StudentRecord& r) {
     if (!r.graded())
         return "not graded yet (the grading machine could not run every check; it will be "
                "graded again)";
+    if (hidesPoints(r))
+        return "your total is in your course's gradebook once your instructor releases it (some "
+               "checks are graded but hidden: the total would tell their results)";
     std::string line = "<span class=\"total\">" + numText(r.total()) + " of " +
                        numText(r.maxScore) + " points</span>";
     const bool late = r.late && r.late->days > 0;
@@ -187,7 +193,7 @@ std::string sourceNotesOf(const StageRecord& st) {
     std::set<std::string> seen;
     std::ostringstream items;
     for (const RowRecord& row : st.rows)
-        if (shownToStudent(st, row))
+        if (seenByStudent(st, row))
             for (const std::string& n : row.result.sourceNotes)
                 if (seen.insert(n).second) items << "<li>" << esc(n) << "</li>\n";
     if (items.str().empty()) return "";

@@ -13,10 +13,6 @@ const char* const kTimeoutCause =
     "A TIMEOUT is usually a loop that never ends (or runs far too many times): check that each "
     "loop's condition becomes false and that its counter changes.";
 
-bool shownToStudent(const StageRecord& st, const RowRecord& row) {
-    return st.visibility != "hidden" && row.visibility != "hidden";
-}
-
 namespace {
 
 // The first thing to fix in a stage, from its status and rows (never from its message's words).
@@ -43,7 +39,7 @@ std::string firstFix(const StageRecord& st, Status seen) {
             break;
     }
     for (const RowRecord& row : st.rows) {
-        if (!shownToStudent(st, row) || earnsPoints(row.status())) continue;
+        if (!seenByStudent(st, row) || earnsPoints(row.status())) continue;
         const CheckResult& r = row.result;
         std::string fix = "the check " + r.view + " " + r.lesson;
         if (r.expectation.entry) fix += ": it should show " + r.expectation.entry->outcome;

@@ -10,9 +10,6 @@
 
 namespace sl {
 
-// A page shows a student this row (not hidden, nor of a hidden stage).
-bool shownToStudent(const StageRecord& st, const RowRecord& row);
-
 // The overview table: per stage the student sees, its status, points and the first thing to
 // fix (linked to the stage's section). "" when no stage is shown.
 std::string stagesSummary(const StudentRecord& record);

@@ -17,6 +17,7 @@
 #include "grade/reports.h"
 #include "io/data_paths.h"
 #include "io/files.h"
+#include "io/json_fields.h"
 #include "io/png.h"
 #include "io/usage_error.h"
 #include "metrics/figures.h"
@@ -39,10 +40,6 @@ std::string rowSlug(const CheckCase& c) {
 }
 
 namespace {
-
-nlohmann::json vec(const glm::vec3& v) {
-    return {v.x, v.y, v.z};
-}
 
 nlohmann::json number(double v) {
     return std::isnan(v) ? nlohmann::json() : nlohmann::json(v);
@@ -511,8 +508,10 @@ nlohmann::json checkJson(const CheckResult& r) {
         {"size", {r.width, r.height}},
         {"parameters", params},
         {"camera",
-         {{"eye", vec(r.camera.eye)}, {"at", vec(r.camera.at)}, {"fovy", r.camera.fovyDegrees}}},
-        {"light", vec(r.light)},
+         {{"eye", vec3Json(r.camera.eye)},
+          {"at", vec3Json(r.camera.at)},
+          {"fovy", r.camera.fovyDegrees}}},
+        {"light", vec3Json(r.light)},
         {"figures", figures},
         {"pixels",
          {{"evaluated", r.evaluated}, {"truth_lit", r.truthLit}, {"truth_shadow", r.truthShadow}}},
@@ -530,10 +529,6 @@ nlohmann::json checkJson(const CheckResult& r) {
 }
 
 namespace {
-
-glm::vec3 vecFrom(const nlohmann::json& v) {
-    return {v.at(0).get<float>(), v.at(1).get<float>(), v.at(2).get<float>()};
-}
 
 double numberFrom(const nlohmann::json& v) {
     return v.is_null() ? NAN : v.get<double>();
@@ -585,10 +580,10 @@ CheckResult checkResultFromJson(const nlohmann::json& j, const std::vector<Expec
             if (!err.empty()) throw std::invalid_argument("parameter " + name + ": " + err);
         }
         const auto& camera = j.at("camera");
-        r.camera.eye = vecFrom(camera.at("eye"));
-        r.camera.at = vecFrom(camera.at("at"));
+        r.camera.eye = vec3FromJson(camera.at("eye"));
+        r.camera.at = vec3FromJson(camera.at("at"));
         r.camera.fovyDegrees = camera.at("fovy").get<float>();
-        r.light = vecFrom(j.at("light"));
+        r.light = vec3FromJson(j.at("light"));
         const auto& f = j.at("figures");
         Accuracy& a = r.figures;
         for (const FigureInfo& fig : figureTable())

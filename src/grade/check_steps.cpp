@@ -45,15 +45,13 @@ std::vector<TraceView> CheckSteps::viewsToTrace() {
     std::size_t next = stage_;
     while (next < plan_.stages.size() && !plan_.stages[next].rendered()) ++next;
     if (next == plan_.stages.size()) return views;
-    for (const RowPlan& row : plan_.stages[next].rows) {
-        try {
-            TraceView view = traceViewOf(row.check.request);
-            const std::string key = traceKey(view);
-            if (rig_->keepReference(key) || !offered_.insert(key).second) continue;
-            views.push_back(std::move(view));
-        } catch (const std::exception&) {
-            // A view that cannot be found here (a scene that does not load) fails in its row.
-        }
+    std::vector<const RenderRequest*> requests;
+    for (const RowPlan& row : plan_.stages[next].rows) requests.push_back(&row.check.request);
+    for (std::optional<TraceView>& view : traceViewsOf(requests)) {
+        if (!view) continue;  // a scene that does not load fails in its row
+        const std::string key = traceKey(*view);
+        if (rig_->keepReference(key) || !offered_.insert(key).second) continue;
+        views.push_back(std::move(*view));
     }
     return views;
 }

@@ -200,6 +200,15 @@ bool seenByStudent(const StageRecord& st, const RowRecord& row) {
 // 20/19 add up to 20.007): the seen points are taken from the fewer rounded rows, the stage's
 // less its hidden rows or the seen rows added up, so a stage without hidden rows shows the
 // points grades.csv and the class page show.
+bool hidesPoints(const StudentRecord& record) {
+    for (const StageRecord& st : record.stages) {
+        if (st.visibility == "hidden" && st.maxPoints > 0) return true;
+        for (const RowRecord& row : st.rows)
+            if (!seenByStudent(st, row) && row.maxPoints > 0) return true;
+    }
+    return false;
+}
+
 SeenStage seenStage(const StageRecord& st) {
     SeenStage out;
     double hiddenPoints = 0, hiddenMax = 0;

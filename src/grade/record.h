@@ -128,6 +128,10 @@ struct SeenStage {
 };
 bool seenByStudent(const StageRecord& st, const RowRecord& row);
 SeenStage seenStage(const StageRecord& st);
+// Some of the record's points are in rows or stages the student does not see: then the total
+// less the points they see is the hidden rows' points (with one hidden row, its verdict), so a
+// student's page does not show it (the gradebook does, when the instructor releases it).
+bool hidesPoints(const StudentRecord& record);
 
 // A stage's record from its plan and, when it was rendered, its job's results (`got`; a job
 // that gave no results is one row, whose status every row takes). MISSING stages need none.

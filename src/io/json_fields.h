@@ -2,6 +2,7 @@
 // know, and what is allowed, the same way.
 #pragma once
 
+#include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -21,5 +22,10 @@ std::string commaList(const Names& names) {
 
 // "unknown field (allowed: a, b, c)": the message for such a key.
 std::string unknownFieldMessage(const std::set<std::string>& allowed);
+
+// A vector as JSON [x, y, z] and back (`vec3FromJson` throws nlohmann::json::exception on
+// anything else): the reports' cameras and lights and the browser's views.
+nlohmann::json vec3Json(const glm::vec3& v);
+glm::vec3 vec3FromJson(const nlohmann::json& v);
 
 }  // namespace sl

@@ -37,9 +37,16 @@ TEST(TraceView, EveryRowLooksUpTheKeyItsViewPredicts) {
     std::size_t displaced = 0;
     const std::vector<CheckCase> rows = everyCoreRow();
     ASSERT_GT(rows.size(), stageRegistry().size());
-    for (const CheckCase& c : rows) {
+    // Found as the page's check finds them: all at once, each scene loaded once.
+    std::vector<const RenderRequest*> requests;
+    for (const CheckCase& c : rows) requests.push_back(&c.request);
+    const std::vector<std::optional<TraceView>> views = traceViewsOf(requests);
+    ASSERT_EQ(views.size(), rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        const CheckCase& c = rows[k];
         rig.prepare(c.request);
-        EXPECT_EQ(rig.currentTraceKey(), traceKey(traceViewOf(c.request)))
+        ASSERT_TRUE(views[k].has_value()) << c.request.stage << " " << c.view;
+        EXPECT_EQ(rig.currentTraceKey(), traceKey(*views[k]))
             << c.request.stage << " " << c.view << " " << c.lesson;
         displaced += c.request.displaceSeed.has_value();
     }

@@ -446,6 +446,7 @@ TEST(StudentPage, AHiddenStageIsNotShown) {
     r.score = 2;
     r.maxScore = 12;
     const std::string page = studentPage(r);
+    EXPECT_EQ(page.find("2.00 of 12.00"), std::string::npos) << page;  // 12 - 2: the hidden max
     EXPECT_NE(page.find("rgb/core"), std::string::npos);
     EXPECT_EQ(page.find("margin/core"), std::string::npos) << page;
     EXPECT_EQ(page.find("0 of 5 checks"), std::string::npos) << page;
@@ -454,7 +455,8 @@ TEST(StudentPage, AHiddenStageIsNotShown) {
 
 // Hidden rows are counted nowhere a student sees (issue 39): "1 of 3 checks" beside two rows
 // shown, one of them passing, would say the hidden row failed; so would its points in the
-// stage's header or a count of hidden rows beside the total.
+// stage's header, a count of hidden rows, or the total (less the stages shown: the hidden row's
+// points), in the head line or the late policy's.
 TEST(StudentPage, HiddenRowsAreCountedNowhere) {
     StagePlan plan;
     plan.stage = "rgb";
@@ -475,6 +477,13 @@ TEST(StudentPage, HiddenRowsAreCountedNowhere) {
     StudentRecord rec;
     rec.student = "ann";
     rec.stages = {stageRecord(plan, &results, "")};
+    rec.score = 5;
+    rec.maxScore = 15;
+    LateRecord late;
+    late.days = 1;
+    late.minutes = 600;
+    late.penalty = 0.5;
+    rec.late = late;
     EXPECT_EQ(rec.stages[0].message, "1 of 2 visible checks show the lesson");
     const SeenStage seen = seenStage(rec.stages[0]);
     EXPECT_EQ(seen.seen, 2);
@@ -487,6 +496,14 @@ TEST(StudentPage, HiddenRowsAreCountedNowhere) {
     EXPECT_EQ(page.find("view-hidden"), std::string::npos) << page;
     EXPECT_EQ(page.find(" more checks"), std::string::npos) << page;  // no count of them
     EXPECT_NE(page.find("graded but hidden"), std::string::npos) << page;
+    EXPECT_EQ(page.find(" of 15.00"), std::string::npos) << page;  // the total, 4.50 of 15.00
+    EXPECT_EQ(page.find("after the penalty"), std::string::npos) << page;
+    EXPECT_NE(page.find("charged by the late policy: 0.50 points off"), std::string::npos);
+    EXPECT_NE(page.find("your total is in your course's gradebook"), std::string::npos) << page;
+    // Without the hidden row the total is there, as the class page and gradebook show it.
+    rec.stages[0].rows.pop_back();
+    rec.maxScore = 10;
+    EXPECT_NE(studentPage(rec).find("4.50 of 10.00 points"), std::string::npos);
 }
 
 // A kept record holds each row's points to 3 decimals and the stage's exactly: 19 rows of

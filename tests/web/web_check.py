@@ -33,7 +33,8 @@ const wait = () => shadowlab.check.running ? setTimeout(wait, 100)
   : (clearInterval(beat), done({report: shadowlab.check.report, error: shadowlab.check.error,
           seconds: shadowlab.check.seconds, state: document.getElementById('checkState').textContent,
           traced_here: shadowlab.check.tracedHere || 0,
-          traced_by_workers: shadowlab.check.tracedByWorkers || 0, longest_pause_ms: pause}));
+          traced_by_workers: shadowlab.check.tracedByWorkers || 0, longest_pause_ms: pause,
+          view_errors: shadowlab.tracers.viewErrors.slice(0, 3)}));
 wait();
 """
 
@@ -145,7 +146,8 @@ def check_case(driver, args, out, name, what, folder):
         # Served, the workers trace every view: a row that traced on the page's thread looked up a
         # key its view did not predict (eval/trace_view.h).
         failures.append(f"{name}: {got['traced_here']} references traced on the page's thread, "
-                        f"{got['traced_by_workers']} by its workers")
+                        f"{got['traced_by_workers']} by its workers; views the workers could not "
+                        f"trace or the check refused: {got['view_errors'] or 'none'}")
     rows = sum(len(s["rows"]) for s in page["stages"])
     verdicts = " ".join(sorted({r["verdict"] for _, r in rows_of(page)}))
     print(f"web: check {name:34} {rows:3} rows ({verdicts}): "
@@ -170,6 +172,44 @@ def wait_for_tracers(driver):
             return False
         time.sleep(0.1)
     return False
+
+
+# The first view the page sends a tracer is replaced by one the worker cannot trace: it answers
+# with an error for that view alone.
+POISON_ONE_VIEW = """
+const worker = shadowlab.tracers.ready[0], post = worker.postMessage.bind(worker);
+let first = true;
+worker.postMessage = message => {
+  post(first ? { key: message.key, view: { scene: 7 } } : message);
+  first = false;
+};
+"""
+
+
+def one_view_refused(driver, args, out):
+    """Served: a view one worker cannot trace is traced by its row on the page's thread, and the
+    workers trace every other view of the check (a single view's error must not turn them off
+    for the session). Our `check --all` again, its first view refused by the worker: exactly one
+    reference traced on the page's thread, the verdicts those of the first run."""
+    first = json.loads((out / "page_report_ours_all.json").read_text())
+    driver.execute_script("shadowlab.takeFolder('', '')")
+    driver.execute_script(POISON_ONE_VIEW)
+    got = driver.execute_async_script(RUN, "all", str(args.seed))
+    failed = driver.execute_script("return shadowlab.tracers.failed")
+    failures = []
+    if got.get("error"):
+        return [f"one view refused: the page's check says {got['error']!r}"]
+    if got["traced_here"] != 1 or len(got["view_errors"]) != 1 or failed:
+        failures.append(f"one view refused: {got['traced_here']} references traced on the page's "
+                        f"thread (1 wanted), {got['traced_by_workers']} by the workers, view "
+                        f"errors {got['view_errors']}, the workers {failed or 'still on'}")
+    verdicts = [(k, r["verdict"]) for k, r in rows_of(json.loads(got["report"]))]
+    if verdicts != [(k, r["verdict"]) for k, r in rows_of(first)]:
+        failures.append("one view refused: the rows' verdicts differ from the first run's")
+    print(f"web: one view refused by its worker: {got['traced_here']} traced on the page's "
+          f"thread, {got['traced_by_workers']} by the workers, {len(verdicts)} rows: "
+          f"{'ok' if not failures else 'NO'}")
+    return failures
 
 
 def solution_lines(repo):
@@ -279,6 +319,8 @@ def main():
             failures += f
             if result:
                 summary[name] = result
+        if args.serve and "ours_all" in summary:
+            failures += one_view_refused(driver, args, out)
     finally:
         driver.quit()
     (out / "check_parity.json").write_text(json.dumps(summary, indent=1) + "\n")
