@@ -31,6 +31,8 @@ ap.add_argument("--all", type=int, default=20)
 ap.add_argument("--busy", action="store_true")
 ap.add_argument("--classes", default="one,all")
 ap.add_argument("--grade-only", action="store_true", help="no loop: grade's time and progress error only")
+ap.add_argument("--lines", help="write every student line after the first quarter here (JSON): "
+                "its time, what it said was left, what was left, the line")
 a = ap.parse_args()
 exe, repo, work = os.path.abspath(a.exe), a.repo, a.work
 shutil.rmtree(work, ignore_errors=True)
@@ -66,9 +68,9 @@ for k in range(a.all):
             put(work + "/class-all/s%02d" % k, f, text)
 
 
-def seconds_of(text):  # grade's duration(): "12 s", "3 min 05 s"
-    m = re.match(r"(?:(\d+) min )?(\d+) s", text)
-    return int(m.group(1) or 0) * 60 + int(m.group(2))
+def seconds_of(text):  # grade's duration(): "12 s", "3 min 05 s", "4.5 s"
+    m = re.match(r"(?:(\d+) min )?(\d+(?:\.\d)?) s", text)
+    return int(m.group(1) or 0) * 60 + float(m.group(2))
 
 
 def loop(cls, args):
@@ -85,6 +87,7 @@ def loop(cls, args):
 def grade(cls, assignment):
     out = work + "/grade-" + os.path.basename(cls)
     shutil.rmtree(out, ignore_errors=True)
+    start = time.time()
     p = subprocess.Popen([exe, "grade", cls, "--assignment", assignment, "--out", out, "--time-limit", "300"],
                          stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
     lines = [(time.time(), line) for line in p.stdout]
@@ -93,7 +96,7 @@ def grade(cls, assignment):
     info = {}
     # Every line after the first quarter of the class: |said - left| / left, where left is the
     # run's end (its last line, the class's pages written) minus the line's time.
-    errors, abs_errors = [], []
+    errors, abs_errors, kept = [], [], []
     last_student = None
     for t, line in lines:
         m = re.match(r"\[student (\d+) of (\d+)\].*time left about (.+)$", line)
@@ -108,6 +111,8 @@ def grade(cls, assignment):
         if 4 * i > n:
             errors.append(abs(said - left) / max(left, 0.1))
             abs_errors.append(abs(said - left))
+            kept.append({"at_s": round(t - start, 2), "said_s": said, "left_s": round(left, 2),
+                         "error": round(errors[-1], 3), "line": line.rstrip()})
     # The same against the last student's line (the rows the estimate follows all done): what is
     # left after it (the jobs' exit, the class's pages) is not in any row.
     to_last = [abs(seconds_of(m.group(3)) - (last_student - t)) / (last_student - t)
@@ -124,6 +129,9 @@ def grade(cls, assignment):
                      "progress_lines_over_25pct": sum(e > 0.25 for e in errors),
                      "progress_abs_error_max_s": round(max(abs_errors), 1),
                      "after_last_student_line_s": round(end - last_student, 1)})
+    if a.lines:
+        with open(a.lines, "a") as f:
+            f.write(json.dumps({"class": os.path.basename(cls), "lines": kept}) + "\n")
     jobs = [line for _, line in lines if " on " in line and "(--jobs" in line]
     info["jobs"] = jobs[0].strip() if jobs else ""
     return info
