@@ -90,8 +90,14 @@ Judgement judgeDisplaced(const Expectation& e, const std::map<std::string, doubl
         const double high = range.highest + slack(range.highest);
         const double low = range.lowest - slack(range.lowest);
         if (!std::isnan(l.max) && high > l.max) l.max = high, wider = true;
-        if (!std::isnan(l.min) && range.lowest < l.min + 0.5 && low < l.min)
-            l.min = low, wider = true;
+        // A floor above 0 says the lesson's picture shows the figure (the inverted lesson's
+        // false shadow): lowered, it stays above 0 where the solution shows any, at a quarter of
+        // its lowest. At 0, a picture without it passed where ours showed little (a starter that
+        // draws no shadow passed bias's inverted lesson in a displaced view where ours showed 0.2
+        // %).
+        const double floor = l.min > 0 ? std::max(low, 0.25 * range.lowest) : low;
+        if (!std::isnan(l.min) && range.lowest < l.min + 0.5 && floor < l.min)
+            l.min = floor, wider = true;
     }
     Judgement j = judge(widened, theirs);
     if (wider)

@@ -87,6 +87,29 @@ TEST(Judge, ADisplacedViewIsHeldToOursWhenTheBoundIsOutOfReach) {
               Status::Fail);
 }
 
+// A floor above 0 (the lesson's picture shows the figure) lowered to the solution's lowest never
+// reaches 0 while the solution shows any: the inverted lesson asks for false shadow, and in a view
+// where ours show 0.2 % a picture with none (no shadow drawn at all) would pass.
+TEST(Judge, APositiveFloorLoweredStaysAboveZero) {
+    Expectation e;
+    e.outcome = "inverted";
+    e.limits = {{"false_lit_pct", 99, NAN}, {"false_shadow_pct", 1, NAN}};
+    DisplacedFigures ours = {{"false_lit_pct", {100, 100}}, {"false_shadow_pct", {0.681, 15.7}}};
+    const std::map<std::string, double> here = {{"false_lit_pct", 100}, {"false_shadow_pct", 0.2}};
+    const std::map<std::string, double> none = {{"false_lit_pct", 100}, {"false_shadow_pct", 0}};
+    auto noShadow = judgeDisplaced(e, none, &ours, &here);
+    EXPECT_EQ(noShadow.status, Status::Fail) << noShadow.message;
+    const std::map<std::string, double> asOurs = {{"false_lit_pct", 100},
+                                                  {"false_shadow_pct", 0.2}};
+    EXPECT_EQ(judgeDisplaced(e, asOurs, &ours, &here).status, Status::Pass);
+    const std::map<std::string, double> aQuarter = {{"false_lit_pct", 100},
+                                                    {"false_shadow_pct", 0.06}};
+    EXPECT_EQ(judgeDisplaced(e, aQuarter, &ours, &here).status, Status::Pass);
+    // Where the solution shows none, none passes (the lesson does not show in that view).
+    const std::map<std::string, double> oursNone = none;
+    EXPECT_EQ(judgeDisplaced(e, none, &ours, &oursNone).status, Status::Pass);
+}
+
 // A floor under a figure near its best stands where the solution clears it: 36-41 dB of PSNR
 // over displaced views against a floor of 32 dB must not become 27 dB (a quarter of 36).
 TEST(Judge, AFloorTheSolutionClearsIsNotLowered) {
