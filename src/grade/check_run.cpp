@@ -184,7 +184,11 @@ std::optional<PairedRow> CaseSeries::pairOf(std::size_t k, std::string& note) co
         if (cases_[j].drawn != first || cases_[j].request.displaceSeed != c.request.displaceSeed)
             continue;
         const CheckResult& before = results_[j];
-        if (before.status != Status::Pass && before.status != Status::Fail) break;
+        if (before.status != Status::Pass && before.status != Status::Fail) {
+            note = "response to " + c.drawn->response->param +
+                   " not judged: its first row was not judged";
+            return std::nullopt;
+        }
         PairedRow p{c.drawn, "", before.parameters, before.figureMap(), {}};
         for (const DrawnParam& d : first->draw)
             if (d.name == c.drawn->response->param)
@@ -208,7 +212,8 @@ const CheckResult& CaseSeries::next() {
     CheckResult r =
         runCheck(rig_, c.request, diffPath_(c), found == ours_.end() ? nullptr : &found->second,
                  c.pictures, paired ? &*paired : nullptr);
-    if (!pairNote.empty()) r.note += (r.note.empty() ? "" : "; ") + pairNote;
+    if (!pairNote.empty())
+        r.note = capped(r.note + (r.note.empty() ? "" : "; ") + pairNote, kMaxRowMessage);
     r.view = c.view;
     r.lesson = c.lesson.empty() && r.expectation.entry ? r.expectation.entry->label() : c.lesson;
     results_.push_back(std::move(r));
