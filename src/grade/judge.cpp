@@ -148,7 +148,6 @@ Judgement judgeResponse(const DrawnResponse& response, const std::string& from,
     const double nearer = sign * (size / t.factor - t.abs),
                  farther = sign * (size * t.factor + t.abs);
     Expectation pair;
-    pair.stage = "";
     pair.outcome = "our shaders' response to " + response.param;
     pair.limits.push_back({name, std::min(nearer, farther), std::max(nearer, farther)});
     const double theirs = figureOf(theirsSecond, t.figure) - figureOf(theirsFirst, t.figure);

@@ -101,6 +101,24 @@ depth_check() {  # depth_check LABEL: both depth hand-ins checked into $tmp/dept
   done
 }
 depth_check home
+# The second row's values typed back with --set at home: judged by its band from the shipped
+# figures of that row (not a SKIP), as `check --set` repeats any drawn row.
+sets=$(python3 -c 'import json, sys
+rows = [x for st in json.load(open(sys.argv[1]))["stages"] for x in st["rows"]]
+second = [x for x in rows if "response:margin" in x["lesson"]][0]
+print(" ".join("--set %s=%s" % (k, second["parameters"][k]) for k in ("depth-format", "map-size", "margin")))' \
+  "$tmp/depth-home-by_value.json")
+set +e  # the fixed views at these settings are judged by the defaults' lesson: acne, FAIL
+# shellcheck disable=SC2086
+run check --stage depth --shaders "$tmp/depth/by_value" --seed "$seed" $sets --time-limit 300 \
+  --report "$tmp/depth-set.json" >/dev/null 2>"$tmp/depth-set.err"
+set -e
+python3 -c 'import json, sys
+rows = [x for st in json.load(open(sys.argv[1]))["stages"] for x in st["rows"]]
+row = [x for x in rows if x["view"] == "displaced"][0]
+assert row["verdict"] == "PASS" and "student edition: our figures shipped for seed" in row["message"], row' \
+  "$tmp/depth-set.json" ||
+  fail "the depth pair's second row typed back with --set is not judged from the shipped figures: $(tail -2 "$tmp/depth-set.err")"
 # The installed tree itself checked (no folder laid over) is the starter: its displaced and drawn
 # rows are judged by the solution's data too, never against its own stubs (it has no drawn rows:
 # those draw a folder's values against ours).
