@@ -21,8 +21,9 @@ namespace sl {
 // range (both a floor and a ceiling) is two of these, one per side.
 struct FigureReason {
     enum class Side { AtLeast, AtMost };  // value >= bound, value <= bound
-    std::string figure;                   // the figure table's name (metrics/figures.h)
-    double value = NAN;                   // what was measured; NaN: not measured
+    std::string figure;  // the figure table's name (metrics/figures.h), or a drawn pair's
+                         // "FIGURE change from PARAM=VALUE" (judgeResponse)
+    double value = NAN;  // what was measured; NaN: not measured
     Side side = Side::AtMost;
     double bound = NAN;   // as held: a displaced view's widened bound, a drawn row's from ours
     bool passed = false;  // the value is on the bound's side (never for a value not measured)
