@@ -6,6 +6,10 @@ draws its drawn rows at one of these seeds and holds the student's render to the
 grader's rule (src/stages/drawn_figures.h, docs/check.md "Graded by the method").
 
     python3 scripts/measure_drawn_figures.py build/shadowlab --seeds 1-8 [--out FILE]
+        [--stages depth,bias]
+
+`--stages` measures those stages' rows again and keeps the other stages' rows of the file as they
+are (the same seeds): for a change to one stage's drawn entries or shaders.
 
 Run from a build of the source tree (its shaders are the solutions): per seed, stage and tree,
 one `check --stage ID --glsl TREE --shaders shaders_TREE --seed S`, the solution checked as a
@@ -47,15 +51,29 @@ def main():
     ap.add_argument("exe")
     ap.add_argument("--seeds", required=True, help="e.g. 1-8 or 3,17,101")
     ap.add_argument("--out", default=os.path.join(SOURCE, "src", "stages", "drawn_figures.json"))
+    ap.add_argument("--stages", help="only these stages (comma-separated); the rest kept")
     args = ap.parse_args()
     seeds = seeds_of(args.seeds)
     entries = json.load(open(os.path.join(SOURCE, "src", "stages", "expectations.json")))["drawn"]
     tolerance = {label_of(e): sorted(e["tolerance"]) for e in entries}
+    # An entry's second row (its "response": the same values, one moved by a drawn ratio) has
+    # figures of its own: the student edition judges the pair from both rows' figures.
+    tolerance.update({label_of(e) + " response:" + e["response"]["param"]:
+                      sorted(set(e["tolerance"]) | {e["response"]["figure"]})
+                      for e in entries if "response" in e})
     listed = json.loads(subprocess.run([args.exe, "stages", "--json"], capture_output=True,
                                        text=True, check=True).stdout)
     trees = {s["id"]: s["trees"] for s in listed}
     runs = sorted({(e["stage"], t) for e in entries for t in e.get("trees") or trees[e["stage"]]})
     rows = {}
+    if args.stages:
+        only = args.stages.split(",")
+        kept = json.load(open(args.out))
+        if kept["seeds"] != seeds:
+            sys.exit("--stages keeps the other rows of %s, measured at seeds %s: measure at those"
+                     % (args.out, kept["seeds"]))
+        rows = {k: v for k, v in kept["rows"].items() if k.split("/")[0] not in only}
+        runs = [(stage, tree) for stage, tree in runs if stage in only]
     with tempfile.TemporaryDirectory() as tmp:
         for seed in seeds:
             for stage, tree in runs:

@@ -132,8 +132,9 @@ std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool
             r.sceneGiven = true;
         }
         r.displaceSeed = drawSeed;
-        cases.push_back(
-            {r, "drawn", row->label() + " (drawn: " + drawnValuesText(*row, drawSeed) + ")"});
+        cases.push_back({r, "drawn",
+                         row->label() + " (drawn: " + drawnValuesText(*row, drawSeed) + ")",
+                         RowPictures::Difference, row});
     }
     return cases;
 }
@@ -171,13 +172,45 @@ void CaseSeries::measureOurs() {
     }
 }
 
+// The first row of case k's pair, run before it in this series: the same entry and seed, judged.
+std::optional<PairedRow> CaseSeries::pairOf(std::size_t k, std::string& note) const {
+    const CheckCase& c = cases_.at(k);
+    const DrawnRow* first = c.drawn ? pairedRowOf(*c.drawn) : nullptr;
+    if (!first) return std::nullopt;
+    for (std::size_t j = 0; j < k; ++j) {
+        if (cases_[j].drawn != first || cases_[j].request.displaceSeed != c.request.displaceSeed)
+            continue;
+        const CheckResult& before = results_[j];
+        if (before.status != Status::Pass && before.status != Status::Fail) {
+            note = "response to " + c.drawn->response->param +
+                   " not judged: its first row was not judged";
+            return std::nullopt;
+        }
+        PairedRow p{c.drawn, "", before.parameters, before.figureMap(), {}};
+        for (const DrawnParam& d : first->draw)
+            if (d.name == c.drawn->response->param)
+                p.from = d.name + "=" + before.parameters.text(d.name);
+        auto ours = ours_.find(j);
+        if (ours != ours_.end()) p.ours = ours->second;
+        return p;
+    }
+    note = "response to " + c.drawn->response->param +
+           " not judged: its first row is not in this check";
+    return std::nullopt;
+}
+
 const CheckResult& CaseSeries::next() {
     const std::size_t k = results_.size();
     const CheckCase& c = cases_.at(k);
     if (!measured_ && needsOurs(c)) measureOurs();
     auto found = ours_.find(k);
-    CheckResult r = runCheck(rig_, c.request, diffPath_(c),
-                             found == ours_.end() ? nullptr : &found->second, c.pictures);
+    std::string pairNote;
+    const std::optional<PairedRow> paired = pairOf(k, pairNote);
+    CheckResult r =
+        runCheck(rig_, c.request, diffPath_(c), found == ours_.end() ? nullptr : &found->second,
+                 c.pictures, paired ? &*paired : nullptr);
+    if (!pairNote.empty())
+        r.note = capped(r.note + (r.note.empty() ? "" : "; ") + pairNote, kMaxRowMessage);
     r.view = c.view;
     r.lesson = c.lesson.empty() && r.expectation.entry ? r.expectation.entry->label() : c.lesson;
     results_.push_back(std::move(r));
@@ -320,18 +353,51 @@ std::string seedList(const std::vector<std::uint64_t>& seeds) {
     return text.empty() ? "none" : text;
 }
 
+// Our figures shipped for values `row` covers at `seed`: its own, or those of its entry's second
+// row (drawn at the same seed, its response's parameter moved), else null.
+const ShippedDrawn* shippedDrawnFor(const DrawnRow& row, const std::string& tree,
+                                    std::uint64_t seed, const ParamSet& values) {
+    if (const ShippedDrawn* data = shippedDrawnAt(row, tree, seed, values)) return data;
+    for (const DrawnRow* second : drawnRowsOf(row.stage, tree))
+        if (pairedRowOf(*second) == &row)
+            if (const ShippedDrawn* data = shippedDrawnAt(*second, tree, seed, values)) return data;
+    return nullptr;
+}
+
+// A pair's second row: its own judgement and the pair's, ours for the first row rendered beside
+// theirs (`paired.ours`) or shipped as data in a student edition (none: the pair is a SKIP).
+Judgement withPair(const RenderRequest& request, const CheckResult& r, Judgement own,
+                   const std::map<std::string, double>& oursHere, const PairedRow& paired) {
+    const DrawnResponse& response = *paired.second->response;
+    const DrawnRow& first = *pairedRowOf(*paired.second);
+    std::map<std::string, double> oursFirst = paired.ours;
+    if (isStudentEdition(request.tree)) {
+        const ShippedDrawn* data =
+            shippedDrawnAt(first, r.tree, *request.displaceSeed, paired.values);
+        oursFirst = data ? data->figures : std::map<std::string, double>();
+    } else if (request.overlay.empty()) {
+        oursFirst = paired.theirs;  // ours laid over nothing: theirs are ours
+    }
+    return withResponse(std::move(own), judgeResponse(response, paired.from, paired.theirs,
+                                                      r.figureMap(), oursFirst, oursHere));
+}
+
 // A drawn row's judgement: against our figures at the same values and view, rendered here
-// (`shipped`) or, in a student edition, shipped as data for the seed (none: a SKIP).
+// (`shipped`) or, in a student edition, shipped as data for the seed (none: a SKIP); a pair's
+// second row also by its pair (withPair).
 Judgement judgeDrawnCase(const RenderRequest& request, const CheckResult& r, const DrawnRow& row,
-                         const std::map<std::string, double>* shipped) {
+                         const std::map<std::string, double>* shipped, const PairedRow* paired) {
     const std::map<std::string, double> theirs = r.figureMap();
     const std::string values = drawnValues(row, r.parameters);
     // Our figures: rendered beside theirs, or theirs when they are ours (no folder laid over);
     // a student edition's own shaders are stubs, never a measure (the data below, folder or not).
-    if (shipped || !isStudentEdition(request.tree))
-        return judgeDrawn(row, values, theirs, shipped ? *shipped : theirs);
+    if (shipped || !isStudentEdition(request.tree)) {
+        const std::map<std::string, double>& ours = shipped ? *shipped : theirs;
+        Judgement own = judgeDrawn(row, values, theirs, ours);
+        return paired ? withPair(request, r, std::move(own), ours, *paired) : own;
+    }
     const std::uint64_t seed = *request.displaceSeed;
-    const ShippedDrawn* data = shippedDrawnAt(row, r.tree, seed, r.parameters);
+    const ShippedDrawn* data = shippedDrawnFor(row, r.tree, seed, r.parameters);
     if (!data)
         return {Status::Skip,
                 "drawn " + values + " at seed " + std::to_string(seed) +
@@ -341,6 +407,7 @@ Judgement judgeDrawnCase(const RenderRequest& request, const CheckResult& r, con
                     "); the grader judges it",
                 {}};
     Judgement j = judgeDrawn(row, values, theirs, data->figures);
+    if (paired) j = withPair(request, r, std::move(j), data->figures, *paired);
     j.message += " [student edition: our figures shipped for seed " + std::to_string(seed) +
                  ", one of " + std::to_string(shippedDrawnSeeds().size()) +
                  " (src/stages/drawn_figures.json); the grader draws at its own seed]";
@@ -350,13 +417,13 @@ Judgement judgeDrawnCase(const RenderRequest& request, const CheckResult& r, con
 // The row's judgement once measured (its expectation found): a drawn row against ours, a
 // displaced one against the wider of the lesson's and the solution's, else the lesson's bounds.
 Judgement judgeCase(const RenderRequest& request, const CheckResult& r,
-                    const std::map<std::string, double>* shipped) {
+                    const std::map<std::string, double>* shipped, const PairedRow* paired) {
     // Settings no lesson names but a drawn row covers (the seed's, or the same typed with --set):
     // held to ours at the same values, not to the defaults' lesson.
     const DrawnRow* drawn = request.displaceSeed && !r.expectation.exact
                                 ? drawnRowFor(r.stage, r.scene, r.tree, r.parameters)
                                 : nullptr;
-    if (drawn) return judgeDrawnCase(request, r, *drawn, shipped);
+    if (drawn) return judgeDrawnCase(request, r, *drawn, shipped, paired);
     const Expectation& lesson = *r.expectation.entry;
     const std::map<std::string, double> theirs = r.figureMap();
     // Ours in a displaced view: theirs when they are ours, never a student edition's stubs.
@@ -385,7 +452,8 @@ std::string contextLostMessage(const std::string& stage) {
 }
 
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
-                     const std::map<std::string, double>* shipped, RowPictures pictures) {
+                     const std::map<std::string, double>* shipped, RowPictures pictures,
+                     const PairedRow* paired) {
     if (request.view != ViewMode::Final)
         throw UsageError("--view " + std::string(viewName(request.view)) +
                          ": check judges the final picture; use --view final (or leave it out)");
@@ -444,7 +512,7 @@ CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::st
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
     }
-    const Judgement j = judgeCase(request, r, shipped);
+    const Judgement j = judgeCase(request, r, shipped, paired);
     r.status = j.status;
     r.message = j.message;
     r.reasons = j.reasons;

@@ -90,15 +90,26 @@ enum class RowPictures {
 // What a row says when the browser lost its WebGL context under it (NOT GRADED: the platform's,
 // never the student's, whatever the row drew or failed to compile).
 std::string contextLostMessage(const std::string& stage);
+// The first row of a drawn pair, for judging its second (stages/drawn.h, DrawnResponse): the
+// second's row, the first's drawn values ("margin=0.00053") and figures, theirs and ours (ours
+// empty in a student edition: the shipped data's).
+struct PairedRow {
+    const DrawnRow* second = nullptr;
+    std::string from;
+    ParamSet values;
+    std::map<std::string, double> theirs, ours;
+};
 CheckResult runCheck(Evaluator& rig, const RenderRequest& request, const std::string& diffPath,
                      const std::map<std::string, double>* shipped = nullptr,
-                     RowPictures pictures = RowPictures::Difference);
+                     RowPictures pictures = RowPictures::Difference,
+                     const PairedRow* paired = nullptr);
 
 // One thing a (stage, tree) check judges: a lesson entry's settings seen from one view.
 struct CheckCase {
     RenderRequest request;
     std::string view, lesson;
     RowPictures pictures = RowPictures::Difference;
+    const DrawnRow* drawn = nullptr;  // a drawn row's entry (stages/drawn.h), else null
 };
 
 // The file name of a row's images: "STAGE-TREE-VIEW-LESSON" with only [A-Za-z0-9._-].
@@ -114,7 +125,8 @@ std::string rowSlug(const CheckCase& c);
 // views' geometry or cameras cannot know this one's). With a seed and a submission's overlay
 // (not narrowed, no custom view), each "drawn" row of the stage (stages/drawn.h) adds one more,
 // view "drawn": the displaced view at settings the seed draws (in a student edition, at the
-// seed of the shipped set that shippedDrawnSeed picks: stages/drawn_figures.h).
+// seed of the shipped set that shippedDrawnSeed picks: stages/drawn_figures.h). An entry with a
+// response adds two, its second right after its first: CaseSeries judges the pair on the second.
 std::vector<CheckCase> checkCases(const RenderRequest& base, bool narrowed, bool customView,
                                   std::optional<std::uint64_t> seed = std::nullopt);
 
@@ -124,7 +136,9 @@ std::uint64_t drawSeed();
 // The cases of one stage and tree run in order on `rig`, one at a time (the browser edition runs
 // a row between the page's frames). `diffPath(case)` names a case's diff image ("" for none). A
 // shader that does not build fails the same way under every lesson and view: the series is done
-// after the first row that could not be judged.
+// after the first row that could not be judged. A drawn pair's second row is judged with its
+// first's figures (PairedRow), found among the rows run before it; one whose first is not in the
+// series (an assignment's weight left it out) is judged by its own band, with a note.
 class CaseSeries {
   public:
     CaseSeries(Evaluator& rig, std::vector<CheckCase> cases,
@@ -136,6 +150,7 @@ class CaseSeries {
   private:
     static bool needsOurs(const CheckCase& c);
     void measureOurs();
+    std::optional<PairedRow> pairOf(std::size_t k, std::string& note) const;
     Evaluator& rig_;
     std::vector<CheckCase> cases_;
     std::function<std::string(const CheckCase&)> diffPath_;

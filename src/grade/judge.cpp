@@ -126,4 +126,54 @@ Judgement judgeDrawn(const DrawnRow& row, const std::string& drawnValues,
     return j;
 }
 
+namespace {
+
+double figureOf(const std::map<std::string, double>& figures, const std::string& name) {
+    auto found = figures.find(name);
+    return found == figures.end() ? NAN : found->second;
+}
+
+}  // namespace
+
+Judgement judgeResponse(const DrawnResponse& response, const std::string& from,
+                        const std::map<std::string, double>& theirsFirst,
+                        const std::map<std::string, double>& theirsSecond,
+                        const std::map<std::string, double>& oursFirst,
+                        const std::map<std::string, double>& oursSecond) {
+    const DrawnTolerance& t = response.change;
+    const std::string name = t.figure + " change from " + from;
+    const double ours = figureOf(oursSecond, t.figure) - figureOf(oursFirst, t.figure);
+    if (std::isnan(ours))
+        return {Status::Skip, "our shaders measured no " + t.figure + " in both rows", {}};
+    if (std::abs(ours) <= t.factor * t.abs)
+        return {Status::Skip,
+                "response to " + response.param + " not judged: ours changes by " + number(ours) +
+                    " from " + from + ", within " + number(t.factor * t.abs) + " of none",
+                {}};
+    const double size = std::abs(ours), sign = ours < 0 ? -1 : 1;
+    const double nearer = sign * (size / t.factor - t.abs),
+                 farther = sign * (size * t.factor + t.abs);
+    Expectation pair;
+    pair.outcome = "our shaders' response to " + response.param;
+    pair.limits.push_back({name, std::min(nearer, farther), std::max(nearer, farther)});
+    const double theirs = figureOf(theirsSecond, t.figure) - figureOf(theirsFirst, t.figure);
+    return judge(pair, {{name, theirs}});
+}
+
+Judgement withResponse(Judgement own, const Judgement& pair) {
+    if (own.status == Status::Skip) return own;  // the row itself could not be judged
+    if (pair.status == Status::Skip) {
+        own.message += " [" + pair.message + "]";
+        return own;
+    }
+    own.reasons.insert(own.reasons.end(), pair.reasons.begin(), pair.reasons.end());
+    if (pair.status == Status::Fail) {
+        own.message = pair.message + "; " + own.message;
+        own.status = Status::Fail;
+    } else {
+        own.message += "; " + pair.message;
+    }
+    return own;
+}
+
 }  // namespace sl

@@ -21,8 +21,9 @@ namespace sl {
 // range (both a floor and a ceiling) is two of these, one per side.
 struct FigureReason {
     enum class Side { AtLeast, AtMost };  // value >= bound, value <= bound
-    std::string figure;                   // the figure table's name (metrics/figures.h)
-    double value = NAN;                   // what was measured; NaN: not measured
+    std::string figure;  // the figure table's name (metrics/figures.h), or a drawn pair's
+                         // "FIGURE change from PARAM=VALUE" (judgeResponse)
+    double value = NAN;  // what was measured; NaN: not measured
     Side side = Side::AtMost;
     double bound = NAN;   // as held: a displaced view's widened bound, a drawn row's from ours
     bool passed = false;  // the value is on the bound's side (never for a value not measured)
@@ -61,5 +62,22 @@ Judgement judgeDisplaced(const Expectation& e, const std::map<std::string, doubl
 Judgement judgeDrawn(const DrawnRow& row, const std::string& drawnValues,
                      const std::map<std::string, double>& theirs,
                      const std::map<std::string, double>& ours);
+
+// The pair of a drawn entry's two rows (stages/drawn.h, DrawnResponse): the change of the
+// response's figure from the first row (at `from`, "margin=0.00053") to the second, theirs held
+// to ours within [d / factor - abs, d * factor + abs] (d = ours' change; mirrored when d < 0). A
+// constant renders the same picture at both values (change 0), a quantizer jumps where ours
+// moves a little. Judged only where ours changes by more than factor * abs: below that the band
+// holds 0, and no pair of pictures tells a constant from the method (a SKIP that says so). The
+// reason's figure is "FIGURE change from PARAM=VALUE".
+Judgement judgeResponse(const DrawnResponse& response, const std::string& from,
+                        const std::map<std::string, double>& theirsFirst,
+                        const std::map<std::string, double>& theirsSecond,
+                        const std::map<std::string, double>& oursFirst,
+                        const std::map<std::string, double>& oursSecond);
+
+// A second row's verdict from its own (judgeDrawn) and its pair's (judgeResponse): FAIL when
+// either fails, the reasons of both; a pair not judged leaves the row's own, saying why.
+Judgement withResponse(Judgement own, const Judgement& pair);
 
 }  // namespace sl

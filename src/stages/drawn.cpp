@@ -56,7 +56,7 @@ DrawnRow parseRow(const json& j, const std::string& where) {
     if (!j.is_object()) fail("an entry must be an object");
     for (const auto& [key, value] : j.items())
         if (key != "stage" && key != "scene" && key != "trees" && key != "set" && key != "draw" &&
-            key != "tolerance" && key != "why" && key != "measured")
+            key != "tolerance" && key != "why" && key != "measured" && key != "response")
             fail("unknown field '" + key + "'");
     DrawnRow row;
     if (!j.contains("stage") || !j["stage"].is_string()) fail("missing \"stage\"");
@@ -96,6 +96,45 @@ DrawnRow parseRow(const json& j, const std::string& where) {
         row.tolerances.push_back({figure, t["abs"].get<double>(), t["factor"].get<double>()});
     }
     return row;
+}
+
+// The entry's "response": {"param": P, "ratio": [MIN, MAX], "figure": F, "abs": A, "factor": X}.
+// P is one of the entry's drawn numbers whose range holds MAX twice over (max / min >= MAX^2), so
+// that the value times r, or divided by r, always stays inside it: both rows keep the range's
+// measured acne, and `check --set` finds the second row's values in it.
+DrawnResponse parseResponse(const DrawnRow& row, const json& r, const std::string& where) {
+    auto fail = [&](const std::string& what) { throw ExpectationError(where + ": " + what); };
+    const std::string shape =
+        "must be {\"param\": P, \"ratio\": [MIN, MAX], \"figure\": F, \"abs\": A, "
+        "\"factor\": X}";
+    if (!r.is_object() || r.size() != 5 || !r.contains("param") || !r["param"].is_string() ||
+        !r.contains("ratio") || !r["ratio"].is_array() || r["ratio"].size() != 2 ||
+        !r["ratio"][0].is_number() || !r["ratio"][1].is_number() || !r.contains("figure") ||
+        !r["figure"].is_string() || !r.contains("abs") || !r["abs"].is_number() ||
+        !r.contains("factor") || !r["factor"].is_number())
+        fail(shape);
+    DrawnResponse out;
+    out.param = r["param"].get<std::string>();
+    out.ratioMin = r["ratio"][0].get<double>();
+    out.ratioMax = r["ratio"][1].get<double>();
+    out.change = {r["figure"].get<std::string>(), r["abs"].get<double>(),
+                  r["factor"].get<double>()};
+    const DrawnParam* drawn = nullptr;
+    for (const DrawnParam& d : row.draw)
+        if (d.name == out.param && d.choices.empty()) drawn = &d;
+    if (!drawn) fail("'" + out.param + "' is not a number the entry draws");
+    if (!(out.ratioMin > 1) || out.ratioMax < out.ratioMin)
+        fail("ratio [MIN, MAX] must have 1 < MIN <= MAX");
+    if (!(drawn->min > 0) || drawn->max / drawn->min < out.ratioMax * out.ratioMax)
+        fail("draw." + out.param + "'s range must hold the ratio's MAX twice over (max / min >= " +
+             std::to_string(out.ratioMax * out.ratioMax) + ")");
+    bool tolerated = false;  // so the first row's figures (shipped for a student edition) hold it
+    for (const DrawnTolerance& t : row.tolerances)
+        tolerated = tolerated || t.figure == out.change.figure;
+    if (!tolerated)
+        fail("figure '" + out.change.figure + "' is not one the entry's tolerance names");
+    if (out.change.abs < 0 || out.change.factor < 1) fail("abs must be >= 0 and factor >= 1");
+    return out;
 }
 
 // `digits` significant digits: "margin 0.0047", easy to type back with --set.
@@ -143,11 +182,15 @@ std::string drawOne(const DrawnParam& d, const ParamSpec& spec, std::mt19937_64&
 
 }  // namespace
 
-std::string DrawnRow::label() const {
+std::string DrawnRow::entryLabel() const {
     std::string text = stage;
     if (!scene.empty()) text += " scene=" + scene;
     for (const auto& [name, value] : set) text += " " + name + "=" + value;
     return text;
+}
+
+std::string DrawnRow::label() const {
+    return response ? entryLabel() + " response:" + response->param : entryLabel();
 }
 
 std::vector<DrawnRow> parseDrawnRows(const std::string& text, const std::string& origin) {
@@ -155,8 +198,14 @@ std::vector<DrawnRow> parseDrawnRows(const std::string& text, const std::string&
     std::vector<DrawnRow> rows;
     if (!doc.is_object() || !doc.contains("drawn")) return rows;
     if (!doc["drawn"].is_array()) throw ExpectationError(origin + ": \"drawn\" must be a list");
-    for (std::size_t k = 0; k < doc["drawn"].size(); ++k)
-        rows.push_back(parseRow(doc["drawn"][k], origin + ": drawn[" + std::to_string(k) + "]"));
+    for (std::size_t k = 0; k < doc["drawn"].size(); ++k) {
+        const std::string where = origin + ": drawn[" + std::to_string(k) + "]";
+        rows.push_back(parseRow(doc["drawn"][k], where));
+        if (!doc["drawn"][k].contains("response")) continue;
+        DrawnRow second = rows.back();
+        second.response = parseResponse(second, doc["drawn"][k]["response"], where + ": response");
+        rows.push_back(std::move(second));
+    }
     return rows;
 }
 
@@ -193,9 +242,47 @@ std::set<double> chosenValues(const std::string& stage, const ParamSpec& spec) {
 
 }  // namespace
 
+const DrawnRow* pairedRowOf(const DrawnRow& row) {
+    if (!row.response) return nullptr;
+    for (const DrawnRow& first : drawnRows())
+        if (!first.response && first.stage == row.stage && first.trees == row.trees &&
+            first.entryLabel() == row.entryLabel())
+            return &first;
+    return nullptr;
+}
+
+namespace {
+
+// The second row's value of its response's parameter: the first row's `value` times a ratio the
+// seed draws, or divided by it where the product would leave the range (the parser made sure the
+// quotient then stays in it), to the digits the range is drawn with.
+std::string respondedValue(const DrawnRow& row, const std::string& value, std::uint64_t seed) {
+    const DrawnResponse& response = *row.response;
+    const DrawnParam* d = nullptr;
+    for (const DrawnParam& p : row.draw)
+        if (p.name == response.param) d = &p;
+    const ParamSpec& spec = *ParamSet(findStage(row.stage)->params).find(d->name);
+    const std::set<double> chosen = chosenValues(row.stage, spec);
+    std::mt19937_64 rng(seed ^ labelHash(row.label()));
+    const double first = std::stod(value);
+    const int digits = digitsFor(d->min, d->max);
+    std::string moved = value;
+    for (int tries = 0; tries < 16 && (moved == value || chosen.count(std::stod(moved))); ++tries) {
+        const double u = double(rng() >> 11) * 0x1.0p-53;
+        const double ratio = response.ratioMin + u * (response.ratioMax - response.ratioMin);
+        const double v = first * ratio <= d->max ? first * ratio : first / ratio;
+        moved = withDigits(std::clamp(v, d->min, d->max), digits);
+        if (std::stod(moved) < d->min || std::stod(moved) > d->max)
+            moved = withDigits(std::clamp(std::stod(moved), d->min, d->max), digits);
+    }
+    return moved;
+}
+
+}  // namespace
+
 std::vector<std::pair<std::string, std::string>> drawnSettings(const DrawnRow& row,
                                                                std::uint64_t seed) {
-    std::mt19937_64 rng(seed ^ labelHash(row.label()));
+    std::mt19937_64 rng(seed ^ labelHash(row.entryLabel()));
     ParamSet values(findStage(row.stage)->params);
     auto settings = row.set;
     for (const DrawnParam& d : row.draw) {
@@ -208,12 +295,16 @@ std::vector<std::pair<std::string, std::string>> drawnSettings(const DrawnRow& r
         }
         settings.emplace_back(d.name, drawn);
     }
+    if (row.response)
+        for (auto& [name, value] : settings)
+            if (name == row.response->param) value = respondedValue(row, value, seed);
     return settings;
 }
 
 const DrawnRow* drawnRowFor(const std::string& stage, const std::string& scene,
                             const std::string& tree, const ParamSet& values) {
     for (const DrawnRow* row : drawnRowsOf(stage, tree)) {
+        if (row->response) continue;  // its values are within its first row's
         if ((row->scene.empty() ? defaultSceneOf(stage) : row->scene) != scene) continue;
         ParamSet expected(values.specs());
         for (const auto& [name, value] : row->set) expected.set(name, value);

@@ -8,6 +8,7 @@ usage: check_report.py REPORT.json --exe SHADOWLAB [--count N] [--exit N]
 are the program's own table (`SHADOWLAB stages --figures --json`), not a list of this script's;
 each row's `reasons` (the verdict's bounds as data) must agree with its verdict."""
 import json
+import re
 import subprocess
 import sys
 
@@ -24,12 +25,19 @@ def figure_table(exe):
     return [f["name"] for f in json.loads(out)]
 
 
+def named_figure(figure, figures):
+    """A figure of the table, or a drawn pair's change of one: "FIGURE change from PARAM=VALUE"
+    (docs/check.md, "the response")."""
+    base, sep, start = str(figure).partition(" change from ")
+    return base in figures and (not sep or re.fullmatch(r"[a-z-]+=\S+", start) is not None)
+
+
 def reason_problems(name, row, figures):
     """A row's reasons: well formed, naming figures of the table, and agreeing with its verdict
     (a FAIL misses at least one bound; a PASS holds every one)."""
     problems = []
     for f in row.get("reasons", []):
-        ok = (f.get("figure") in figures and f.get("side") in (">=", "<=")
+        ok = (named_figure(f.get("figure"), figures) and f.get("side") in (">=", "<=")
               and isinstance(f.get("passed"), bool) and isinstance(f.get("bound"), (int, float))
               and (f.get("value") is None or isinstance(f.get("value"), (int, float))))
         if not ok:

@@ -13,7 +13,8 @@ in the data; a scene without views has one, its own camera); with a seed (`check
 one), each lesson in the stage's own scene gains a "displaced" view (the mirror stage's too:
 its camera and mirror moved). A submission (`--shaders`) gains one row for each of the stage's "drawn" entries in the
 tree (parameters the seed draws, judged against our shaders at the same values: our own shaders
-get none). Prints one number.
+get none), two for an entry with a "response" (its second row, one parameter moved by a drawn
+ratio). Prints one number.
 """
 import argparse
 import json
@@ -40,7 +41,7 @@ def planned_rows(stages, book, tree=None, only=None, displaced=True, submission=
                 if displaced and scene == stage["scene"]:
                     rows += 1
             if submission:
-                rows += sum(1 for d in book.get("drawn", [])
+                rows += sum(2 if "response" in d else 1 for d in book.get("drawn", [])
                             if d["stage"] == stage["id"] and t in d.get("trees", [t]))
     return rows
 

@@ -83,6 +83,42 @@ corpus_check() {  # corpus_check LABEL [SEED]: each hand-in checked into $tmp/LA
   done
 }
 corpus_check home
+# The depth entry's pair (its second drawn row, the margin moved by a ratio the seed draws, judged
+# by how the picture changes: docs/check.md "the response"): at home from the shipped figures of
+# both rows, as the grader judges it with ours. A constant picked by testing the margin's value
+# passes each picture's band and fails the pair in both.
+mkdir -p "$tmp/depth/correct/depth" "$tmp/depth/by_value/depth"
+cp "$src/shaders_core/depth/lit.frag" "$tmp/depth/correct/depth/"
+cp "$src/tests/students/depth_game_margin_by_value/depth/lit.frag" "$tmp/depth/by_value/depth/"
+depth_check() {  # depth_check LABEL: both depth hand-ins checked into $tmp/depth-LABEL-NAME.json
+  for who in correct by_value; do
+    set +e
+    run check --stage depth --shaders "$tmp/depth/$who" --seed "$seed" --time-limit 300 \
+      --report "$tmp/depth-$1-$who.json" >/dev/null 2>"$tmp/depth-$1-$who.err"
+    set -e
+    [ -f "$tmp/depth-$1-$who.json" ] ||
+      fail "check of depth $who ($1) wrote no report: $(cat "$tmp/depth-$1-$who.err")"
+  done
+}
+depth_check home
+# The second row's values typed back with --set at home: judged by its band from the shipped
+# figures of that row (not a SKIP), as `check --set` repeats any drawn row.
+sets=$(python3 -c 'import json, sys
+rows = [x for st in json.load(open(sys.argv[1]))["stages"] for x in st["rows"]]
+second = [x for x in rows if "response:margin" in x["lesson"]][0]
+print(" ".join("--set %s=%s" % (k, second["parameters"][k]) for k in ("depth-format", "map-size", "margin")))' \
+  "$tmp/depth-home-by_value.json")
+set +e  # the fixed views at these settings are judged by the defaults' lesson: acne, FAIL
+# shellcheck disable=SC2086
+run check --stage depth --shaders "$tmp/depth/by_value" --seed "$seed" $sets --time-limit 300 \
+  --report "$tmp/depth-set.json" >/dev/null 2>"$tmp/depth-set.err"
+set -e
+python3 -c 'import json, sys
+rows = [x for st in json.load(open(sys.argv[1]))["stages"] for x in st["rows"]]
+row = [x for x in rows if x["view"] == "displaced"][0]
+assert row["verdict"] == "PASS" and "student edition: our figures shipped for seed" in row["message"], row' \
+  "$tmp/depth-set.json" ||
+  fail "the depth pair's second row typed back with --set is not judged from the shipped figures: $(tail -2 "$tmp/depth-set.err")"
 # The installed tree itself checked (no folder laid over) is the starter: its displaced and drawn
 # rows are judged by the solution's data too, never against its own stubs (it has no drawn rows:
 # those draw a folder's values against ours).
@@ -115,6 +151,23 @@ kit=$(tr '\n' ' ' <"$src/docs/assignment.md" | grep -o 'installs the kit into `[
   fail "docs/assignment.md says the source kit is installed into '$kit': not there"
 out=$(run check --stage margin --time-limit 300) || fail "check --stage margin with the solutions: $out"
 corpus_check instructor
+depth_check instructor
+python3 - "$tmp" <<'PY' || fail "the student edition does not judge the depth pair as the grader"
+import json, sys
+tmp = sys.argv[1]
+def drawn(path):  # by lesson: the verdict and each reason's figure and whether it held
+    return {x["lesson"]: (x["verdict"], [(f["figure"], f["passed"]) for f in x["reasons"]])
+            for st in json.load(open(path))["stages"] for x in st["rows"] if x["view"] == "drawn"}
+for who in ("correct", "by_value"):
+    home, mine = drawn(f"{tmp}/depth-home-{who}.json"), drawn(f"{tmp}/depth-instructor-{who}.json")
+    assert home == mine, (who, home, mine)
+    second = [v for k, v in home.items() if "response:margin" in k]
+    assert len(second) == 1 and any(" change from margin=" in f for f, _ in second[0][1]), home
+    print(f"depth {who}: drawn rows {[v[0] for v in home.values()]} at home and with the solutions")
+verdicts = lambda who: [v[0] for v in drawn(f"{tmp}/depth-home-{who}.json").values()]
+assert verdicts("correct") == ["PASS", "PASS"], verdicts("correct")
+assert verdicts("by_value") == ["PASS", "FAIL"], verdicts("by_value")
+PY
 run grade "$tmp/corpus" --assignment "$tmp/margin.json" --out "$tmp/graded" --seed $seed \
   --time-limit 300 >/dev/null || fail "grade of the corpus with the solutions"
 python3 - "$tmp" "$data/src/stages/drawn_figures.json" <<'PY' || fail "the student edition does not judge as the grader"

@@ -40,9 +40,12 @@ TEST(Drawn, EveryShippedRowDrawsInRangeAndIsFoundAgain) {
                     EXPECT_LE(values.number(d.name), d.max) << row.label();
                 }
             std::string scene = row.scene.empty() ? defaultSceneOf(row.stage) : row.scene;
+            // An entry's second row is judged alone by its first's band (the same ranges).
+            const DrawnRow* judgedBy = row.response ? pairedRowOf(row) : &row;
+            ASSERT_NE(judgedBy, nullptr) << row.label();
             for (const char* tree : {"core", "legacy"})
                 if (!drawnRowsOf(row.stage, tree).empty())
-                    EXPECT_EQ(drawnRowFor(row.stage, scene, tree, values), &row) << row.label();
+                    EXPECT_EQ(drawnRowFor(row.stage, scene, tree, values), judgedBy) << row.label();
         }
 }
 
@@ -151,6 +154,135 @@ TEST(Drawn, JudgedAgainstOursNotTheLessonsBounds) {
     EXPECT_EQ(none.status, Status::Skip);
 }
 
+// An entry's second row (its "response"): the first row's values but one, moved by a ratio the
+// seed draws, inside the range, to the same digits.
+TEST(Drawn, ASecondRowMovesOneValueByTheDrawnRatio) {
+    useSourceTree();
+    int pairs = 0;
+    for (const DrawnRow& row : drawnRows()) {
+        if (!row.response) continue;
+        ++pairs;
+        const DrawnRow* first = pairedRowOf(row);
+        ASSERT_NE(first, nullptr) << row.label();
+        EXPECT_EQ(first->response, std::nullopt);
+        EXPECT_NE(row.label(), first->label()) << "its own row of shipped figures";
+        const DrawnParam* d = nullptr;
+        for (const DrawnParam& p : row.draw)
+            if (p.name == row.response->param) d = &p;
+        ASSERT_NE(d, nullptr);
+        std::set<std::string> moved;
+        for (std::uint64_t seed = 0; seed < 200; ++seed) {
+            auto a = drawnSettings(*first, seed), b = drawnSettings(row, seed);
+            ASSERT_EQ(a.size(), b.size());
+            for (std::size_t k = 0; k < a.size(); ++k) {
+                EXPECT_EQ(a[k].first, b[k].first);
+                if (a[k].first != row.response->param) {
+                    EXPECT_EQ(a[k].second, b[k].second) << "only the response's parameter moves";
+                    continue;
+                }
+                const double from = std::stod(a[k].second), to = std::stod(b[k].second);
+                const double ratio = std::max(from, to) / std::min(from, to);
+                // Two significant digits: the ratio of rounded values strays a little.
+                EXPECT_GE(ratio, row.response->ratioMin * 0.9) << a[k].second << " " << b[k].second;
+                EXPECT_LE(ratio, row.response->ratioMax * 1.1) << a[k].second << " " << b[k].second;
+                EXPECT_GE(to, d->min);
+                EXPECT_LE(to, d->max);
+                moved.insert(b[k].second);
+            }
+        }
+        EXPECT_GE(moved.size(), 20u) << "no constant covers the second rows";
+    }
+    EXPECT_GE(pairs, 1) << "expectations.json has a drawn entry with a response";
+}
+
+TEST(Drawn, AResponseMistakeNamesTheEntry) {
+    auto error = [](const std::string& response) {
+        try {
+            parseDrawnRows(R"({"drawn": [{"stage": "depth", "draw": {"margin": [0.0001, 0.0008]},
+                "tolerance": {"false_shadow_pct": {"abs": 0.3, "factor": 2.5}}, "why": "w",
+                "response": )" +
+                               response + "}]}",
+                           "X.json");
+        } catch (const ExpectationError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string ok =
+        R"({"param": "margin", "ratio": [1.6, 2.5], "figure": "false_shadow_pct", "abs": 0.3,
+            "factor": 2.5})";
+    EXPECT_EQ(error(ok), "no error");
+    EXPECT_NE(error(R"({"param": "margin"})").find("X.json: drawn[0]: response: must be"),
+              std::string::npos);
+    std::string notDrawn = ok;
+    notDrawn.replace(notDrawn.find("\"margin\""), 8, "\"map-size\"");
+    EXPECT_NE(error(notDrawn).find("'map-size' is not a number the entry draws"), std::string::npos)
+        << error(notDrawn);
+    std::string wide = ok;  // 3^2 = 9 > 0.0008 / 0.0001: the moved value could leave the range
+    wide.replace(wide.find("2.5]"), 3, "3.0");
+    EXPECT_NE(error(wide).find("twice over"), std::string::npos) << error(wide);
+    std::string figure = ok;
+    figure.replace(figure.find("false_shadow_pct"), 16, "false_lit_pct");
+    EXPECT_NE(error(figure).find("not one the entry's tolerance names"), std::string::npos);
+}
+
+// The pair's rule on synthetic figures: ours drops from 30 % to 20 % of false shadow between the
+// two margins (change -10, so theirs within [-10 * 2.5 - 0.3, -10 / 2.5 + 0.3] = [-25.3, -3.7]).
+TEST(Drawn, APairIsJudgedByHowThePictureResponds) {
+    DrawnResponse response{"margin", 1.6, 2.5, {"false_shadow_pct", 0.3, 2.5}};
+    auto fs = [](double v) { return std::map<std::string, double>{{"false_shadow_pct", v}}; };
+    auto pair = [&](double theirsFirst, double theirsSecond) {
+        return judgeResponse(response, "margin=0.0003", fs(theirsFirst), fs(theirsSecond), fs(30),
+                             fs(20));
+    };
+    const Judgement ours = pair(30, 20);
+    EXPECT_EQ(ours.status, Status::Pass) << ours.message;
+    ASSERT_EQ(ours.reasons.size(), 2u);
+    EXPECT_EQ(ours.reasons[0].figure, "false_shadow_pct change from margin=0.0003");
+    EXPECT_DOUBLE_EQ(ours.reasons[0].bound, -25.3);
+    EXPECT_DOUBLE_EQ(ours.reasons[1].bound, -3.7);
+    // A constant margin: the same picture at both values, each near ours on its own.
+    const Judgement constant = pair(25, 25);
+    EXPECT_EQ(constant.status, Status::Fail) << constant.message;
+    EXPECT_NE(constant.message.find("false_shadow_pct change from margin=0.0003 0 not in "
+                                    "[-25.3, -3.7]"),
+              std::string::npos)
+        << constant.message;
+    // A valid formulation with half our acne at both values responds half as much.
+    EXPECT_EQ(pair(15, 10).status, Status::Pass);
+    // A quantizer whose threshold lies between the two values jumps far more than ours.
+    EXPECT_EQ(pair(40, 0.5).status, Status::Fail);
+    // Ours the other way round (the second value smaller): the band mirrors.
+    EXPECT_EQ(judgeResponse(response, "margin=0.0003", fs(20), fs(30), fs(20), fs(30)).status,
+              Status::Pass);
+    EXPECT_EQ(judgeResponse(response, "margin=0.0003", fs(25), fs(25), fs(20), fs(30)).status,
+              Status::Fail);
+    // Ours hardly changes (0.5 <= 2.5 * 0.3): no pair of pictures tells a constant apart.
+    const Judgement flat =
+        judgeResponse(response, "margin=0.0003", fs(25), fs(25), fs(20), fs(20.5));
+    EXPECT_EQ(flat.status, Status::Skip) << flat.message;
+    EXPECT_NE(flat.message.find("not judged"), std::string::npos);
+}
+
+TEST(Drawn, ASecondRowFailsWhenItsPairFails) {
+    const Judgement own{Status::Pass,
+                        "our shaders' picture as expected: ...",
+                        {{"false_shadow_pct", 25, FigureReason::Side::AtMost, 50, true}}};
+    const Judgement failed{Status::Fail,
+                           "expected our shaders' response to margin, but ...",
+                           {{"false_shadow_pct change from margin=0.0003", 0,
+                             FigureReason::Side::AtMost, -3.7, false}}};
+    const Judgement both = withResponse(own, failed);
+    EXPECT_EQ(both.status, Status::Fail);
+    EXPECT_EQ(both.reasons.size(), 2u) << "the page names the pair's figure";
+    EXPECT_EQ(both.message.find("expected our shaders' response"), 0u) << both.message;
+    EXPECT_EQ(withResponse(own, {Status::Pass, "as expected", own.reasons}).status, Status::Pass);
+    const Judgement notJudged = withResponse(own, {Status::Skip, "response not judged: ...", {}});
+    EXPECT_EQ(notJudged.status, Status::Pass) << "the row's own verdict stands";
+    EXPECT_NE(notJudged.message.find("[response not judged"), std::string::npos);
+    EXPECT_EQ(withResponse({Status::Skip, "none", {}}, failed).status, Status::Skip);
+}
+
 TEST(Drawn, CheckAddsOneDrawnRowPerEntryOnlyWithASeed) {
     useSourceTree();
     RenderRequest base;
@@ -172,7 +304,27 @@ TEST(Drawn, CheckAddsOneDrawnRowPerEntryOnlyWithASeed) {
         if (c.view == "drawn") {
             EXPECT_EQ(c.request.displaceSeed, std::optional<std::uint64_t>(42));
             EXPECT_NE(c.lesson.find("(drawn: "), std::string::npos) << c.lesson;
+            EXPECT_NE(c.drawn, nullptr) << "the series finds a pair by its rows";
         }
+}
+
+// A pair's second row comes right after its first, each naming its entry's row.
+TEST(Drawn, CheckRunsAPairsSecondRowAfterItsFirst) {
+    useSourceTree();
+    RenderRequest base;
+    base.stage = "depth";
+    base.overlay = "submission";
+    const std::vector<CheckCase> cases = checkCases(base, false, false, 7);
+    int seconds = 0;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        if (!cases[k].drawn || !cases[k].drawn->response) continue;
+        ++seconds;
+        ASSERT_GT(k, 0u);
+        EXPECT_EQ(cases[k - 1].drawn, pairedRowOf(*cases[k].drawn));
+        EXPECT_NE(cases[k].lesson, cases[k - 1].lesson);
+        EXPECT_NE(cases[k].lesson.find("response:margin"), std::string::npos) << cases[k].lesson;
+    }
+    EXPECT_EQ(seconds, 1);
 }
 
 }  // namespace
