@@ -8,6 +8,7 @@
 
 #include "feedback/html_text.h"
 #include "feedback/student_summary.h"
+#include "grade/judge.h"
 #include "io/files.h"
 #include "metrics/figures.h"
 #include "stages/registry.h"
@@ -60,8 +61,12 @@ std::string figureNumber(double v) {
 // One bound a figure missed, in plain words, from the record's reasons (grade/judge.h): what
 // the figure measures and its unit from the figure table, its value and the bound as held.
 std::string reasonInWords(const FigureReason& f) {
-    const FigureInfo* info = findFigure(f.figure);
-    const std::string what = info ? info->words : f.figure;
+    const auto pair = splitPairReasonFigure(f.figure);  // a drawn pair's change (judgeResponse)
+    const FigureInfo* info = findFigure(pair ? pair->first : f.figure);
+    std::string what = info ? info->words : f.figure;
+    if (pair && info)
+        what =
+            "the change in " + what + " from the row before (at " + pair->second + ") to this one";
     const std::string unit = info ? std::string(" ") + info->unit : "";
     if (std::isnan(f.value)) return what + " was not measured";
     return what + " is " + figureNumber(f.value) + unit + ", and should be " +

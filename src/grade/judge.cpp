@@ -135,13 +135,27 @@ double figureOf(const std::map<std::string, double>& figures, const std::string&
 
 }  // namespace
 
+namespace {
+const std::string kChangeFrom = " change from ";
+}  // namespace
+
+std::string pairReasonFigure(const std::string& figure, const std::string& from) {
+    return figure + kChangeFrom + from;
+}
+
+std::optional<std::pair<std::string, std::string>> splitPairReasonFigure(const std::string& name) {
+    const std::size_t at = name.find(kChangeFrom);
+    if (at == std::string::npos || at == 0) return std::nullopt;
+    return std::make_pair(name.substr(0, at), name.substr(at + kChangeFrom.size()));
+}
+
 Judgement judgeResponse(const DrawnResponse& response, const std::string& from,
                         const std::map<std::string, double>& theirsFirst,
                         const std::map<std::string, double>& theirsSecond,
                         const std::map<std::string, double>& oursFirst,
                         const std::map<std::string, double>& oursSecond) {
     const DrawnTolerance& t = response.change;
-    const std::string name = t.figure + " change from " + from;
+    const std::string name = pairReasonFigure(t.figure, from);
     const double ours = figureOf(oursSecond, t.figure) - figureOf(oursFirst, t.figure);
     if (std::isnan(ours))
         return {Status::Skip, "our shaders measured no " + t.figure + " in both rows", {}};

@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "grade/status.h"
@@ -70,6 +71,10 @@ Judgement judgeDrawn(const DrawnRow& row, const std::string& drawnValues,
 // moves a little. Judged only where ours changes by more than factor * abs: below that the band
 // holds 0, and no pair of pictures tells a constant from the method (a SKIP that says so). The
 // reason's figure is "FIGURE change from PARAM=VALUE".
+// The pair's reason figure, "FIGURE change from PARAM=VALUE", and back (a page words it from the
+// figure table): {FIGURE, "PARAM=VALUE"}, or nullopt for any other figure.
+std::string pairReasonFigure(const std::string& figure, const std::string& from);
+std::optional<std::pair<std::string, std::string>> splitPairReasonFigure(const std::string& name);
 Judgement judgeResponse(const DrawnResponse& response, const std::string& from,
                         const std::map<std::string, double>& theirsFirst,
                         const std::map<std::string, double>& theirsSecond,
