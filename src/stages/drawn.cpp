@@ -261,7 +261,8 @@ std::string respondedValue(const DrawnRow& row, const std::string& value, std::u
     const DrawnParam* d = nullptr;
     for (const DrawnParam& p : row.draw)
         if (p.name == response.param) d = &p;
-    const ParamSpec& spec = *ParamSet(findStage(row.stage)->params).find(d->name);
+    const ParamSet params(findStage(row.stage)->params);  // kept: `spec` points into it
+    const ParamSpec& spec = *params.find(d->name);
     const std::set<double> chosen = chosenValues(row.stage, spec);
     std::mt19937_64 rng(seed ^ labelHash(row.label()));
     const double first = std::stod(value);
