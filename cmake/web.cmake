@@ -57,7 +57,7 @@ file(GLOB SL_WEB_SOURCES CONFIGURE_DEPENDS
      src/platform/webgl_context.cpp src/platform/webgl_headless.cpp src/platform/headless.cpp
      src/platform/framebuffer_target.cpp src/lecture/*.cpp
      src/grade/intake.cpp src/grade/check_run.cpp src/grade/check_steps.cpp src/grade/check_plan.cpp
-     src/grade/judge.cpp src/grade/status.cpp src/grade/bounds.cpp src/grade/formats.cpp src/grade/record.cpp
+     src/grade/judge.cpp src/grade/case_judge.cpp src/grade/status.cpp src/grade/bounds.cpp src/grade/formats.cpp src/grade/record.cpp
      src/grade/plan.cpp src/grade/reports.cpp src/web/*.cpp
      src/course/assignment.cpp src/course/assignment_meaning.cpp src/course/json_lines.cpp
      src/course/student_grade.cpp src/gradebook/late_policy.cpp src/gradebook/csv.cpp

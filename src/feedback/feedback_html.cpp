@@ -61,12 +61,11 @@ std::string figureNumber(double v) {
 // One bound a figure missed, in plain words, from the record's reasons (grade/judge.h): what
 // the figure measures and its unit from the figure table, its value and the bound as held.
 std::string reasonInWords(const FigureReason& f) {
-    const auto pair = splitPairReasonFigure(f.figure);  // a drawn pair's change (judgeResponse)
-    const FigureInfo* info = findFigure(pair ? pair->first : f.figure);
+    const FigureInfo* info = findFigure(f.figure);
     std::string what = info ? info->words : f.figure;
-    if (pair && info)
+    if (!f.changeFrom.empty())  // a drawn pair's change (judgeResponse)
         what =
-            "the change in " + what + " from the row before (at " + pair->second + ") to this one";
+            "the change in " + what + " from the row before (at " + f.changeFrom + ") to this one";
     const std::string unit = info ? std::string(" ") + info->unit : "";
     if (std::isnan(f.value)) return what + " was not measured";
     return what + " is " + figureNumber(f.value) + unit + ", and should be " +

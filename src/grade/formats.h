@@ -16,17 +16,19 @@ struct Format {
 };
 
 // A worker's rows to its parent: {"format", "version", "rows": [a row as in the report],
-// "backend", "machine"} (grade/stage_runs.cpp).
-inline constexpr Format kWorkerRows{"shadowlab-worker-rows", 1};
+// "backend", "machine"} (grade/stage_runs.cpp). Version 2 with the report's version 3.
+inline constexpr Format kWorkerRows{"shadowlab-worker-rows", 2};
 // The public report (check --report, the browser edition's report): the student's record as
 // recordJson writes it, named by "report_format" and "report_version". Version 2 since rows got
-// reasons; report_format and a row's expectation.id were added to it without a bump (a reader of
-// version 2 reads them, or skips them).
-inline constexpr Format kReport{"shadowlab-report", 2};
+// reasons (report_format and a row's expectation.id were added to it without a bump: a reader of
+// version 2 reads them, or skips them); 3 since a drawn pair's reason names the figure itself
+// and the row its change is from ("change_from"), where 2 ran both into its "figure".
+inline constexpr Format kReport{"shadowlab-report", 3};
 // The record `grade` keeps per student (OUT/students/NAME.json, with its "record_hash") and the
 // solution check's parts: the report's fields plus "record_format" and "record_version". It holds
 // the report: bump it whenever the report's version moves. An older one is regraded, not refused.
-inline constexpr Format kKeptRecord{"shadowlab-kept-record", 1};
+// Version 2 with the report's version 3.
+inline constexpr Format kKeptRecord{"shadowlab-kept-record", 2};
 
 // A JSON that is not in the format its reader reads.
 class FormatError : public std::invalid_argument {

@@ -20,7 +20,7 @@ std::string number(double v) {
 bool FigureReason::operator==(const FigureReason& o) const {
     auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
     return figure == o.figure && same(value, o.value) && side == o.side && same(bound, o.bound) &&
-           passed == o.passed;
+           passed == o.passed && changeFrom == o.changeFrom;
 }
 
 const char* sideName(FigureReason::Side side) {
@@ -135,27 +135,13 @@ double figureOf(const std::map<std::string, double>& figures, const std::string&
 
 }  // namespace
 
-namespace {
-const std::string kChangeFrom = " change from ";
-}  // namespace
-
-std::string pairReasonFigure(const std::string& figure, const std::string& from) {
-    return figure + kChangeFrom + from;
-}
-
-std::optional<std::pair<std::string, std::string>> splitPairReasonFigure(const std::string& name) {
-    const std::size_t at = name.find(kChangeFrom);
-    if (at == std::string::npos || at == 0) return std::nullopt;
-    return std::make_pair(name.substr(0, at), name.substr(at + kChangeFrom.size()));
-}
-
 Judgement judgeResponse(const DrawnResponse& response, const std::string& from,
                         const std::map<std::string, double>& theirsFirst,
                         const std::map<std::string, double>& theirsSecond,
                         const std::map<std::string, double>& oursFirst,
                         const std::map<std::string, double>& oursSecond) {
     const DrawnTolerance& t = response.change;
-    const std::string name = pairReasonFigure(t.figure, from);
+    const std::string name = t.figure + " change from " + from;  // the message's words
     const double ours = figureOf(oursSecond, t.figure) - figureOf(oursFirst, t.figure);
     if (std::isnan(ours))
         return {Status::Skip, "our shaders measured no " + t.figure + " in both rows", {}};
@@ -171,7 +157,9 @@ Judgement judgeResponse(const DrawnResponse& response, const std::string& from,
     pair.outcome = "our shaders' response to " + response.param;
     pair.limits.push_back({name, std::min(nearer, farther), std::max(nearer, farther)});
     const double theirs = figureOf(theirsSecond, t.figure) - figureOf(theirsFirst, t.figure);
-    return judge(pair, {{name, theirs}});
+    Judgement j = judge(pair, {{name, theirs}});
+    for (FigureReason& f : j.reasons) f.figure = t.figure, f.changeFrom = from;
+    return j;
 }
 
 Judgement withResponse(Judgement own, const Judgement& pair) {

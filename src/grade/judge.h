@@ -22,12 +22,14 @@ namespace sl {
 // range (both a floor and a ceiling) is two of these, one per side.
 struct FigureReason {
     enum class Side { AtLeast, AtMost };  // value >= bound, value <= bound
-    std::string figure;  // the figure table's name (metrics/figures.h), or a drawn pair's
-                         // "FIGURE change from PARAM=VALUE" (judgeResponse)
-    double value = NAN;  // what was measured; NaN: not measured
+    std::string figure;                   // the figure table's name (metrics/figures.h)
+    double value = NAN;                   // what was measured; NaN: not measured
     Side side = Side::AtMost;
     double bound = NAN;   // as held: a displaced view's widened bound, a drawn row's from ours
     bool passed = false;  // the value is on the bound's side (never for a value not measured)
+    // A drawn pair's (judgeResponse): `value` is the figure's change from the first row, drawn at
+    // these values ("margin=0.00053"); empty: the figure itself.
+    std::string changeFrom;
     bool operator==(const FigureReason& o) const;
 };
 // ">=" or "<=", as the report writes a side; and back (nullopt for anything else).
@@ -70,11 +72,7 @@ Judgement judgeDrawn(const DrawnRow& row, const std::string& drawnValues,
 // constant renders the same picture at both values (change 0), a quantizer jumps where ours
 // moves a little. Judged only where ours changes by more than factor * abs: below that the band
 // holds 0, and no pair of pictures tells a constant from the method (a SKIP that says so). The
-// reason's figure is "FIGURE change from PARAM=VALUE".
-// The pair's reason figure, "FIGURE change from PARAM=VALUE", and back (a page words it from the
-// figure table): {FIGURE, "PARAM=VALUE"}, or nullopt for any other figure.
-std::string pairReasonFigure(const std::string& figure, const std::string& from);
-std::optional<std::pair<std::string, std::string>> splitPairReasonFigure(const std::string& name);
+// message says "FIGURE change from PARAM=VALUE"; the reason is FIGURE with its changeFrom.
 Judgement judgeResponse(const DrawnResponse& response, const std::string& from,
                         const std::map<std::string, double>& theirsFirst,
                         const std::map<std::string, double>& theirsSecond,

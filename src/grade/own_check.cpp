@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "grade/formats.h"
 #include "grade/reports.h"
 #include "io/files.h"
 
@@ -42,9 +43,10 @@ std::string parseReport(const std::string& text, StudentRecord& out) {
                capped(printable(tool.is_string() ? tool.get<std::string>() : tool.dump()), 60) +
                ")";
     const json version = j.value("report_version", json());
-    if (version != json(2))
+    if (version != json(kReport.version))
         return "report_version " + capped(printable(version.dump()), 20) +
-               "; this grader reads version 2 (check it again with this release)";
+               "; this grader reads version " + std::to_string(kReport.version) +
+               " (check it again with this release)";
     try {
         out = reportFromJson(j);
     } catch (const std::exception& e) {

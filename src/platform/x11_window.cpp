@@ -4,9 +4,13 @@
 #include <dlfcn.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <thread>
 
 namespace sl {
 
@@ -47,11 +51,39 @@ int rememberError(Display* d, XErrorEvent* e) {
     return 0;
 }
 
+// Who ends the session: the application (windowEnding), the lost connection or the watch,
+// whoever claims it first; the others stand aside, so one line says why.
+std::atomic<bool> endClaimed{false};
+
 // The connection itself is gone (`xdotool windowkill`, the X server stopped): Xlib would print
-// its own message and exit 1; this says what happened on one line. The handler must not return.
+// its own message and exit 1; this says what happened on one line (unless the application had
+// ended the session already and said why). The handler must not return.
 int connectionLost(Display*) {
-    std::fputs("shadowlab: the X connection was closed (the window was killed); quitting\n",
-               stderr);
+    if (!endClaimed.exchange(true))
+        std::fputs("shadowlab: the X connection was closed (the window was killed); quitting\n",
+                   stderr);
+    std::fflush(stdout);
+    std::_Exit(0);
+}
+
+// On a connection of its own: waits for the window's DestroyNotify, then gives the window's
+// thread kStuckAfterDestroySeconds to notice (windowStillExists) and end the session.
+void watchForDestroy(const std::string& displayName, Window window) {
+    Display* own = XOpenDisplay(displayName.c_str());
+    if (!own) return;  // no second connection: the window's thread watches alone
+    XSelectInput(own, window, StructureNotifyMask);
+    XSync(own, False);
+    for (;;) {
+        XEvent e;
+        XNextEvent(own, &e);  // a lost server ends the process through connectionLost
+        if (e.type == DestroyNotify && e.xdestroywindow.window == window) break;
+    }
+    std::this_thread::sleep_for(std::chrono::duration<double>(kStuckAfterDestroySeconds));
+    if (endClaimed.exchange(true)) return;  // the application is ending the session
+    std::fputs(
+        "shadowlab: the window was destroyed from outside while a frame was being drawn, and "
+        "the driver did not return from it; quitting\n",
+        stderr);
     std::fflush(stdout);
     std::_Exit(0);
 }
@@ -130,6 +162,18 @@ void watchWindow() {
     // A write on a killed connection (Mesa's swap, xcb) must fail and reach connectionLost, not
     // end the process with SIGPIPE.
     std::signal(SIGPIPE, SIG_IGN);
+    if (Display* display = currentDisplay())
+        std::thread(watchForDestroy, std::string(DisplayString(display)), window).detach();
+}
+
+void useXFromTwoThreads() {
+    XInitThreads();
+}
+
+bool windowEnding() {
+    static bool byApplication = false;  // the window's thread only
+    if (!byApplication) byApplication = !endClaimed.exchange(true);
+    return byApplication;
 }
 
 }  // namespace sl

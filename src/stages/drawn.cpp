@@ -230,13 +230,13 @@ namespace {
 
 // The values someone chose for a number parameter of `stage`: its default and each lesson's (a
 // shader can recognise those, as one testing textureSize == 2048 recognises the packed lesson).
-std::set<double> chosenValues(const std::string& stage, const ParamSpec& spec) {
+std::set<double> chosenValues(const std::string& stage, const std::string& param) {
     std::set<double> chosen;
     ParamSet defaults(findStage(stage)->params);
-    chosen.insert(defaults.number(spec.name));
+    chosen.insert(defaults.number(param));
     for (const Expectation& e : expectations())
         for (const auto& [name, value] : e.set)
-            if (e.stage == stage && name == spec.name) chosen.insert(std::stod(value));
+            if (e.stage == stage && name == param) chosen.insert(std::stod(value));
     return chosen;
 }
 
@@ -261,9 +261,7 @@ std::string respondedValue(const DrawnRow& row, const std::string& value, std::u
     const DrawnParam* d = nullptr;
     for (const DrawnParam& p : row.draw)
         if (p.name == response.param) d = &p;
-    const ParamSet params(findStage(row.stage)->params);  // kept: `spec` points into it
-    const ParamSpec& spec = *params.find(d->name);
-    const std::set<double> chosen = chosenValues(row.stage, spec);
+    const std::set<double> chosen = chosenValues(row.stage, d->name);
     std::mt19937_64 rng(seed ^ labelHash(row.label()));
     const double first = std::stod(value);
     const int digits = digitsFor(d->min, d->max);
@@ -290,7 +288,7 @@ std::vector<std::pair<std::string, std::string>> drawnSettings(const DrawnRow& r
         const ParamSpec& spec = *values.find(d.name);
         std::string drawn = drawOne(d, spec, rng);
         if (d.choices.empty()) {  // a number no lesson names: drawn again (a few tries)
-            const std::set<double> chosen = chosenValues(row.stage, spec);
+            const std::set<double> chosen = chosenValues(row.stage, d.name);
             for (int tries = 0; tries < 16 && chosen.count(std::stod(drawn)); ++tries)
                 drawn = drawOne(d, spec, rng);
         }

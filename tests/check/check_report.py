@@ -25,11 +25,12 @@ def figure_table(exe):
     return [f["name"] for f in json.loads(out)]
 
 
-def named_figure(figure, figures):
-    """A figure of the table, or a drawn pair's change of one: "FIGURE change from PARAM=VALUE"
-    (docs/check.md, "the response")."""
-    base, sep, start = str(figure).partition(" change from ")
-    return base in figures and (not sep or re.fullmatch(r"[a-z-]+=\S+", start) is not None)
+def named_figure(reason, figures):
+    """A figure of the table, itself or, in a drawn pair's reason, its change from the first row
+    at "change_from" (PARAM=VALUE ...: docs/check.md, "the response")."""
+    start = reason.get("change_from")
+    return reason.get("figure") in figures and (
+        start is None or re.fullmatch(r"[a-z-]+=\S+( [a-z-]+=\S+)*", str(start)) is not None)
 
 
 def reason_problems(name, row, figures):
@@ -37,7 +38,7 @@ def reason_problems(name, row, figures):
     (a FAIL misses at least one bound; a PASS holds every one)."""
     problems = []
     for f in row.get("reasons", []):
-        ok = (named_figure(f.get("figure"), figures) and f.get("side") in (">=", "<=")
+        ok = (named_figure(f, figures) and f.get("side") in (">=", "<=")
               and isinstance(f.get("passed"), bool) and isinstance(f.get("bound"), (int, float))
               and (f.get("value") is None or isinstance(f.get("value"), (int, float))))
         if not ok:
@@ -81,8 +82,8 @@ def main():
                 "stages"):
         if key not in report:
             problems.append(f"missing top-level '{key}'")
-    if report.get("report_format") != "shadowlab-report" or report.get("report_version") != 2:
-        problems.append(f"a report's format is shadowlab-report version 2, not "
+    if report.get("report_format") != "shadowlab-report" or report.get("report_version") != 3:
+        problems.append(f"a report's format is shadowlab-report version 3, not "
                         f"{report.get('report_format')!r} version {report.get('report_version')!r}")
     if problems:
         sys.exit("FAIL: " + "; ".join(problems))

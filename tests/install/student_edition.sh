@@ -156,13 +156,14 @@ python3 - "$tmp" <<'PY' || fail "the student edition does not judge the depth pa
 import json, sys
 tmp = sys.argv[1]
 def drawn(path):  # by lesson: the verdict and each reason's figure and whether it held
-    return {x["lesson"]: (x["verdict"], [(f["figure"], f["passed"]) for f in x["reasons"]])
+    return {x["lesson"]: (x["verdict"], [(f["figure"], f.get("change_from", ""), f["passed"])
+                                         for f in x["reasons"]])
             for st in json.load(open(path))["stages"] for x in st["rows"] if x["view"] == "drawn"}
 for who in ("correct", "by_value"):
     home, mine = drawn(f"{tmp}/depth-home-{who}.json"), drawn(f"{tmp}/depth-instructor-{who}.json")
     assert home == mine, (who, home, mine)
     second = [v for k, v in home.items() if "response:margin" in k]
-    assert len(second) == 1 and any(" change from margin=" in f for f, _ in second[0][1]), home
+    assert len(second) == 1 and any(c.startswith("margin=") for _, c, _ in second[0][1]), home
     print(f"depth {who}: drawn rows {[v[0] for v in home.values()]} at home and with the solutions")
 verdicts = lambda who: [v[0] for v in drawn(f"{tmp}/depth-home-{who}.json").values()]
 assert verdicts("correct") == ["PASS", "PASS"], verdicts("correct")

@@ -251,6 +251,34 @@ TEST(LiveWindow, ClosedFromOutsideEndsTheSession) {
     }
 }
 
+// A driver that never returns from the frame it was drawing when the window went (Mesa 26's
+// llvmpipe on Debian testing, now and then: it resized to the gone window's garbage size and
+// cleared gigabytes): the watch on a connection of its own (platform/x11_window.h) ends the
+// session within 3 s of the destruction, with its own line and exit code 0. The window's thread
+// is held stuck for 60 s here (SHADOWLAB_TEST_STUCK_AFTER_DESTROY_S, platform/glut_window.cpp):
+// without the watch the session outlives exitCode()'s 30 s.
+TEST(LiveWindow, DestroyedWhileItsThreadIsStuckEndsTheSession) {
+    std::string dir = tempDir("live-stuck");
+    ::setenv("SHADOWLAB_TEST_STUCK_AFTER_DESTROY_S", "60", 1);
+    LiveWindow w("--state state.json --size 320x240", dir);
+    ::unsetenv("SHADOWLAB_TEST_STUCK_AFTER_DESTROY_S");
+    ASSERT_TRUE(w.ready()) << w.err();
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["stage"] == "phong"; }, 30));
+    ASSERT_TRUE(w.keys("l"));  // animating, as in the runs that stuck
+    ASSERT_TRUE(w.waitState([](const auto& s) { return s["animating"] == true; }, 10));
+    const auto start = Clock::now();
+    EXPECT_EQ(w.xdo("windowclose " + w.id()), 0);
+    EXPECT_EQ(w.exitCode(), 0) << w.err();
+    const double took = std::chrono::duration<double>(Clock::now() - start).count();
+    EXPECT_GE(took, 2.5) << "ended before the watch's 3 s: the stuck thread was not stuck";
+    EXPECT_EQ(countLines(w.err(),
+                         "shadowlab: the window was destroyed from outside while a "
+                         "frame was being drawn"),
+              1)
+        << w.err();
+    EXPECT_EQ(countLines(w.err(), "shadowlab: the "), 1) << w.err();
+}
+
 // A student's shader saved the ways editors and shells do, while the window runs: an atomic
 // save (temporary file renamed over it), the file deleted (ours takes over) and written again,
 // `sed -i`, a file left empty for a moment, an included common file overridden and broken,

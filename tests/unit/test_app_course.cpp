@@ -583,19 +583,20 @@ TEST(StudentPage, AFailingRowNamesItsFiguresFromTheRecordNotTheMessage) {
               std::string::npos);
 }
 
-// A drawn pair's reason ("false_shadow_pct change from margin=0.00053", judgeResponse) is worded
+// A drawn pair's reason (false_shadow_pct's change from margin=0.00053, judgeResponse) is worded
 // from the figure table as the change from the row before, with its unit.
 TEST(StudentPage, ADrawnPairsReasonIsTheChangeInItsFigure) {
     StudentRecord r = failingMirror("changes by 0, not >= 3.2", 0);
-    r.stages[0].rows[0].result.reasons = {{pairReasonFigure("false_shadow_pct", "margin=0.00053"),
-                                           0, FigureReason::Side::AtLeast, 3.2, false}};
+    r.stages[0].rows[0].result.reasons = {
+        {"false_shadow_pct", 0, FigureReason::Side::AtLeast, 3.2, false, "margin=0.00053"}};
     const std::string page = studentPage(r);
     EXPECT_NE(page.find("the change in the surfaces the light reaches drawn in shadow from the "
                         "row before (at margin=0.00053) to this one is 0 %, and should be at "
                         "least 3.2 %"),
               std::string::npos)
         << page;
-    EXPECT_EQ(splitPairReasonFigure("false_shadow_pct"), std::nullopt);
+    r.stages[0].rows[0].result.reasons[0].changeFrom.clear();  // the figure itself
+    EXPECT_EQ(studentPage(r).find("the change in"), std::string::npos);
 }
 
 // A row kept before reasons existed (last term's record, regraded or resumed) shows its message.

@@ -238,7 +238,8 @@ TEST(Drawn, APairIsJudgedByHowThePictureResponds) {
     const Judgement ours = pair(30, 20);
     EXPECT_EQ(ours.status, Status::Pass) << ours.message;
     ASSERT_EQ(ours.reasons.size(), 2u);
-    EXPECT_EQ(ours.reasons[0].figure, "false_shadow_pct change from margin=0.0003");
+    EXPECT_EQ(ours.reasons[0].figure, "false_shadow_pct");
+    EXPECT_EQ(ours.reasons[0].changeFrom, "margin=0.0003");
     EXPECT_DOUBLE_EQ(ours.reasons[0].bound, -25.3);
     EXPECT_DOUBLE_EQ(ours.reasons[1].bound, -3.7);
     // A constant margin: the same picture at both values, each near ours on its own.
@@ -268,10 +269,10 @@ TEST(Drawn, ASecondRowFailsWhenItsPairFails) {
     const Judgement own{Status::Pass,
                         "our shaders' picture as expected: ...",
                         {{"false_shadow_pct", 25, FigureReason::Side::AtMost, 50, true}}};
-    const Judgement failed{Status::Fail,
-                           "expected our shaders' response to margin, but ...",
-                           {{"false_shadow_pct change from margin=0.0003", 0,
-                             FigureReason::Side::AtMost, -3.7, false}}};
+    const Judgement failed{
+        Status::Fail,
+        "expected our shaders' response to margin, but ...",
+        {{"false_shadow_pct", 0, FigureReason::Side::AtMost, -3.7, false, "margin=0.0003"}}};
     const Judgement both = withResponse(own, failed);
     EXPECT_EQ(both.status, Status::Fail);
     EXPECT_EQ(both.reasons.size(), 2u) << "the page names the pair's figure";

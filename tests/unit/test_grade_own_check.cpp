@@ -9,6 +9,7 @@
 
 #include "feedback/class_page.h"
 #include "feedback/feedback_html.h"
+#include "grade/formats.h"
 #include "grade/intake.h"
 #include "grade/own_check.h"
 #include "grade/record.h"
@@ -143,7 +144,11 @@ TEST(OwnCheck, GarbageIsAProblemNamingTheFileNeverAnError) {
     EXPECT_EQ(problemOf(j.dump()), "");
     j["report_version"] = 1;
     EXPECT_NE(problemOf(j.dump()).find("report_version 1;"), std::string::npos);
-    j["report_version"] = 2;
+    j["report_version"] = kReport.version - 1;  // the version before: a drawn pair's figure
+    EXPECT_NE(
+        problemOf(j.dump()).find("this grader reads version " + std::to_string(kReport.version)),
+        std::string::npos);
+    j["report_version"] = kReport.version;
     j["stages"][0]["rows"][0].erase("verdict");
     EXPECT_NE(problemOf(j.dump()).find("not a check report this grader reads"), std::string::npos);
     j = nlohmann::json::parse(reportOf(graded()).text);
