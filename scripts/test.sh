@@ -80,7 +80,7 @@ case "${SHADOWLAB_TEST_SCOPE:-all}" in
     step ctest 90 ctest --test-dir build --output-on-failure -j2 -L '^(unit|example)$'
     echo "test.sh: scope 'readme': the README's order on a fresh system; the host ran the whole suite on this same system" ;;
   *)
-    step ctest 840 ctest --test-dir build --output-on-failure -j2
+    step ctest 1140 ctest --test-dir build --output-on-failure -j2
     step sanitizers 660 bash scripts/sanitizers.sh
     step fuzz 180 bash scripts/fuzz.sh
     step valgrind 90 bash scripts/valgrind.sh
