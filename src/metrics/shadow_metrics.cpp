@@ -88,11 +88,8 @@ std::vector<float> mapTexelOnScreen(const ReferenceImage& ref, const Camera& cam
 
 ReferenceShades referenceShades(const Scene& scene, const Camera& camera, const ReferenceImage& ref,
                                 const glm::vec3& lightPosition) {
-    ReferenceImage reached = ref, blocked = ref;
-    for (auto& p : reached.pixels) p.blocked = false;
-    for (auto& p : blocked.pixels) p.blocked = true;
-    return {shadeReference(scene, camera, reached, lightPosition),
-            shadeReference(scene, camera, blocked, lightPosition)};
+    return {shadeReference(scene, camera, ref, lightPosition, Occlusion::NoneBlocked),
+            shadeReference(scene, camera, ref, lightPosition, Occlusion::AllBlocked)};
 }
 
 std::vector<std::uint8_t> shadowVisiblePixels(const ReferenceShades& shades, float margin,

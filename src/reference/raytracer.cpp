@@ -332,7 +332,7 @@ ReferenceImage traceReference(const Scene& scene, const Camera& camera,
 }
 
 Image shadeReference(const Scene& scene, const Camera& camera, const ReferenceImage& reference,
-                     const glm::vec3& lightPosition) {
+                     const glm::vec3& lightPosition, Occlusion occlusion) {
     if (reference.pixels.size() != std::size_t(reference.width) * reference.height)
         throw std::invalid_argument("shadeReference: pixel count does not match the size");
     Image image(reference.width, reference.height);
@@ -340,6 +340,8 @@ Image shadeReference(const Scene& scene, const Camera& camera, const ReferenceIm
     for (int j = 0; j < reference.height; ++j)
         for (int i = 0; i < reference.width; ++i) {
             const ReferencePixel& p = reference.at(i, j);
+            const bool blocked =
+                occlusion == Occlusion::AsTraced ? p.blocked : occlusion == Occlusion::AllBlocked;
             glm::vec3 color = scene.background;
             if (p.objectId == mirror && p.bounceObjectId >= 0) {
                 // The reflected ray starts at the mirror point, so that is the "eye" of the bounce.
@@ -351,10 +353,10 @@ Image shadeReference(const Scene& scene, const Camera& camera, const ReferenceIm
                 color = kMirrorReflectance * seen;
             } else if (p.objectId == mirror) {
                 color = phong(scene.material, kMirrorBackColor, p.position, p.normal,
-                              p.facesLight && !p.blocked, camera.eye, lightPosition);
+                              p.facesLight && !blocked, camera.eye, lightPosition);
             } else if (p.objectId > 0) {
                 color = phong(scene.material, objectColor(scene, p.objectId), p.position, p.normal,
-                              p.facesLight && !p.blocked, camera.eye, lightPosition);
+                              p.facesLight && !blocked, camera.eye, lightPosition);
             }
             storeColor(image, i, j, color);
         }

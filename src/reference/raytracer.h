@@ -78,8 +78,11 @@ ReferenceImage traceReference(const Scene& scene, const Camera& camera,
 
 // A Phong picture of the reference: ambient + diffuse + specular with scene.material and white
 // light; diffuse and specular are dropped where the point is blocked or faces away. Mirror
-// pixels show the shaded bounce times 0.9. Alpha is 255.
+// pixels show the shaded bounce times 0.9. Alpha is 255. `occlusion` shades each pixel's own
+// point as traced, or as if the light reached every point or none (the metrics' two shadings:
+// no copy of the reference with its flags rewritten, which cost two 20 MB copies a row).
+enum class Occlusion { AsTraced, NoneBlocked, AllBlocked };
 Image shadeReference(const Scene& scene, const Camera& camera, const ReferenceImage& reference,
-                     const glm::vec3& lightPosition);
+                     const glm::vec3& lightPosition, Occlusion occlusion = Occlusion::AsTraced);
 
 }  // namespace sl
