@@ -71,8 +71,8 @@ if [ -n "$chroots" ]; then
     export CCACHE_DIR=${SHADOWLAB_CHROOT_CACHE:-/var/cache/shadowlab-chroot}/ccache-${VERSION_CODENAME:-host}
     export CCACHE_BASEDIR=$PWD CCACHE_MAXSIZE=2G
     # The sanitizer and fuzz builds carry debug info, whose compile folder ccache hashes unless
-    # told not to: every checkout at a new path (CI's clone) missed on all of them (measured: 34
-    # of 38 objects of the same commit; 37 of 38 hit without the folder in the hash).
+    # told not to: a checkout at a new path (CI's clone) missed nearly all of them (measured: 34
+    # of 38 objects of the same commit missed; 37 of 38 hit without the folder in the hash).
     export CCACHE_NOHASHDIR=1
     export CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache
     mkdir -p "$CCACHE_DIR"
