@@ -16,10 +16,10 @@ the class (progress_error_{max,median}_after_quarter); the error is |T - L| / L,
 was left: the run's end minus the line's time.
 
 usage: bench_grade.py SHADOWLAB REPO WORKDIR [--reps N] [--one N] [--all N] [--busy]
-       [--classes one,all] [--grade-only]
+       [--classes one,all] [--grade-only] [--lines FILE] [--trace FILE]
 One JSON line per run, then one summary line per class: the ratio grade / loop of wall times,
 paired by rep (median, min, max), and the progress errors."""
-import argparse, json, os, re, resource, shutil, statistics, subprocess, sys, time
+import argparse, glob, json, os, re, resource, shutil, statistics, subprocess, sys, threading, time
 
 ap = argparse.ArgumentParser()
 ap.add_argument("exe")
@@ -33,6 +33,8 @@ ap.add_argument("--classes", default="one,all")
 ap.add_argument("--grade-only", action="store_true", help="no loop: grade's time and progress error only")
 ap.add_argument("--lines", help="write every student line after the first quarter here (JSON): "
                 "its time, what it said was left, what was left, the line")
+ap.add_argument("--trace", help="append each grade run here (JSON): its lines and the jobs' progress files "
+                "as they changed, read every 0.05 s: what tests/course/replay_progress.py replays")
 a = ap.parse_args()
 exe, repo, work = os.path.abspath(a.exe), a.repo, a.work
 shutil.rmtree(work, ignore_errors=True)
@@ -90,12 +92,41 @@ def grade(cls, assignment):
     start = time.time()
     p = subprocess.Popen([exe, "grade", cls, "--assignment", assignment, "--out", out, "--time-limit", "300"],
                          stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    progress, reading = [], threading.Event()
+
+    def watch():  # the jobs' progress files (class/class_progress.h) each time they change
+        seen = {}
+        while not reading.is_set():
+            for path in glob.glob(out + "/logs/job-*.progress"):
+                try:
+                    text = open(path).read().split()
+                except OSError:
+                    continue
+                if len(text) >= 2 and seen.get(path) != text:  # "DONE TOTAL" (once with FIRST)
+                    seen[path] = text
+                    job = int(re.search(r"job-(\d+)", path).group(1))
+                    progress.append([round(time.time() - start, 3), job] + [int(x) for x in text[:2]])
+            time.sleep(0.05)
+
+    watcher = threading.Thread(target=watch)
+    if a.trace:
+        watcher.start()
     lines = [(time.time(), line) for line in p.stdout]
     assert p.wait() == 0, p.returncode
     end = time.time()
+    reading.set()
+    if a.trace:
+        watcher.join()
+        with open(a.trace, "a") as f:
+            f.write(json.dumps({"class": os.path.basename(cls), "end_s": round(end - start, 3),
+                                "load": round(os.getloadavg()[0], 2), "progress": progress,
+                                "lines": [[round(t - start, 3), l.rstrip()] for t, l in lines]}) + "\n")
     info = {}
     # Every line after the first quarter of the class: |said - left| / left, where left is the
-    # run's end (its last line, the class's pages written) minus the line's time.
+    # run's end minus the line's time; the end is grade's "graded N of N" line, said once the
+    # class's outputs are written (the process's exit after it took 0.02-0.03 s: a "0 s" line was
+    # 0.3 off by the 0.1 s floor below).
+    end = next((t for t, line in lines if line.startswith("graded ")), end)
     errors, abs_errors, kept = [], [], []
     last_student = None
     for t, line in lines:
