@@ -468,6 +468,7 @@ int ClassGrading::gradeInJobs(OutLock& lock) {
     for (int j = 0; j < jobs; ++j) progressFiles.push_back(progressPath(j));
     int exitCode = 0, diskFullJobs = 0;
     jobs_ = std::size_t(jobs);
+    pace_.outputsRead(in_.entries.size());  // writeOutputs reads every student's record again
     auto poll = [&] {  // read every time, so the pace starts from the first rows that came back
         const double now = secondsSinceStart();
         reportFinished(now, pace_.timeLeft(now, readProgress(progressFiles)));
@@ -513,7 +514,7 @@ int ClassGrading::gradeShare(int job, int jobs, OutLock& lock) {
             index.push_back(todo_[i]);
         }
         Calibration calibration(settings_.budget, settings_.backend);
-        JobProgress progress(progressPath(job), plans);
+        JobProgress progress(progressPath(job), plans, renderOrder(plans, share));
         gradeStudents(
             plans, share, settings_, calibration,
             [&](std::size_t i, const StageRecord& st) { progress.stageDone(i, st); },
@@ -541,12 +542,14 @@ void ClassGrading::reportFinished(double seconds, const std::optional<double>& r
         const std::optional<FileStamp> stamp = stampOf(recordPath(k));
         if (!stamp || recordRead_[k] == stamp) continue;
         recordRead_[k] = stamp;
+        const double readFrom = secondsSinceStart();
         std::optional<StudentRecord> r;
         if (!isFresh(k, r)) continue;
+        const double read = secondsSinceStart() - readFrom;  // what writeOutputs does again
         reported_.insert(k);
         writeStudentOutputs(k, *r,
                             annotateRecord(annotations_, in_.a, in_.names[k], in_.entries[k], *r));
-        pace_.recordBack(secondsSinceStart(), i % jobs_);  // gradeShare's share: every jobs_-th
+        pace_.recordBack(secondsSinceStart(), i % jobs_, read);  // gradeShare's: every jobs_-th
         double left =
             rowsLeft ? *rowsLeft
                      : seconds / double(reported_.size()) * double(todo_.size() - reported_.size());

@@ -19,6 +19,29 @@ std::size_t roundOf(std::size_t k, std::size_t n) {
     return r;
 }
 
+// The order of the series: students in rounds of a few, and within a round stage by stage, so
+// the views a stage renders (up to 7 per stage, 9 for all stages of lab4) are traced and drawn
+// with our shaders once per round and stay in the worker's truth cache (8 views,
+// Evaluator::maxTruths): student by student the cache lost the all-stage views to each other and
+// every student traced them again. A round's students are done together: at least three rounds
+// (a progress line every third of the share), at most 8 students a round, rounds of even size
+// (a short last round would cost more a row than the others: the time left is estimated by rows).
+std::vector<StageStep> renderOrder(const std::vector<GradingPlan>& plans,
+                                   const std::vector<StudentWork>& students) {
+    std::size_t stageCount = 0;
+    for (const GradingPlan& plan : plans) stageCount = std::max(stageCount, plan.stages.size());
+    const std::size_t n = std::min(plans.size(), students.size());
+    const std::size_t rounds = roundCount(n);
+    std::vector<StageStep> order;
+    for (std::size_t r = 0; r < rounds; ++r)
+        for (std::size_t j = 0; j < stageCount; ++j)
+            for (std::size_t k = n * r / rounds; k < n * (r + 1) / rounds; ++k)
+                if (students[k].error.empty() && j < plans[k].stages.size() &&
+                    plans[k].stages[j].rendered())
+                    order.push_back({k, j});
+    return order;
+}
+
 void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<StudentWork>& students,
                    const GradeSettings& settings, Calibration& calibration,
                    const std::function<void(std::size_t, const StageRecord&)>& stageDone,
@@ -36,44 +59,27 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
         if (stageDone) stageDone(k, st);
         pending[k].stages[j] = std::move(st);
     };
-    std::size_t stageCount = 0;
-    for (std::size_t k = 0; k < students.size(); ++k) {
+    for (std::size_t k = 0; k < students.size(); ++k)
         pending[k].stages.resize(plans[k].stages.size());
-        stageCount = std::max(stageCount, plans[k].stages.size());
+    for (const auto [k, j] : renderOrder(plans, students)) {
+        const std::string dir = settings.imageDir ? settings.imageDir(students[k]) : "";
+        const StagePlan& p = plans[k].stages[j];
+        series.emplace_back();
+        bool firstShown = true;
+        for (const RowPlan& row : p.rows) {
+            series.back().push_back(row.check);
+            RowPictures& pictures = series.back().back().pictures;
+            pictures = RowPictures::Difference;
+            if (!settings.pictures || dir.empty()) continue;
+            const bool shown = p.visibility != "hidden" && row.visibility != "hidden";
+            pictures = !settings.pagePicturesOnly || (shown && firstShown)
+                           ? RowPictures::All
+                           : RowPictures::AllUnlessPassing;
+            firstShown = firstShown && !shown;
+        }
+        owner.emplace_back(k, j);
+        ++pending[k].stagesLeft;
     }
-    // The order of the series: students in rounds of a few, and within a round stage by stage,
-    // so the views a stage renders (up to 7 per stage, 9 for all stages of lab4) are traced and
-    // drawn with our shaders once per round and stay in the worker's truth cache (8 views,
-    // Evaluator::maxTruths): student by student the cache lost the all-stage views to each other
-    // and every student traced them again. A round's students are done together: at least three
-    // rounds (a progress line every third of the share), at most 8 students a round, rounds of
-    // even size (a short last round would cost more a row than the others: the time left is
-    // estimated by rows).
-    const std::size_t n = students.size();
-    const std::size_t rounds = roundCount(n);
-    for (std::size_t r = 0; r < rounds; ++r)
-        for (std::size_t j = 0; j < stageCount; ++j)
-            for (std::size_t k = n * r / rounds; k < n * (r + 1) / rounds; ++k) {
-                if (!students[k].error.empty() || j >= plans[k].stages.size()) continue;
-                const std::string dir = settings.imageDir ? settings.imageDir(students[k]) : "";
-                const StagePlan& p = plans[k].stages[j];
-                if (!p.rendered()) continue;
-                series.emplace_back();
-                bool firstShown = true;
-                for (const RowPlan& row : p.rows) {
-                    series.back().push_back(row.check);
-                    RowPictures& pictures = series.back().back().pictures;
-                    pictures = RowPictures::Difference;
-                    if (!settings.pictures || dir.empty()) continue;
-                    const bool shown = p.visibility != "hidden" && row.visibility != "hidden";
-                    pictures = !settings.pagePicturesOnly || (shown && firstShown)
-                                   ? RowPictures::All
-                                   : RowPictures::AllUnlessPassing;
-                    firstShown = firstShown && !shown;
-                }
-                owner.emplace_back(k, j);
-                ++pending[k].stagesLeft;
-            }
     auto finish = [&](std::size_t k) {
         const StudentWork& s = students[k];
         StudentRecord record;

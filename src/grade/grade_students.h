@@ -53,4 +53,12 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
 std::size_t roundCount(std::size_t n);
 std::size_t roundOf(std::size_t k, std::size_t n);
 
+// The stages gradeStudents renders, in its order: (student, index of the stage in its plan),
+// round by round, within a round stage by stage. A student with an error renders nothing.
+struct StageStep {
+    std::size_t student, stage;
+};
+std::vector<StageStep> renderOrder(const std::vector<GradingPlan>& plans,
+                                   const std::vector<StudentWork>& students);
+
 }  // namespace sl

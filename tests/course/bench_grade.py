@@ -102,10 +102,16 @@ def grade(cls, assignment):
                     text = open(path).read().split()
                 except OSError:
                     continue
-                if len(text) >= 2 and seen.get(path) != text:  # "DONE TOTAL" (once with FIRST)
+                # "DONE TOTAL ROWS VIEWS STAGE", then "DONE TOTAL VIEWSDONE VIEWSTOTAL KEY" for each
+                # stage (since stop 51; class/class_progress.h)
+                if len(text) >= 5 and len(text) % 5 == 0 and seen.get(path) != text:
                     seen[path] = text
                     job = int(re.search(r"job-(\d+)", path).group(1))
-                    progress.append([round(time.time() - start, 3), job] + [int(x) for x in text[:2]])
+                    n = [int(x) for x in text[:5]]
+                    keys = text[9::5]
+                    stages = {k: [int(x) for x in text[i:i + 4]] for k, i in zip(keys, range(5, len(text), 5))}
+                    step = [n[2], n[3], keys[n[4]]] if n[4] < len(keys) else [0, 0, ""]
+                    progress.append([round(time.time() - start, 3), job, n[0], n[1], stages, step])
             time.sleep(0.05)
 
     watcher = threading.Thread(target=watch)

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "class/class_progress.h"
 #include "course/assignment.h"
@@ -237,7 +238,7 @@ TEST(ClassProgress, ARoundsViewsCountAsOneStudentMore) {
     const std::vector<GradingPlan> plans(4, GradingPlan{"lab", {margin}});
     ASSERT_EQ(roundCount(4), 3u);
     const std::string path = ::testing::TempDir() + "/job-rounds.progress";
-    JobProgress progress(path, plans);
+    JobProgress progress(path, plans, renderOrder(plans, std::vector<StudentWork>(4)));
     StageRecord done;
     done.stage = "margin";
     done.tree = "core";
@@ -246,19 +247,132 @@ TEST(ClassProgress, ARoundsViewsCountAsOneStudentMore) {
         std::vector<RowsDone> jobs = readProgress({path});
         return std::make_pair(jobs[0], pace.timeLeft(seconds, jobs));
     };
+    EXPECT_EQ(reading(0).first.underwayRows, 10u);  // the first student, with its round's views
+    EXPECT_EQ(reading(0).first.underwayViews, 10u);
     progress.stageDone(0, done);
     auto [first, unused] = reading(2);
-    EXPECT_EQ(first.done, 20u);   // its rows and its round's views
-    EXPECT_EQ(first.total, 70u);  // 40 rows, 3 rounds' views
+    EXPECT_EQ(first.done, 20u);           // its rows and its round's views
+    EXPECT_EQ(first.total, 70u);          // 40 rows, 3 rounds' views
+    EXPECT_EQ(first.underwayViews, 10u);  // the next round's first student
+    EXPECT_EQ(first.underwayKey, "margin/core");
     progress.stageDone(1, done);
     auto [second, left] = reading(4);
     EXPECT_EQ(second.done, 40u);
     ASSERT_TRUE(left);
     EXPECT_NEAR(*left, 3.0, 1e-9);
     progress.stageDone(2, done);
-    EXPECT_EQ(reading(6).first.done, 60u);
+    const RowsDone third = reading(6).first;
+    EXPECT_EQ(third.done, 60u);
+    EXPECT_EQ(third.underwayRows, 10u);  // the last student: its round's views are done
+    EXPECT_EQ(third.underwayViews, 0u);
     progress.stageDone(3, done);  // the round's views counted once
-    EXPECT_EQ(reading(7).first.done, 70u);
+    const RowsDone last = reading(7).first;
+    EXPECT_EQ(last.done, 70u);
+    EXPECT_EQ(last.underwayRows, 0u);
+    ASSERT_EQ(last.stages.size(), 1u);  // and stage by stage
+    EXPECT_EQ(last.stages[0].key, "margin/core");
+    EXPECT_EQ(last.stages[0].done, 40u);  // the students' rows, and apart the rounds' views
+    EXPECT_EQ(last.stages[0].total, 40u);
+    EXPECT_EQ(last.stages[0].viewsDone, 30u);
+    EXPECT_EQ(last.stages[0].viewsTotal, 30u);
+}
+
+// A round's views cost what they cost, not one student's rows (issue 39): 6 students in rounds of
+// 2, a student's step 1 s and its round's views 0.2 s more. Once a step without views and one
+// with them are timed, the estimate is the time left; by rows it said 0.73 s with 1 s left.
+TEST(ClassProgress, ARoundsViewsAtWhatTheyCost) {
+    StagePlan a;
+    a.stage = "a";
+    a.tree = "core";
+    a.rows.resize(10);
+    const std::vector<GradingPlan> plans(6, GradingPlan{"lab", {a}});
+    ASSERT_EQ(roundCount(6), 3u);
+    const std::string path = ::testing::TempDir() + "/job-views.progress";
+    JobProgress progress(path, plans, renderOrder(plans, std::vector<StudentWork>(6)));
+    StageRecord done;
+    done.stage = "a";
+    done.tree = "core";
+    Pace priced, byRows;
+    double t = 0;
+    for (std::size_t k = 0; k < 6; ++k) {
+        t += k % 2 == 0 ? 1.2 : 1.0;  // the first of a round draws its views
+        progress.stageDone(k, done);
+        const RowsDone r = readProgress({path})[0];
+        const std::optional<double> p = priced.timeLeft(t, {r}),
+                                    rows = byRows.timeLeft(t, {{r.done, r.total}});
+        ASSERT_TRUE(p && rows);
+        if (k < 2 || k == 5) continue;  // a step of each kind timed from the third on
+        EXPECT_NEAR(*p, 6.6 - t, 1e-9) << "after student " << k;
+        if (k == 4) EXPECT_NEAR(*rows, 0.733, 0.001);
+    }
+}
+
+// The class's outputs read every record again after the last student's (issue 39): at the time
+// a record took the parent in the run (50 ms here), 8 records are 0.4 s after the last rows.
+TEST(ClassProgress, TheClassOutputsAfterTheLastStudent) {
+    for (const std::size_t records : {0, 8}) {
+        Pace pace;
+        pace.outputsRead(records);
+        pace.timeLeft(1, {{10, 20}});
+        EXPECT_NEAR(*pace.timeLeft(2, {{20, 20}}), 0.0, 1e-9);  // no record back yet
+        pace.recordBack(2, 0, 0.05);
+        EXPECT_NEAR(*pace.timeLeft(2.5, {{20, 20}}), 0.05 * double(records), 1e-9);
+    }
+}
+
+// The step under way is the one the job's file says (issue 39): after 2 rows of A (0.5 s a row)
+// the job's 48 rows of B are under way. 18 s into them 6 s are left; the last step's 2 rows
+// taken for the step under way held the estimate at the 46 rows after it, 23 s.
+TEST(ClassProgress, TheStepUnderWayIsTheJobs) {
+    auto reading = [](std::size_t a, bool saysStep) {
+        RowsDone r{a, 52, {{"a/core", a, 4}, {"b/core", 0, 48}}};
+        if (saysStep) r.underwayRows = a < 4 ? 2 : 48;
+        if (saysStep) r.underwayKey = a < 4 ? "a/core" : "b/core";
+        return r;
+    };
+    for (const bool saysStep : {true, false}) {
+        Pace pace;
+        pace.timeLeft(1, {reading(2, saysStep)});
+        EXPECT_NEAR(*pace.timeLeft(2, {reading(4, saysStep)}), 24.0, 1e-9);
+        EXPECT_NEAR(*pace.timeLeft(20, {reading(4, saysStep)}), saysStep ? 6.0 : 23.0, 1e-9);
+    }
+}
+
+// A stage's rows at that stage's price (issue 39): each student renders a stage A (10 rows in
+// 1 s) and then B (10 rows in 3 s). Once both are timed the estimate is the time left at every
+// step; by rows alone, every row at the mean row's price, it is off by the mix of the rows left.
+TEST(ClassProgress, AStagesRowsAtThatStagesPrice) {
+    auto readingAt = [](int step, bool stages) {  // after `step` steps: A, B, A, B, ...
+        const std::size_t a = 10 * std::size_t((step + 1) / 2), b = 10 * std::size_t(step / 2);
+        RowsDone r{a + b, 100, {}};
+        if (stages) r.stages = {{"a/core", a, 50}, {"b/core", b, 50}};
+        return r;
+    };
+    auto secondsAt = [](int step) { return 4.0 * (step / 2) + (step % 2 ? 1.0 : 0.0); };
+    Pace priced, byRows;
+    double worstByRows = 0;
+    for (int step = 1; step < 10; ++step) {
+        const double t = secondsAt(step), left = secondsAt(10) - t;
+        const std::optional<double> p = priced.timeLeft(t, {readingAt(step, true)}),
+                                    r = byRows.timeLeft(t, {readingAt(step, false)});
+        ASSERT_TRUE(p && r);
+        if (step < 4) continue;  // A and B each timed from the fourth step on (a job's first
+                                 // step of a stage calibrates, and is not timed)
+        EXPECT_NEAR(*p, left, 1e-9) << "after step " << step;
+        worstByRows = std::max(worstByRows, std::abs(*r - left) / left);
+    }
+    EXPECT_GT(worstByRows, 0.25);  // its last line: 2 s said with B's 3 s left
+    // A stage not timed yet costs the mean row: A timed (0.1 s a row), B's first step not (it
+    // calibrates), C's 10 rows 1 s.
+    Pace fresh;
+    auto reading = [](std::size_t a, std::size_t b) {
+        return RowsDone{a + b, 40, {{"a/core", a, 20}, {"b/core", b, 10}, {"c/core", 0, 10}}};
+    };
+    fresh.timeLeft(1, {reading(10, 0)});
+    fresh.timeLeft(2, {reading(20, 0)});
+    const std::optional<double> left = fresh.timeLeft(5, {reading(20, 10)});
+    ASSERT_TRUE(left);
+    EXPECT_NEAR(*left, 1.0, 1e-9);
 }
 
 // Recorded runs of the class bench (docs/results-class.md), replayed: each job's rows as its
@@ -362,7 +476,7 @@ std::vector<double> replayErrors(const Recording& rec, bool pooled, bool lag) {
             errors.push_back(std::abs(*left - (rec.end - t)) / (rec.end - t));
         for (; nextLine < rec.lines.size() && rec.lines[nextLine].seconds <= t; ++nextLine) {
             const RecordedLine& line = rec.lines[nextLine];
-            if (lag) paces[pooled ? 0 : line.job].recordBack(t, pooled ? line.job : 0);
+            if (lag) paces[pooled ? 0 : line.job].recordBack(t, pooled ? line.job : 0, 0);
             const double real = rec.end - line.seconds;
             if (4 * (nextLine + 1) > rec.lines.size() && nextLine + 1 < rec.lines.size() && left)
                 errors.push_back(std::abs(*left - real) / real);
@@ -375,6 +489,57 @@ std::vector<double> replayErrors(const Recording& rec, bool pooled, bool lag) {
 std::size_t over25(const std::vector<double>& errors) {
     return std::size_t(
         std::count_if(errors.begin(), errors.end(), [](double e) { return e > 0.25; }));
+}
+
+// The runs of the class bench recorded since issue 39's stop 51 (tests/course/progress_runs/,
+// one JSON line a run: bench_grade.py --trace): each job's file as it changed, and the lines.
+// Replayed at the run's poll, each line said at the first reading at or after it: the errors
+// of the lines after the first quarter but the last. `priced`: the readings as the files say
+// them; else without their stages and step (the rows alone, as before stop 51).
+std::vector<double> replayRecorded(const nlohmann::json& run, bool priced) {
+    const double poll = run.value("poll_s", 0.1);
+    std::vector<std::pair<double, std::string>> lines;  // "[student ...]" lines: time, name
+    double end = run["end_s"];
+    for (const auto& l : run["lines"]) {
+        const std::string text = l[1];
+        if (text.rfind("graded", 0) == 0) end = l[0];
+        char name[256];
+        if (std::sscanf(text.c_str(), "[student %*zu of %*zu] %255s", name) == 1)
+            lines.emplace_back(l[0], name);
+    }
+    std::vector<std::string> names;
+    for (const auto& l : lines) names.push_back(l.second);
+    std::sort(names.begin(), names.end());
+    std::size_t jobs = 0;
+    for (const auto& p : run["progress"]) jobs = std::max(jobs, std::size_t(p[1]) + 1);
+    std::vector<RowsDone> files(jobs);
+    Pace pace;
+    std::vector<double> errors;
+    std::size_t next = 0, line = 0;
+    const auto& progress = run["progress"];
+    for (double t = progress[0][0]; line < lines.size(); t += poll) {
+        for (; next < progress.size() && double(progress[next][0]) <= t; ++next) {
+            const auto& p = progress[next];
+            RowsDone& r = files[std::size_t(p[1])];
+            r = RowsDone{p[2], p[3]};
+            if (!priced) continue;
+            for (const auto& [key, n] : p[4].items())
+                r.stages.push_back({key, n[0], n[1], n[2], n[3]});
+            r.underwayRows = p[5][0];
+            r.underwayViews = p[5][1];
+            r.underwayKey = p[5][2];
+        }
+        const std::optional<double> said = pace.timeLeft(t, files);
+        for (; line < lines.size() && lines[line].first <= t + 1e-9; ++line) {
+            const std::size_t k = std::size_t(
+                std::find(names.begin(), names.end(), lines[line].second) - names.begin());
+            pace.recordBack(t, k % jobs, 0);  // grade deals its students in turn
+            const double left = end - lines[line].first;
+            if (4 * (line + 1) > lines.size() && line + 1 < lines.size() && said)
+                errors.push_back(std::abs(*said - left) / std::max(left, 0.1));
+        }
+    }
+    return errors;
 }
 
 // Each job's rows at the jobs' pace (issue 39): in the one-stage run job 0's slow first round
@@ -404,27 +569,73 @@ TEST(ClassProgress, AStudentsLineComesAfterItsRows) {
                 over25(with), over25(without));
 }
 
+// Each stage's rows and each round's views at their prices, and the step under way (issue 39),
+// replayed on the runs recorded since: fewer lines over 25 % than by rows alone, and a smaller
+// median, over all of them and over the all-stage runs.
+TEST(ClassProgress, RecordedRunsPricedByStageAndViews) {
+    std::size_t runs = 0, allStage = 0;
+    std::vector<double> priced, byRows, pricedAll, byRowsAll;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(SHADOWLAB_SOURCE_DIR) +
+                                                                 "/tests/course/progress_runs")) {
+        std::ifstream in(entry.path());
+        for (std::string text; std::getline(in, text);) {
+            const nlohmann::json run = nlohmann::json::parse(text);
+            if (run["progress"].empty() || run["progress"][0].size() < 6) continue;  // before
+            const std::vector<double> p = replayRecorded(run, true), r = replayRecorded(run, false);
+            ASSERT_EQ(p.size(), r.size());
+            priced.insert(priced.end(), p.begin(), p.end());
+            byRows.insert(byRows.end(), r.begin(), r.end());
+            ++runs;
+            if (run["class"] != "class-all") continue;
+            pricedAll.insert(pricedAll.end(), p.begin(), p.end());
+            byRowsAll.insert(byRowsAll.end(), r.begin(), r.end());
+            ++allStage;
+        }
+    }
+    ASSERT_GE(runs, 10u);
+    ASSERT_GE(allStage, 5u);
+    for (auto* e : {&priced, &byRows, &pricedAll, &byRowsAll}) std::sort(e->begin(), e->end());
+    EXPECT_LT(over25(priced), over25(byRows));
+    EXPECT_LT(priced[priced.size() / 2], byRows[byRows.size() / 2]);
+    EXPECT_LT(over25(pricedAll), over25(byRowsAll));
+    EXPECT_LT(pricedAll[pricedAll.size() / 2], byRowsAll[byRowsAll.size() / 2]);
+    std::printf(
+        "%zu runs (%zu all-stage): %zu of %zu lines over 25 %% priced, %zu by rows; "
+        "all-stage %zu and %zu of %zu\n",
+        runs, allStage, over25(priced), priced.size(), over25(byRows), over25(pricedAll),
+        over25(byRowsAll), pricedAll.size());
+}
+
 TEST(ClassProgress, JobFilesReadOneByOneBadOnesCountNothing) {
     const std::string dir = ::testing::TempDir();
     const std::string a = dir + "/job-a.progress", b = dir + "/job-b.progress",
                       bad = dir + "/job-bad.progress";
-    FILE* f = std::fopen(a.c_str(), "w");
-    std::fputs("3 10\n", f);
-    std::fclose(f);
-    f = std::fopen(b.c_str(), "w");
-    std::fputs("                   7                   20\n", f);
-    std::fclose(f);
-    f = std::fopen(bad.c_str(), "w");
-    std::fputs("9 2\n", f);  // more done than planned: torn or foreign
-    std::fclose(f);
-    std::vector<RowsDone> jobs = readProgress({a, b, bad, dir + "/job-none.progress"});
-    ASSERT_EQ(jobs.size(), 4u);
+    const std::string unsummed = dir + "/job-unsummed.progress";
+    auto put = [](const std::string& path, const char* text) {
+        FILE* f = std::fopen(path.c_str(), "w");
+        std::fputs(text, f);
+        std::fclose(f);
+    };
+    put(a, "3 10 0 0 0\n");
+    put(b, "                   7                   20 4 2 1\n 5 8 0 2 a/core\n 2 8 0 2 b/core\n");
+    put(bad, "9 2 0 0 0\n");                                        // more done than planned
+    put(unsummed, "7 20 4 0 1\n5 8 0 2 a/core\n1 8 0 2 b/core\n");  // the stages' are 6
+    std::vector<RowsDone> jobs = readProgress({a, b, bad, unsummed, dir + "/job-none.progress"});
+    ASSERT_EQ(jobs.size(), 5u);
     EXPECT_EQ(jobs[0].done, 3u);
     EXPECT_EQ(jobs[0].total, 10u);
+    EXPECT_EQ(jobs[0].underwayRows, 0u);
     EXPECT_EQ(jobs[1].done, 7u);
     EXPECT_EQ(jobs[1].total, 20u);
-    EXPECT_EQ(jobs[2].total, 0u);  // more done than planned: torn or foreign, counts nothing
+    ASSERT_EQ(jobs[1].stages.size(), 2u);
+    EXPECT_EQ(jobs[1].stages[1].key, "b/core");
+    EXPECT_EQ(jobs[1].stages[1].done, 2u);
+    EXPECT_EQ(jobs[1].underwayRows, 4u);
+    EXPECT_EQ(jobs[1].underwayViews, 2u);
+    EXPECT_EQ(jobs[1].underwayKey, "b/core");
+    EXPECT_EQ(jobs[2].total, 0u);  // torn or foreign: counts nothing
     EXPECT_EQ(jobs[3].total, 0u);
+    EXPECT_EQ(jobs[4].total, 0u);
 }
 
 // Markers by one tokenizer (issue 38): any run of spaces or tabs, Unicode spaces, invisible
