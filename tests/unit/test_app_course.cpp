@@ -225,23 +225,30 @@ TEST(ClassProgress, ASlowStageHoldsTheEstimateAtTheRowsAfterIt) {
     EXPECT_NEAR(*pace.timeLeft(70, {{90, 100}}), 0.0, 1e-9);
 }
 
+// `students` plans of one stage of 10 rows in the core tree, and that stage's record.
+struct OneStageClass {
+    OneStageClass(const std::string& stage, std::size_t students) {
+        StagePlan plan;
+        plan.stage = done.stage = stage;
+        plan.tree = done.tree = "core";
+        plan.rows.resize(10);
+        plans.assign(students, GradingPlan{"lab", {plan}});
+    }
+    std::vector<GradingPlan> plans;
+    StageRecord done;
+};
+
 // A round draws its stages' views once (traced, and drawn with our shaders), about one student's
 // rows of work (issue 39): 4 students a job go in rounds of 1, 1 and 2. Here the views cost one
 // student (1 s for 10 rows): the rounds end at 2, 4 and 7 s, and after two rounds the estimate
 // is the 3 s the last round takes; by rows alone it said 4 s (a row of the last round costing
 // as much as one of the first two).
 TEST(ClassProgress, ARoundsViewsCountAsOneStudentMore) {
-    StagePlan margin;
-    margin.stage = "margin";
-    margin.tree = "core";
-    margin.rows.resize(10);
-    const std::vector<GradingPlan> plans(4, GradingPlan{"lab", {margin}});
+    const OneStageClass lab("margin", 4);
     ASSERT_EQ(roundCount(4), 3u);
     const std::string path = ::testing::TempDir() + "/job-rounds.progress";
-    JobProgress progress(path, plans, renderOrder(plans, std::vector<StudentWork>(4)));
-    StageRecord done;
-    done.stage = "margin";
-    done.tree = "core";
+    JobProgress progress(path, lab.plans, renderOrder(lab.plans, std::vector<StudentWork>(4)));
+    const StageRecord& done = lab.done;
     Pace pace;
     auto reading = [&](double seconds) {
         std::vector<RowsDone> jobs = readProgress({path});
@@ -281,17 +288,11 @@ TEST(ClassProgress, ARoundsViewsCountAsOneStudentMore) {
 // 2, a student's step 1 s and its round's views 0.2 s more. Once a step without views and one
 // with them are timed, the estimate is the time left; by rows it said 0.73 s with 1 s left.
 TEST(ClassProgress, ARoundsViewsAtWhatTheyCost) {
-    StagePlan a;
-    a.stage = "a";
-    a.tree = "core";
-    a.rows.resize(10);
-    const std::vector<GradingPlan> plans(6, GradingPlan{"lab", {a}});
+    const OneStageClass lab("a", 6);
     ASSERT_EQ(roundCount(6), 3u);
     const std::string path = ::testing::TempDir() + "/job-views.progress";
-    JobProgress progress(path, plans, renderOrder(plans, std::vector<StudentWork>(6)));
-    StageRecord done;
-    done.stage = "a";
-    done.tree = "core";
+    JobProgress progress(path, lab.plans, renderOrder(lab.plans, std::vector<StudentWork>(6)));
+    const StageRecord& done = lab.done;
     Pace priced, byRows;
     double t = 0;
     for (std::size_t k = 0; k < 6; ++k) {
@@ -356,8 +357,9 @@ TEST(ClassProgress, AStagesRowsAtThatStagesPrice) {
         const std::optional<double> p = priced.timeLeft(t, {readingAt(step, true)}),
                                     r = byRows.timeLeft(t, {readingAt(step, false)});
         ASSERT_TRUE(p && r);
-        if (step < 4) continue;  // A and B each timed from the fourth step on (a job's first
-                                 // step of a stage calibrates, and is not timed)
+        if (step < 4)
+            continue;  // A and B each timed from the fourth step on (a job's first
+                       // step of a stage calibrates, and is not timed)
         EXPECT_NEAR(*p, left, 1e-9) << "after step " << step;
         worstByRows = std::max(worstByRows, std::abs(*r - left) / left);
     }
