@@ -69,13 +69,13 @@ void JobProgress::stageDone(std::size_t k, const StageRecord& stage) {
     if (const StagePlan* st = renderedStage(k, stage.stage, stage.tree)) {
         Counts& c = stages_[stageKey(*st)];
         c.done = std::min(c.total, c.done + st->rows.size());  // never more than planned
-        if (roundViewsLeft(k, *st)) {
-            roundViewsDone_.insert(roundViews(roundOf(k, plans_.size()), *st));
+        if (roundViewsDone_.insert(roundViews(roundOf(k, plans_.size()), *st)).second)
             c.viewsDone = std::min(c.viewsTotal, c.viewsDone + st->rows.size());
-        }
         for (std::size_t i = underway_; i < order_.size(); ++i)
-            if (order_[i].student == k && &plans_[k].stages[order_[i].stage] == st)
-                stepDone_[i] = true;
+            if (order_[i].student == k && &plans_[k].stages[order_[i].stage] == st) {
+                stepDone_[i] = true;  // a student's stage is one step of the order
+                break;
+            }
         while (underway_ < order_.size() && stepDone_[underway_]) ++underway_;
     }
     write();

@@ -225,16 +225,23 @@ TEST(ClassProgress, ASlowStageHoldsTheEstimateAtTheRowsAfterIt) {
     EXPECT_NEAR(*pace.timeLeft(70, {{90, 100}}), 0.0, 1e-9);
 }
 
-// `students` plans of one stage of 10 rows in the core tree, and that stage's record.
-struct OneStageClass {
-    OneStageClass(const std::string& stage, std::size_t students) {
-        StagePlan plan;
-        plan.stage = done.stage = stage;
-        plan.tree = done.tree = "core";
-        plan.rows.resize(10);
-        plans.assign(students, GradingPlan{"lab", {plan}});
+// A job of `students` plans of one stage of 10 rows in the core tree, with its progress file
+// (`file` under the test's temporary folder) and that stage's record.
+struct OneStageJob {
+    OneStageJob(const std::string& stage, std::size_t students, const std::string& file)
+        : plans(
+              students,
+              GradingPlan{
+                  "lab",
+                  {StagePlan{stage, "core", {}, {}, 0, "visible", std::vector<RowPlan>(10), ""}}}),
+          path(::testing::TempDir() + "/" + file),
+          progress(path, plans, renderOrder(plans, std::vector<StudentWork>(students))) {
+        done.stage = stage;
+        done.tree = "core";
     }
     std::vector<GradingPlan> plans;
+    std::string path;
+    JobProgress progress;
     StageRecord done;
 };
 
@@ -244,35 +251,32 @@ struct OneStageClass {
 // is the 3 s the last round takes; by rows alone it said 4 s (a row of the last round costing
 // as much as one of the first two).
 TEST(ClassProgress, ARoundsViewsCountAsOneStudentMore) {
-    const OneStageClass lab("margin", 4);
     ASSERT_EQ(roundCount(4), 3u);
-    const std::string path = ::testing::TempDir() + "/job-rounds.progress";
-    JobProgress progress(path, lab.plans, renderOrder(lab.plans, std::vector<StudentWork>(4)));
-    const StageRecord& done = lab.done;
+    OneStageJob job("margin", 4, "job-rounds.progress");
     Pace pace;
     auto reading = [&](double seconds) {
-        std::vector<RowsDone> jobs = readProgress({path});
+        std::vector<RowsDone> jobs = readProgress({job.path});
         return std::make_pair(jobs[0], pace.timeLeft(seconds, jobs));
     };
     EXPECT_EQ(reading(0).first.underwayRows, 10u);  // the first student, with its round's views
     EXPECT_EQ(reading(0).first.underwayViews, 10u);
-    progress.stageDone(0, done);
+    job.progress.stageDone(0, job.done);
     auto [first, unused] = reading(2);
     EXPECT_EQ(first.done, 20u);           // its rows and its round's views
     EXPECT_EQ(first.total, 70u);          // 40 rows, 3 rounds' views
     EXPECT_EQ(first.underwayViews, 10u);  // the next round's first student
     EXPECT_EQ(first.underwayKey, "margin/core");
-    progress.stageDone(1, done);
+    job.progress.stageDone(1, job.done);
     auto [second, left] = reading(4);
     EXPECT_EQ(second.done, 40u);
     ASSERT_TRUE(left);
     EXPECT_NEAR(*left, 3.0, 1e-9);
-    progress.stageDone(2, done);
+    job.progress.stageDone(2, job.done);
     const RowsDone third = reading(6).first;
     EXPECT_EQ(third.done, 60u);
     EXPECT_EQ(third.underwayRows, 10u);  // the last student: its round's views are done
     EXPECT_EQ(third.underwayViews, 0u);
-    progress.stageDone(3, done);  // the round's views counted once
+    job.progress.stageDone(3, job.done);  // the round's views counted once
     const RowsDone last = reading(7).first;
     EXPECT_EQ(last.done, 70u);
     EXPECT_EQ(last.underwayRows, 0u);
@@ -288,17 +292,14 @@ TEST(ClassProgress, ARoundsViewsCountAsOneStudentMore) {
 // 2, a student's step 1 s and its round's views 0.2 s more. Once a step without views and one
 // with them are timed, the estimate is the time left; by rows it said 0.73 s with 1 s left.
 TEST(ClassProgress, ARoundsViewsAtWhatTheyCost) {
-    const OneStageClass lab("a", 6);
     ASSERT_EQ(roundCount(6), 3u);
-    const std::string path = ::testing::TempDir() + "/job-views.progress";
-    JobProgress progress(path, lab.plans, renderOrder(lab.plans, std::vector<StudentWork>(6)));
-    const StageRecord& done = lab.done;
+    OneStageJob job("a", 6, "job-views.progress");
     Pace priced, byRows;
     double t = 0;
     for (std::size_t k = 0; k < 6; ++k) {
         t += k % 2 == 0 ? 1.2 : 1.0;  // the first of a round draws its views
-        progress.stageDone(k, done);
-        const RowsDone r = readProgress({path})[0];
+        job.progress.stageDone(k, job.done);
+        const RowsDone r = readProgress({job.path})[0];
         const std::optional<double> p = priced.timeLeft(t, {r}),
                                     rows = byRows.timeLeft(t, {{r.done, r.total}});
         ASSERT_TRUE(p && rows);
