@@ -550,9 +550,10 @@ void ClassGrading::reportFinished(double seconds, const std::optional<double>& r
         writeStudentOutputs(k, *r,
                             annotateRecord(annotations_, in_.a, in_.names[k], in_.entries[k], *r));
         pace_.recordBack(secondsSinceStart(), i % jobs_, read);  // gradeShare's: every jobs_-th
-        double left =
+        const double left = timeLeftWhenSaid(
             rowsLeft ? *rowsLeft
-                     : seconds / double(reported_.size()) * double(todo_.size() - reported_.size());
+                     : seconds / double(reported_.size()) * double(todo_.size() - reported_.size()),
+            seconds, secondsSinceStart());
         char line[512];
         std::snprintf(line, sizeof line,
                       "[student %zu of %zu] %-24s %7.2f / %.2f  %-10s time left about %s\n",

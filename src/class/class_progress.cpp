@@ -193,8 +193,7 @@ std::optional<double> Pace::timeLeft(double seconds, const std::vector<RowsDone>
         const double after = std::max(0.0, need - step);
         left = std::max(left, lag() + std::max(after, need - (seconds - s->lastAt)));
     }
-    const double outputs = lags_ > 0 ? readSum_ / double(lags_) * double(outputReads_) : 0;
-    return left + outputs;
+    return left + medianRead() * double(outputReads_);
 }
 
 // The time from `before` (the job's last reading with more rows) to now goes to the stages whose
@@ -273,8 +272,24 @@ double Pace::secondsLeft(const RowsDone& r) const {
 void Pace::recordBack(double seconds, std::size_t job, double read) {
     if (job >= seen_.size() || !seen_[job]) return;
     lagSum_ += seconds - seen_[job]->lastAt;
-    readSum_ += read;
+    reads_.push_back(read);
     ++lags_;
+}
+
+// The median, not the mean: a run's first read took 0.07-0.1 s and the others 0.01-0.04 (the
+// files not yet cached). At the second-to-last line of 13 busy all-stage runs (8 records) the
+// mean put the outputs 0.07 s long on average (0.18 at most), the median 0.04 off on average
+// (0.16 short at most).
+double Pace::medianRead() const {
+    if (reads_.empty()) return 0;
+    std::vector<double> sorted = reads_;
+    std::sort(sorted.begin(), sorted.end());
+    const std::size_t mid = sorted.size() / 2;
+    return sorted.size() % 2 == 1 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
+}
+
+double timeLeftWhenSaid(double estimate, double estimatedAt, double said) {
+    return std::max(0.0, estimate - std::max(0.0, said - estimatedAt));
 }
 
 // The mean: a record is seen at the poll its rows were or at a later one (0 or a poll's interval

@@ -12,10 +12,23 @@ std::size_t roundCount(std::size_t n) {
     return std::max<std::size_t>(std::min<std::size_t>(3, n), (n + 7) / 8);
 }
 
+// Rounds as even as they go, the extra students to the rounds after the first, in order: the
+// first round (the calibration's too) stays small, so its lines come early, and the last is
+// never the only round of two or more. A round's first student draws the views of each stage;
+// the time left prices them apart from the students' rows once a stage's step without them is
+// timed, which a round of one has none of (class/class_progress.h). In rounds of 1, 1 and 2 (4
+// students a job, 8 all-stage hand-ins on 2 cores) the last round came with none timed: its
+// views were priced as rows until then, and its last stage's at the other stages' rate.
+std::size_t roundStart(std::size_t r, std::size_t n) {
+    const std::size_t rounds = roundCount(n);
+    if (r == 0 || rounds == 0) return 0;
+    return std::min(n, r * (n / rounds) + std::min(r - 1, n % rounds));
+}
+
 std::size_t roundOf(std::size_t k, std::size_t n) {
     const std::size_t rounds = roundCount(n);
     std::size_t r = 0;
-    while (r + 1 < rounds && k >= n * (r + 1) / rounds) ++r;
+    while (r + 1 < rounds && k >= roundStart(r + 1, n)) ++r;
     return r;
 }
 
@@ -24,8 +37,7 @@ std::size_t roundOf(std::size_t k, std::size_t n) {
 // with our shaders once per round and stay in the worker's truth cache (8 views,
 // Evaluator::maxTruths): student by student the cache lost the all-stage views to each other and
 // every student traced them again. A round's students are done together: at least three rounds
-// (a progress line every third of the share), at most 8 students a round, rounds of even size
-// (a short last round would cost more a row than the others: the time left is estimated by rows).
+// (a progress line every third of the share), at most 8 students a round (roundStart).
 std::vector<StageStep> renderOrder(const std::vector<GradingPlan>& plans,
                                    const std::vector<StudentWork>& students) {
     std::size_t stageCount = 0;
@@ -35,7 +47,7 @@ std::vector<StageStep> renderOrder(const std::vector<GradingPlan>& plans,
     std::vector<StageStep> order;
     for (std::size_t r = 0; r < rounds; ++r)
         for (std::size_t j = 0; j < stageCount; ++j)
-            for (std::size_t k = n * r / rounds; k < n * (r + 1) / rounds; ++k)
+            for (std::size_t k = roundStart(r, n); k < roundStart(r + 1, n); ++k)
                 if (students[k].error.empty() && j < plans[k].stages.size() &&
                     plans[k].stages[j].rendered())
                     order.push_back({k, j});

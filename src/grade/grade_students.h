@@ -51,6 +51,7 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
 // round's students are done together, and each stage's views are traced and drawn with our
 // shaders once a round.
 std::size_t roundCount(std::size_t n);
+std::size_t roundStart(std::size_t r, std::size_t n);  // its first student; n for r = roundCount(n)
 std::size_t roundOf(std::size_t k, std::size_t n);
 
 // The stages gradeStudents renders, in its order: (student, index of the stage in its plan),
