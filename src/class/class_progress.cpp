@@ -273,7 +273,6 @@ void Pace::recordBack(double seconds, std::size_t job, double read) {
     if (job >= seen_.size() || !seen_[job]) return;
     lagSum_ += seconds - seen_[job]->lastAt;
     reads_.push_back(read);
-    ++lags_;
 }
 
 // The median, not the mean: a run's first read took 0.07-0.1 s and the others 0.01-0.04 (the
@@ -296,7 +295,7 @@ double timeLeftWhenSaid(double estimate, double estimatedAt, double said) {
 // or more, each student), and the mean of those is the time between them, the polls' phase
 // averaged out.
 double Pace::lag() const {
-    return lags_ > 0 ? lagSum_ / double(lags_) : 0;
+    return reads_.empty() ? 0 : lagSum_ / double(reads_.size());
 }
 
 }  // namespace sl

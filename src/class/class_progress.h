@@ -150,8 +150,8 @@ class Pace {
     std::map<std::string, StageCost> stageCost_;
     double timedSeconds_ = 0, timedRows_ = 0;  // all of stageCost_'s
     double lagSum_ = 0;          // from a job's last rows to a student's record, each student
-    std::vector<double> reads_;  // the parent's read of each record back
-    std::size_t lags_ = 0, outputReads_ = 0;
+    std::vector<double> reads_;  // the parent's read of each record back: one a lag
+    std::size_t outputReads_ = 0;
 };
 
 // The time left when a line is said, from the estimate made `said - estimatedAt` seconds before:
