@@ -8,21 +8,36 @@
 
 namespace sl {
 
-std::size_t roundCount(std::size_t n) {
-    return std::max<std::size_t>(std::min<std::size_t>(3, n), (n + 7) / 8);
+// A share's first round: a quarter of it (1 to 8 students). The time left learns what a round's
+// views cost only from a step with them after the first round's (that one also calibrates the
+// budgets on our shaders, and is not timed: class/class_progress.h), so until the second round's
+// first student is back they are priced as rows: for six of the stages they cost 0-0.25 of a
+// student's rows (medians of 76 steps each, 19 busy runs), 0.62 for peers.
+// In rounds of 2, 3 and 3 (15 all-stage hand-ins on 2 cores) the line after the first round, the
+// class's fourth, said 51-52 s with 39 s left in 3 busy runs (issue 39). With the first round a
+// quarter of each share, the first rounds' lines are the class's first quarter at most.
+std::size_t firstRound(std::size_t n) {
+    return std::clamp<std::size_t>(n / 4, 1, 8);
 }
 
-// Rounds as even as they go, the extra students to the rounds after the first, in order: the
-// first round (the calibration's too) stays small, so its lines come early, and the last is
-// never the only round of two or more. A round's first student draws the views of each stage;
-// the time left prices them apart from the students' rows once a stage's step without them is
-// timed, which a round of one has none of (class/class_progress.h). In rounds of 1, 1 and 2 (4
-// students a job, 8 all-stage hand-ins on 2 cores) the last round came with none timed: its
-// views were priced as rows until then, and its last stage's at the other stages' rate.
+std::size_t roundCount(std::size_t n) {
+    if (n == 0) return 0;
+    const std::size_t rest = n - firstRound(n);
+    return 1 + std::max(std::min<std::size_t>(2, rest), (rest + 7) / 8);
+}
+
+// After the first round, the rest as even as it goes, the extra students to the earliest rounds:
+// the last is never the only round of two or more. A round's first student draws the views of
+// each stage; the time left prices them apart from the students' rows once a stage's step
+// without them is timed, which a round of one has none of. In rounds of 1, 1 and 2 (4 students a
+// job, 8 all-stage hand-ins on 2 cores) the last round came with none timed: its views were
+// priced as rows until then, and its last stage's at the other stages' rate.
 std::size_t roundStart(std::size_t r, std::size_t n) {
     const std::size_t rounds = roundCount(n);
     if (r == 0 || rounds == 0) return 0;
-    return std::min(n, r * (n / rounds) + std::min(r - 1, n % rounds));
+    if (r >= rounds) return n;
+    const std::size_t first = firstRound(n), rest = n - first, later = rounds - 1;
+    return first + (r - 1) * (rest / later) + std::min(r - 1, rest % later);
 }
 
 std::size_t roundOf(std::size_t k, std::size_t n) {
@@ -37,7 +52,7 @@ std::size_t roundOf(std::size_t k, std::size_t n) {
 // with our shaders once per round and stay in the worker's truth cache (8 views,
 // Evaluator::maxTruths): student by student the cache lost the all-stage views to each other and
 // every student traced them again. A round's students are done together: at least three rounds
-// (a progress line every third of the share), at most 8 students a round (roundStart).
+// (a share of three or more), at most 8 students a round (roundStart).
 std::vector<StageStep> renderOrder(const std::vector<GradingPlan>& plans,
                                    const std::vector<StudentWork>& students) {
     std::size_t stageCount = 0;

@@ -49,7 +49,8 @@ void gradeStudents(const std::vector<GradingPlan>& plans, const std::vector<Stud
 
 // The rounds gradeStudents takes a series of n students in, and the round of student k: a
 // round's students are done together, and each stage's views are traced and drawn with our
-// shaders once a round.
+// shaders once a round. The first round is a quarter of the share (firstRound).
+std::size_t firstRound(std::size_t n);
 std::size_t roundCount(std::size_t n);
 std::size_t roundStart(std::size_t r, std::size_t n);  // its first student; n for r = roundCount(n)
 std::size_t roundOf(std::size_t k, std::size_t n);

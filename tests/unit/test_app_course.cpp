@@ -291,12 +291,15 @@ TEST(ClassProgress, ARoundsViewsCountAsOneStudentMore) {
     EXPECT_EQ(last.stages[0].viewsTotal, 30u);
 }
 
-// A job's rounds (grade/grade_students.h): every student in one, in order, at most 8 a round,
-// sizes one apart, the first no larger than any other, and the last never the only round of two
-// or more: before it, a stage's step without its views is timed (class/class_progress.h).
+// A job's rounds (grade/grade_students.h): every student in one, in order, at most 8 a round, at
+// least three (a share of three or more); the first a quarter of the share (at least one), so the
+// lines after the class's first quarter come after a step with views was timed; the others one
+// apart, and the last never the only round of two or more: before it, a stage's step without its
+// views is timed (class/class_progress.h).
 TEST(ClassProgress, RoundsLeaveAStepWithoutViewsBeforeTheLast) {
     for (std::size_t n = 1; n <= 80; ++n) {
         const std::size_t rounds = roundCount(n);
+        EXPECT_GE(rounds, std::min<std::size_t>(n, 3)) << n;
         ASSERT_EQ(roundStart(0, n), 0u);
         ASSERT_EQ(roundStart(rounds, n), n) << n;
         std::vector<std::size_t> sizes;
@@ -305,28 +308,37 @@ TEST(ClassProgress, RoundsLeaveAStepWithoutViewsBeforeTheLast) {
             for (std::size_t k = roundStart(r, n); k < roundStart(r + 1, n); ++k)
                 ASSERT_EQ(roundOf(k, n), r) << n << " students, student " << k;
         }
+        EXPECT_EQ(sizes.front(), firstRound(n));
+        EXPECT_EQ(sizes.front(), std::clamp<std::size_t>(n / 4, 1, 8)) << n;
         const auto [small, large] = std::minmax_element(sizes.begin(), sizes.end());
         EXPECT_GE(*small, 1u) << n;
         EXPECT_LE(*large, 8u) << n;
-        EXPECT_LE(*large - *small, 1u) << n;
-        EXPECT_EQ(sizes.front(), *small) << n;
+        if (rounds > 1) {
+            const auto [low, high] = std::minmax_element(sizes.begin() + 1, sizes.end());
+            EXPECT_LE(*high - *low, 1u) << n;
+        }
         const bool twoBefore =
             std::any_of(sizes.begin(), sizes.end() - 1, [](std::size_t m) { return m >= 2; });
         if (sizes.back() >= 2 && rounds > 1) EXPECT_TRUE(twoBefore) << n << " students";
         if (n == 4) EXPECT_EQ(sizes, (std::vector<std::size_t>{1, 2, 1}));
+        if (n == 7) EXPECT_EQ(sizes, (std::vector<std::size_t>{1, 3, 3}));
+        if (n == 8) EXPECT_EQ(sizes, (std::vector<std::size_t>{2, 3, 3}));
     }
 }
 
 // A round's views cost what they cost, not one student's rows (issue 39): 6 students in rounds of
-// 2, a student's step 1 s and its round's views 0.2 s more. Once a step without views and one
-// with them are timed, the estimate is the time left; by rows it said 0.73 s with 1 s left.
+// 1, 3 and 2, a student's step 1 s and its round's views 0.2 s more. Once a step without views
+// and one with them are timed (the first round's is not), the estimate is the time left; by rows
+// it is over by more than a quarter of it.
 TEST(ClassProgress, ARoundsViewsAtWhatTheyCost) {
     ASSERT_EQ(roundCount(6), 3u);
+    ASSERT_EQ(roundStart(1, 6), 1u);
+    ASSERT_EQ(roundStart(2, 6), 4u);
     OneStageJob job("a", 6, "job-views.progress");
     Pace priced, byRows;
-    double t = 0;
+    double t = 0, worstByRows = 0;
     for (std::size_t k = 0; k < 6; ++k) {
-        t += k % 2 == 0 ? 1.2 : 1.0;  // the first of a round draws its views
+        t += roundStart(roundOf(k, 6), 6) == k ? 1.2 : 1.0;  // the first of a round draws views
         job.progress.stageDone(k, job.done);
         const RowsDone r = readProgress({job.path})[0];
         const std::optional<double> p = priced.timeLeft(t, {r}),
@@ -334,8 +346,9 @@ TEST(ClassProgress, ARoundsViewsAtWhatTheyCost) {
         ASSERT_TRUE(p && rows);
         if (k < 2 || k == 5) continue;  // a step of each kind timed from the third on
         EXPECT_NEAR(*p, 6.6 - t, 1e-9) << "after student " << k;
-        if (k == 4) EXPECT_NEAR(*rows, 0.733, 0.001);
+        worstByRows = std::max(worstByRows, std::abs(*rows - (6.6 - t)) / (6.6 - t));
     }
+    EXPECT_GT(worstByRows, 0.25);
 }
 
 // The class's outputs read every record again after the last student's (issue 39): at the time
